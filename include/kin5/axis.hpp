@@ -1,0 +1,65 @@
+/// @file axis.hpp
+/// One machine axis as data: its NC letter, where it is mounted, its direction, how a commanded
+/// angle relates to the rotation of the tool relative to the workpiece, and its travel.
+///
+/// Sign convention (spec §1): ψ is the right-handed rotation *of the tool relative to the
+/// workpiece* about `direction`. For a head axis ψ is the physical rotation. For a table axis
+/// ψ = −φ, φ being the physical right-handed rotation of the table. A controller that programs
+/// ISO tool-relative angles writes ψ itself (`angle_sense::tool_relative`); one that programs
+/// physical table angles writes φ (`angle_sense::physical`).
+#pragma once
+
+#include <string_view>
+
+#include "units.hpp"
+#include "vec.hpp"
+
+namespace kin5 {
+
+/// The NC address letter of an axis.
+enum class axis_letter : char { X = 'X', Y = 'Y', Z = 'Z', A = 'A', B = 'B', C = 'C' };
+
+constexpr char to_char(axis_letter l) { return static_cast<char>(l); }
+
+/// Which side of the kinematic chain carries the axis.
+enum class mount { head, table };
+
+/// How the value written in the NC program relates to ψ (see the file comment).
+enum class angle_sense { tool_relative, physical };
+
+/// Travel of a rotary axis, in degrees as a machine's manual gives it.
+struct rotary_travel {
+  degrees lower{-180.0};
+  degrees upper{180.0};
+  bool continuous = false;  ///< endless rotation; lower/upper are ignored
+
+  static constexpr rotary_travel endless() { return {{-180.0}, {180.0}, true}; }
+  static constexpr rotary_travel between(degrees lo, degrees hi) { return {lo, hi, false}; }
+
+  /// Whether the commanded angle lies within the travel, with `slack` for rounding.
+  constexpr bool contains(radians commanded, radians slack = {1e-12}) const {
+    if (continuous) return true;
+    return commanded.value >= to_radians(lower).value - slack.value &&
+           commanded.value <= to_radians(upper).value + slack.value;
+  }
+};
+
+/// A rotary axis.
+struct rotary_axis {
+  axis_letter letter{};
+  mount side{};
+  vec3 direction{};         ///< unit vector, workpiece frame, at the zero pose of the machine
+  angle_sense sense{};      ///< how the commanded value relates to ψ
+  rotary_travel travel{};   ///< limits of the commanded value
+
+  /// dψ / d(commanded): −1 for a physical table angle, +1 otherwise.
+  constexpr double psi_per_commanded() const {
+    return (sense == angle_sense::physical && side == mount::table) ? -1.0 : 1.0;
+  }
+  /// ψ, the tool-relative angle, from the commanded angle.
+  constexpr radians psi(radians commanded) const { return psi_per_commanded() * commanded; }
+  /// The commanded angle from ψ.
+  constexpr radians commanded(radians psi_value) const { return psi_per_commanded() * psi_value; }
+};
+
+}  // namespace kin5

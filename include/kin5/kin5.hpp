@@ -1,0 +1,17 @@
+/// @file kin5.hpp
+/// The core of kin5: units, constexpr maths, axes and machines, forward and inverse kinematics,
+/// branch choice, and the machine catalog. Needs the C++20 standard library only.
+#pragma once
+
+#include "axis.hpp"
+#include "branch.hpp"
+#include "forward.hpp"
+#include "inverse.hpp"
+#include "machine.hpp"
+#include "machines.hpp"
+#include "math.hpp"
+#include "rigid.hpp"
+#include "solver.hpp"
+#include "units.hpp"
+#include "vec.hpp"
+#include "version.hpp"

@@ -1,0 +1,27 @@
+/// @file machines.hpp
+/// The catalog: every bundled machine type, and `catalog`, a type list of them for code (tests,
+/// the command line) that must do something for each.
+#pragma once
+
+#include <tuple>
+
+#include "machines/a_rotary_4axis.hpp"
+#include "machines/ac_head.hpp"
+#include "machines/ac_trunnion.hpp"
+#include "machines/b_head_a_tilted_table.hpp"
+#include "machines/dmu_50v.hpp"
+#include "machines/dmu_80p.hpp"
+#include "machines/sajo_12000p.hpp"
+
+namespace kin5::machines {
+
+/// Every catalog machine, in the order `kin5 machines` lists them.
+using catalog = std::tuple<sajo_12000p, dmu_80p, ac_trunnion, dmu_50v, a_rotary_4axis, ac_head, b_head_a_tilted_table>;
+
+/// Calls `f.template operator()<M>()` for each catalog machine M, in order.
+template <class F>
+constexpr void for_each_machine(F&& f) {
+  [&]<class... Ms>(std::tuple<Ms...>*) { (f.template operator()<Ms>(), ...); }(static_cast<catalog*>(nullptr));
+}
+
+}  // namespace kin5::machines

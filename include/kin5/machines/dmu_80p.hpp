@@ -1,0 +1,25 @@
+/// @file machines/dmu_80p.hpp
+/// DMU 80P (seed 000, machine M2): a rotary table C about +Z carrying the part and a head B
+/// tilted at 45°, turning about p = (0, 1, 1)/√2. Commanded angles are ISO tool-relative (ψ).
+///
+///     u = R(Z, C) · R((0,1,1)/√2, B) · ẑ                                  (spec K5, [000:14])
+///
+/// B ∈ [0°, 180°]: the tool reaches the closed upper hemisphere k ≥ 0 (spec K6).
+#pragma once
+
+#include "../machine.hpp"
+
+namespace kin5::machines {
+
+struct dmu_80p {
+  static constexpr std::string_view id = "dmu-80p";
+  static constexpr std::string_view structure = "head-table: table C about +Z (part), 45-degree head B about (0,1,1)/sqrt2";
+  static constexpr vec3 tool_reference = unit_z;
+  static constexpr std::array rotary{
+      rotary_axis{axis_letter::C, mount::table, unit_z, angle_sense::tool_relative, rotary_travel::endless()},
+      rotary_axis{axis_letter::B, mount::head, {0.0, 0.70710678118654752, 0.70710678118654752},
+                  angle_sense::tool_relative, rotary_travel::between({0.0}, {180.0})}};
+};
+static_assert(check_machine<dmu_80p>());
+
+}  // namespace kin5::machines
