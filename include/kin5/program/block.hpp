@@ -1,0 +1,145 @@
+/// @file program/block.hpp
+/// The dialect-neutral model of an NC program: a sequence of blocks, each remembering where it
+/// came from (file, line, column) and what it says, in the units written (millimetres, degrees).
+///
+/// Readers (`siemens.hpp`, `heidenhain.hpp`, `iso.hpp`, `apt.hpp`) build it; writers turn it back
+/// into text; the translator maps the motion content between machines and keeps the rest in
+/// order. A block holds only what its source text says: modal state (the motion mode, the last
+/// position, whether tool-tip tracking is on) is the consumer's to carry, with `modal_state`.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "../vec.hpp"
+
+namespace kin5::program {
+
+/// The NC languages kin5 reads and writes.
+enum class dialect {
+  siemens,     ///< Siemens 840D (G-code with TRAORI)
+  heidenhain,  ///< Heidenhain conversational (L, M128, FUNCTION TCPM)
+  iso,         ///< ISO / Fanuc (G43.4, G43.5, G93)
+  apt,         ///< APT cutter-location data (GOTO/, FEDRAT/)
+};
+
+constexpr std::string_view name(dialect d) {
+  switch (d) {
+    case dialect::siemens: return "siemens";
+    case dialect::heidenhain: return "heidenhain";
+    case dialect::iso: return "iso";
+    case dialect::apt: return "apt";
+  }
+  return "?";
+}
+
+constexpr std::optional<dialect> parse_dialect(std::string_view s) {
+  for (dialect d : {dialect::siemens, dialect::heidenhain, dialect::iso, dialect::apt})
+    if (s == name(d)) return d;
+  return std::nullopt;
+}
+
+/// Where a block or a word starts: 1-based line and column (columns count bytes).
+struct source_location {
+  std::string file;
+  std::size_t line = 0;
+  std::size_t column = 0;
+  friend bool operator==(const source_location&, const source_location&) = default;
+};
+
+/// Motion commanded by a block.
+enum class motion_kind {
+  rapid,    ///< G0, FMAX, RAPID
+  linear,   ///< G1, L, GOTO
+  arc_cw,   ///< G2, C DR-
+  arc_ccw,  ///< G3, C DR+
+};
+
+/// How F is to be read.
+enum class feed_unit {
+  per_minute,    ///< G94: mm/min (tool-tip speed under TCP)
+  inverse_time,  ///< G93: 1 / block time in minutes
+};
+
+/// Plane of a circular move (G17/G18/G19, or the Heidenhain CC axes).
+enum class arc_plane { xy, zx, yz };
+
+/// Axis words of a block as written: absolute values, millimetres and degrees.
+struct axis_words {
+  std::optional<double> x_mm, y_mm, z_mm;
+  std::optional<double> a_deg, b_deg, c_deg;
+  /// Tool-axis vector written in the block (APT `GOTO/x,y,z,i,j,k`, G43.5 `I J K`,
+  /// Heidenhain `LN … TX TY TZ`), as written (not necessarily unit).
+  std::optional<vec3> tool_axis;
+
+  bool has_linear() const { return x_mm || y_mm || z_mm; }
+  bool has_rotary() const { return a_deg || b_deg || c_deg; }
+  bool empty() const { return !has_linear() && !has_rotary() && !tool_axis; }
+};
+
+/// Circle data of G2/G3 or Heidenhain CC/C/CR.
+struct arc_words {
+  arc_plane plane = arc_plane::xy;
+  std::optional<vec3> centre_mm;     ///< absolute centre, when the dialect gives one
+  std::optional<double> radius_mm;   ///< signed radius (CR / R), when given instead
+};
+
+/// One block of an NC program (one line; an APT statement with its `$` continuations).
+struct block {
+  source_location where;              ///< first character of the block
+  std::string text;                   ///< source text without the line ending
+  std::optional<long long> number;    ///< N number or Heidenhain block number
+
+  std::optional<std::string> program_begin;  ///< BEGIN PGM / % O… / PARTNO: the program name
+  std::optional<std::string> program_end;    ///< END PGM / M30 / FINI
+  std::optional<std::string> comment;        ///< comment text, without its delimiters
+  std::optional<bool> tcp;                   ///< tool-tip tracking switched on (true) or off (false)
+  std::optional<feed_unit> feed_mode;        ///< G93 / G94
+  std::optional<bool> metric;                ///< G71/G21/MM (true), G70/G20/INCH (false)
+  std::optional<long long> tool;             ///< tool call / T number
+  std::optional<double> spindle_rpm;         ///< S
+  std::vector<int> m_codes;                  ///< M functions other than those mapped above
+  std::optional<motion_kind> motion;         ///< set when the block commands a motion word (G0-G3, L, C)
+  axis_words axes;                           ///< axis words present in the block
+  std::optional<arc_words> arc;              ///< circle data of an arc block
+  std::optional<double> feed;                ///< F, in the unit of the modal feed mode
+  bool feed_rapid = false;                   ///< FMAX / RAPID: the move is at rapid traverse
+  /// Not understood and with no axis words: written back unchanged (same dialect) or
+  /// carried as text (another dialect) — never interpreted.
+  bool passthrough = false;
+
+  /// Whether the block moves any axis.
+  bool moves() const { return !axes.empty(); }
+};
+
+/// A program as read: its blocks in file order.
+struct program {
+  dialect language = dialect::siemens;
+  std::string file;
+  std::vector<block> blocks;
+};
+
+/// A problem found in the input, tied to the place it was found.
+struct diagnostic {
+  source_location where;
+  std::string message;
+
+  /// `FILE:LINE:COL: error: message`, the format compilers use, so editors can jump to it.
+  std::string to_string() const {
+    return where.file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
+           ": error: " + message;
+  }
+};
+
+/// A reader's result: the program, and every error found. A program with errors must not be
+/// translated; readers keep going after an error so that one run lists them all.
+struct read_result {
+  program parsed;
+  std::vector<diagnostic> errors;
+  bool ok() const { return errors.empty(); }
+};
+
+}  // namespace kin5::program

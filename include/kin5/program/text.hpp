@@ -1,0 +1,50 @@
+/// @file program/text.hpp
+/// Splitting NC text into lines with their locations, the shared first step of every reader.
+///
+/// Accepts LF, CRLF and lone CR line endings, any bytes (comments in other encodings are kept as
+/// they are), and a missing final newline. Lines and columns are 1-based; columns count bytes.
+#pragma once
+
+#include <cstddef>
+#include <string_view>
+#include <vector>
+
+namespace kin5::program {
+
+/// One physical line of the input, without its line ending.
+struct text_line {
+  std::string_view text;
+  std::size_t number = 0;  ///< 1-based
+};
+
+/// The lines of `text`. A final line ending does not start an empty last line.
+inline std::vector<text_line> split_lines(std::string_view text) {
+  std::vector<text_line> lines;
+  std::size_t start = 0, number = 1;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\n' || text[i] == '\r') {
+      lines.push_back({text.substr(start, i - start), number++});
+      if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
+      start = i + 1;
+    }
+  }
+  if (start < text.size()) lines.push_back({text.substr(start), number});
+  return lines;
+}
+
+/// ASCII upper case; other bytes unchanged.
+constexpr char to_upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+
+constexpr bool is_space(char c) { return c == ' ' || c == '\t' || c == '\f' || c == '\v'; }
+constexpr bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+constexpr bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+/// Case-insensitive comparison of `s` with an upper-case `keyword` at the start of `s`.
+constexpr bool starts_with_keyword(std::string_view s, std::string_view keyword) {
+  if (s.size() < keyword.size()) return false;
+  for (std::size_t i = 0; i < keyword.size(); ++i)
+    if (to_upper(s[i]) != keyword[i]) return false;
+  return true;
+}
+
+}  // namespace kin5::program

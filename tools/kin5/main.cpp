@@ -1,0 +1,24 @@
+// kin5: command-line front end. Thin: every subcommand is a few calls into the headers.
+#include <iostream>
+
+#include <kin5/version.hpp>
+
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"kin5: 5-axis CNC kinematics and NC program translation between machines"};
+  app.set_version_flag("--version", std::string("kin5 ") + kin5::version_string);
+  app.require_subcommand(1);
+  int exit_code = kin5::tool::exit_codes::ok;
+  kin5::tool::add_machines_command(app, exit_code);
+  kin5::tool::add_solve_command(app, exit_code);
+  kin5::tool::add_fk_command(app, exit_code);
+  kin5::tool::add_program_commands(app, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);  // prints help/version (code 0) or the error message
+    return code == 0 ? 0 : kin5::tool::exit_codes::usage;
+  }
+  return exit_code;
+}
