@@ -107,6 +107,13 @@ struct block {
   std::optional<arc_words> arc;              ///< circle data of an arc block
   std::optional<double> feed;                ///< F, in the unit of the modal feed mode
   bool feed_rapid = false;                   ///< FMAX / RAPID: the move is at rapid traverse
+  /// Axis words in machine coordinates (G53, G28/G30 intermediate points, M91/M92): not
+  /// workpiece positions, so never run through kinematics.
+  bool machine_coordinates = false;
+  /// Words the reader recognised as not changing geometry (G17, G40, G54, G90, G64, H1, D1, …),
+  /// as written. The writer of the same dialect writes them back in place; a writer of another
+  /// dialect writes them into a comment, so nothing is lost silently.
+  std::vector<std::string> kept_words;
   /// Not understood and with no axis words: written back unchanged (same dialect) or
   /// carried as text (another dialect) — never interpreted.
   bool passthrough = false;
@@ -128,9 +135,9 @@ struct diagnostic {
   std::string message;
 
   /// `FILE:LINE:COL: error: message`, the format compilers use, so editors can jump to it.
-  std::string to_string() const {
-    return where.file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
-           ": error: " + message;
+  std::string to_string(std::string_view severity = "error") const {
+    return where.file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) + ": " +
+           std::string(severity) + ": " + message;
   }
 };
 
@@ -139,6 +146,7 @@ struct diagnostic {
 struct read_result {
   program parsed;
   std::vector<diagnostic> errors;
+  std::vector<diagnostic> warnings;  ///< accepted, but worth a look (printed as "warning:")
   bool ok() const { return errors.empty(); }
 };
 
