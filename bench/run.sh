@@ -1,0 +1,43 @@
+#!/bin/sh
+# Builds the kin5 benchmarks in Release and prints, per catalog machine, the median CPU time per
+# call of inverse<M>, of its closed form and of the Eigen Levenberg–Marquardt baseline, and the
+# ratios inverse / closed form (goal <= 1.2) and Newton / inverse (goal >= 20).
+#
+#   bench/run.sh [extra Google Benchmark flags]
+#
+# Environment: KIN5_BENCH_BUILD_DIR (default: build-bench in the source tree),
+#              KIN5_BENCH_REPETITIONS (default 5), KIN5_BENCH_MIN_TIME (seconds, default 0.2).
+set -eu
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${KIN5_BENCH_BUILD_DIR:-$root/build-bench}
+reps=${KIN5_BENCH_REPETITIONS:-5}
+min_time=${KIN5_BENCH_MIN_TIME:-0.2}
+
+generator=""
+if command -v ninja >/dev/null 2>&1; then generator="-G Ninja"; fi
+# shellcheck disable=SC2086
+cmake -S "$root" -B "$build" $generator -DCMAKE_BUILD_TYPE=Release -DKIN5_BUILD_BENCH=ON \
+  -DKIN5_BUILD_TESTS=OFF -DKIN5_BUILD_TOOLS=OFF -DKIN5_BUILD_REACH=OFF -DKIN5_INSTALL=OFF >/dev/null
+cmake --build "$build" --target kin5_bench_inverse -j2 >/dev/null
+
+csv="$build/bench/inverse.csv"
+"$build/bench/kin5_bench_inverse" --benchmark_format=csv --benchmark_repetitions="$reps" \
+  --benchmark_report_aggregates_only=true --benchmark_min_time="$min_time" "$@" >"$csv"
+
+# CSV columns: name,iterations,real_time,cpu_time,time_unit,...; names like "inverse/dmu-80p_median".
+awk -F, '
+  $1 ~ /_median"?$/ {
+    name = $1; gsub(/"/, "", name); sub(/_median$/, "", name)
+    split(name, part, "/"); kind = part[1]; id = part[2]
+    t[kind, id] = $4
+    if (!(id in seen)) { seen[id] = 1; order[++n] = id }
+  }
+  END {
+    printf "%-22s %12s %12s %14s %14s %14s\n", "machine", "inverse ns", "closed ns", "newton ns", "inv/closed", "newton/inv"
+    for (k = 1; k <= n; ++k) {
+      id = order[k]
+      printf "%-22s %12.1f %12.1f %14.1f %14.2f %14.1f\n", id, t["inverse", id], t["closed_form", id],
+             t["eigen_newton", id], t["inverse", id] / t["closed_form", id], t["eigen_newton", id] / t["inverse", id]
+    }
+  }' "$csv"
