@@ -1,0 +1,162 @@
+/// @file program/io.hpp
+/// One entry point for every NC dialect: `read` and `write` take the dialect as a value and call
+/// the reader or writer of `siemens.hpp`, `heidenhain.hpp`, `iso.hpp` or `apt.hpp`;
+/// `default_dialect` names the language a catalog machine's controller speaks, and
+/// `guess_dialect` recognises a program by markers only one language uses.
+///
+/// Example:
+/// @code
+///   auto in = kin5::program::read(kin5::program::dialect::siemens, text, "part.mpf");
+///   if (!in.ok()) { for (auto& e : in.errors) std::cerr << e.to_string() << '\n'; return; }
+///   std::string nc = kin5::program::write(kin5::program::dialect::heidenhain, in.parsed);
+/// @endcode
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "apt.hpp"
+#include "block.hpp"
+#include "heidenhain.hpp"
+#include "iso.hpp"
+#include "siemens.hpp"
+#include "text.hpp"
+
+namespace kin5::program {
+
+/// Reads `text` (the bytes of a file, any line endings) as a program in dialect `d`.
+/// `file_name` is only used in the locations of blocks and diagnostics.
+inline read_result read(dialect d, std::string_view text, std::string file_name) {
+  switch (d) {
+    case dialect::siemens: return siemens::read(text, std::move(file_name));
+    case dialect::heidenhain: return heidenhain::read(text, std::move(file_name));
+    case dialect::iso: return iso::read(text, std::move(file_name));
+    case dialect::apt: return apt::read(text, std::move(file_name));
+  }
+  return {};
+}
+
+/// Writer settings for `write`, one member per dialect; only the one for the dialect written
+/// is used. Each member defaults to that writer's own defaults.
+struct write_settings {
+  siemens::write_options siemens_options{};
+  heidenhain::write_options heidenhain_options{};
+  iso::write_options iso_options{};
+  apt::write_options apt_options{};
+};
+
+/// Writes `p` in dialect `d`, whatever dialect it was read from.
+/// Throws `std::invalid_argument` (from the dialect's writer) when a block cannot be written
+/// in `d`; the message names the block's source location.
+inline std::string write(dialect d, const program& p, const write_settings& settings = {}) {
+  switch (d) {
+    case dialect::siemens: return siemens::write(p, settings.siemens_options);
+    case dialect::heidenhain: return heidenhain::write(p, settings.heidenhain_options);
+    case dialect::iso: return iso::write(p, settings.iso_options);
+    case dialect::apt: return apt::write(p, settings.apt_options);
+  }
+  return {};
+}
+
+/// The dialect the controller of catalog machine `machine_id` reads, or nothing for an id
+/// that is not in the catalog. The table (the controllers the source papers name, or the usual
+/// one for the structure):
+///
+/// | machine id              | controller                           | dialect      |
+/// |-------------------------|--------------------------------------|--------------|
+/// | `sajo-12000p`           | Siemens 840D (TRAORI), seed 000      | `siemens`    |
+/// | `dmu-80p`               | Heidenhain iTNC (M128), seed 000     | `heidenhain` |
+/// | `dmu-50v`               | Heidenhain (DMG's usual), seed 003   | `heidenhain` |
+/// | `ac-trunnion`           | Siemens 840D                         | `siemens`    |
+/// | `ac-head`               | Siemens 840D                         | `siemens`    |
+/// | `b-head-a-tilted-table` | Siemens 840D                         | `siemens`    |
+/// | `a-rotary-4axis`        | ISO / Fanuc-style, seed 002          | `iso`        |
+constexpr std::optional<dialect> default_dialect(std::string_view machine_id) {
+  struct entry {
+    std::string_view id;
+    dialect language;
+  };
+  constexpr entry table[] = {
+      {"sajo-12000p", dialect::siemens},           {"dmu-80p", dialect::heidenhain},
+      {"dmu-50v", dialect::heidenhain},            {"ac-trunnion", dialect::siemens},
+      {"ac-head", dialect::siemens},               {"b-head-a-tilted-table", dialect::siemens},
+      {"a-rotary-4axis", dialect::iso},
+  };
+  for (const entry& e : table)
+    if (e.id == machine_id) return e.language;
+  return std::nullopt;
+}
+
+namespace detail {
+
+/// Whether the upper-case keyword `keyword` occurs in `line`, case-insensitively, as a word of
+/// its own: not preceded by a letter or digit, not followed by a digit (so `TRAORI` does not
+/// match in `XTRAORI`, nor `M128` in `M1280`).
+constexpr bool contains_keyword(std::string_view line, std::string_view keyword) {
+  for (std::size_t i = 0; i + keyword.size() <= line.size(); ++i) {
+    if (i > 0 && (is_letter(line[i - 1]) || is_digit(line[i - 1]))) continue;
+    const std::size_t after = i + keyword.size();
+    if (after < line.size() && is_digit(line[after])) continue;
+    if (starts_with_keyword(line.substr(i), keyword)) return true;
+  }
+  return false;
+}
+
+/// `line` without leading blanks and a leading block number (`N10 `, `10 `).
+constexpr std::string_view skip_block_number(std::string_view line) {
+  std::size_t i = 0;
+  while (i < line.size() && is_space(line[i])) ++i;
+  std::size_t j = i;
+  if (j < line.size() && (line[j] == 'N' || line[j] == 'n')) ++j;
+  const std::size_t digits = j;
+  while (j < line.size() && is_digit(line[j])) ++j;
+  if (j > digits && (j == line.size() || is_space(line[j]))) {
+    i = j;
+    while (i < line.size() && is_space(line[i])) ++i;
+  }
+  return line.substr(i);
+}
+
+}  // namespace detail
+
+/// The dialect of `text` when it carries a marker that only one dialect uses, else nothing.
+///
+/// Markers, each at the start of a block (after an optional block number):
+/// `BEGIN PGM` (heidenhain), `%_N_` (siemens), `PARTNO`, `GOTO/`, `FEDRAT/` (apt); and anywhere
+/// in a line: `TRAORI`, `TRAFOOF` (siemens), `M128`, `FUNCTION TCPM` (heidenhain), `G43.4`,
+/// `G43.5` (iso). Text with markers of two dialects, or none, gives nothing: the caller then
+/// decides (for example with `default_dialect`). Cost: one pass over the first 200 lines.
+constexpr std::optional<dialect> guess_dialect(std::string_view text) {
+  bool seen[4] = {false, false, false, false};
+  auto mark = [&](dialect d) { seen[static_cast<int>(d)] = true; };
+  std::size_t start = 0, lines = 0;
+  while (start < text.size() && lines < 200) {
+    std::size_t end = start;
+    while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
+    const std::string_view line = text.substr(start, end - start);
+    const std::string_view statement = detail::skip_block_number(line);
+    if (starts_with_keyword(statement, "BEGIN PGM")) mark(dialect::heidenhain);
+    if (starts_with_keyword(statement, "%_N_")) mark(dialect::siemens);
+    if (starts_with_keyword(statement, "PARTNO") || starts_with_keyword(statement, "GOTO/") ||
+        starts_with_keyword(statement, "FEDRAT/"))
+      mark(dialect::apt);
+    if (detail::contains_keyword(line, "TRAORI") || detail::contains_keyword(line, "TRAFOOF"))
+      mark(dialect::siemens);
+    if (detail::contains_keyword(line, "M128") || detail::contains_keyword(line, "FUNCTION TCPM"))
+      mark(dialect::heidenhain);
+    if (detail::contains_keyword(line, "G43.4") || detail::contains_keyword(line, "G43.5")) mark(dialect::iso);
+    start = end + 1;
+    ++lines;
+  }
+  std::optional<dialect> found;
+  for (dialect d : {dialect::siemens, dialect::heidenhain, dialect::iso, dialect::apt}) {
+    if (!seen[static_cast<int>(d)]) continue;
+    if (found) return std::nullopt;
+    found = d;
+  }
+  return found;
+}
+
+}  // namespace kin5::program
