@@ -1,0 +1,232 @@
+#!/bin/sh
+# End-to-end tests of `kin5 translate`, `kin5 reverse` and `kin5 post`.
+#
+#   run.sh KIN5_EXE EXAMPLES_DIR TEST_NAME
+#
+# Each test runs the built tool on a program (the shipped examples, or one written below),
+# then checks the exit code, stdout/stderr and the output file. Expected numbers are typed from
+# the specification (docs: spec §5 Table 1, §6.1, §7, K1, K7) or worked by hand, never taken
+# from kin5's own output. Numbers are read back from the written program by awk.
+set -u
+
+exe=$1 examples=$2 name=$3
+dir=$(mktemp -d) || exit 2
+trap 'rm -rf "$dir"' EXIT
+cd "$dir" || exit 2
+
+fail=0
+report() { echo "FAIL [$name]: $*" >&2; fail=1; }
+show() { for f in "$@"; do echo "--- $f" >&2; cat "$f" >&2; done; }
+
+# run EXPECTED_EXIT ARGS...: runs kin5 with stdout to out, stderr to err.
+run() {
+  want=$1; shift
+  "$exe" "$@" >out 2>err
+  got=$?
+  [ "$got" = "$want" ] || { report "exit $got, expected $want: kin5 $*"; show err; }
+}
+
+# words FILE: for every motion line, "X Y Z A B C F" values as NAME=VALUE pairs on one line
+# (Siemens, ISO and Heidenhain words such as X-34.983, X+34.983, B17.067; comments dropped).
+words() {
+  awk '{
+    sub(/;.*/, ""); sub(/\(.*\)/, "")
+    out = ""
+    for (i = 1; i <= NF; ++i) {
+      w = toupper(substr($i, 1, 1)); v = substr($i, 2)
+      if (index("XYZABCF", w) && v ~ /^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)$/) out = out " " w "=" (v + 0)
+    }
+    if (out != "") print out
+  }' "$1"
+}
+
+# value LINE NAME: the number of NAME=... in LINE (empty if absent).
+value() { printf '%s\n' "$1" | awk -v n="$2" '{ for (i = 1; i <= NF; ++i) if (index($i, n "=") == 1) print substr($i, length(n) + 2) }'; }
+
+# near A B TOL: |A - B| <= TOL.
+near() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= t) }'; }
+
+# near360 A B TOL: A and B equal modulo 360 within TOL.
+near360() {
+  awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = (a - b) % 360; if (d < 0) d += 360; if (d > 180) d = 360 - d; exit !(d <= t) }'
+}
+
+# line_with FILE NAME VALUE: the first words() line whose NAME is VALUE (within 1e-6).
+line_with() {
+  words "$1" | while IFS= read -r l; do
+    v=$(value "$l" "$2")
+    if [ -n "$v" ] && near "$v" "$3" 1e-6; then printf '%s\n' "$l"; break; fi
+  done
+}
+
+# Table 1 (spec §5): SAJO X Y Z A B F -> DMU X Y Z B C.
+table1='-34.983 9.100 118.526 -77.954 3.536 1091 34.983 118.526 9.100 17.067 87.479
+-33.824 9.118 117.545 -77.913 4.027 1093 33.824 117.545 9.118 17.126 87.950
+-32.674 9.153 116.558 -77.918 4.588 1094 32.674 116.558 9.153 17.118 88.513
+-31.531 9.203 115.567 -77.963 5.158 1096 31.531 115.567 9.203 17.054 89.106'
+
+# check_table1 FILE [FEEDS]: the four Table 1 rows are in FILE: X Y Z exact (to 1e-6), B and C
+# within 0.001 deg, F as FEEDS (default: the SAJO feeds, the tcp policy) within 1 mm/min.
+check_table1() {
+  feeds=${2:-"1091 1093 1094 1096"}
+  n=0
+  printf '%s\n' "$table1" | while read -r sx sy sz sa sb sf dx dy dz db dc; do
+    n=$((n + 1))
+    f=$(echo "$feeds" | awk -v k="$n" '{ print $k }')
+    l=$(line_with "$1" X "$dx")
+    if [ -z "$l" ]; then echo "row $n: no block with X=$dx" >&2; exit 1; fi
+    for pair in "Y $dy 1e-6" "Z $dz 1e-6" "B $db 0.001" "F $f 1"; do
+      set -- $pair
+      v=$(value "$l" "$1")
+      if [ -z "$v" ] || ! near "$v" "$2" "$3"; then echo "row $n: $1=$v, expected $2 (tolerance $3): $l" >&2; exit 1; fi
+    done
+    v=$(value "$l" C)
+    if [ -z "$v" ] || ! near360 "$v" "$dc" 0.001; then echo "row $n: C=$v, expected $dc (mod 360, tolerance 0.001): $l" >&2; exit 1; fi
+  done
+}
+
+example="$examples/table1-sajo.mpf"
+
+case "$name" in
+  example)
+    # Table 1, sajo -> dmu, default feed policy (tcp: F kept).
+    run 0 translate --from sajo-12000p --to dmu-80p -o table1.h "$example"
+    [ -s table1.h ] || report "table1.h not written"
+    [ -s out ] && report "stdout not empty with -o"
+    check_table1 table1.h || { report "Table 1 values"; show table1.h; }
+    ;;
+  block-time)
+    # (K17) f_d = f_s l_d / l_s on consecutive rows: spec §7 gives 1089.25, 1094.48, 1102.02 for
+    # rows 2-4; row 1 comes from a pure 50 mm approach (no rotary change): F kept, 1091.
+    run 0 translate --from sajo-12000p --to dmu-80p --feed block-time -o bt.h "$example"
+    check_table1 bt.h "1091 1089.25 1094.48 1102.02" || { report "block-time feeds"; show bt.h; }
+    ;;
+  stdin-stdout)
+    # '-' in and out: the same program as file to file.
+    run 0 translate --from sajo-12000p --to dmu-80p -o file.h "$example"
+    "$exe" translate --from sajo-12000p --to dmu-80p - <"$example" >piped.h 2>err
+    [ $? = 0 ] || { report "stdin run failed"; show err; }
+    check_table1 piped.h || { report "Table 1 values through a pipe"; show piped.h; }
+    words file.h >a; words piped.h >b
+    cmp -s a b || { report "stdin/stdout and file/file motion differ"; show file.h piped.h; }
+    "$exe" translate --from sajo-12000p --to dmu-80p -o - "$example" >dash.h 2>err
+    words dash.h >c
+    cmp -s a c || report "-o - differs from -o file"
+    ;;
+  summary)
+    # The example has 24 lines, one block each; 6 of them move (the approach, the four rows
+    # and the retract), all directly reachable.
+    run 0 translate --from sajo-12000p --to dmu-80p -o s.h "$example"
+    grep -Eq '24 blocks read, 24 written, [0-9]+ passed through; 6 direct, 0 other branch, 0 unreachable' err ||
+      { report "summary line"; show err; }
+    ;;
+  bad-input)
+    # Errors at known places, every one reported as FILE:LINE:COL: error: (a number that is not
+    # one, at the start of its word; an axis word twice in one block).
+    printf '%s\n' 'N10 G17 G90 G94' 'N20 TRAORI' 'N30 G1 X1.2.3 Y0 Z0 F100' 'N40 G1 X0 Y0 Z5' \
+      'N50 G1 X1 Y2 Z3 YY F100' 'N60 G1 X=7 Y0' 'N70 M30' >bad.mpf
+    echo keep >bad.h
+    cp bad.h before.h
+    run 2 translate --from sajo-12000p --to dmu-80p -o bad.h bad.mpf
+    for where in 'bad.mpf:3:8: error: ' 'bad.mpf:5:17: error: ' 'bad.mpf:6:8: error: '; do
+      grep -Fq -- "$where" err || report "missing '$where...'"
+    done
+    n=$(grep -c ': error: ' err)
+    [ "$n" = 3 ] || report "$n errors reported, expected 3"
+    grep -v ': error: ' err | grep -Ev '^kin5 translate: ' | grep -q . && report "stray stderr lines"
+    [ -s out ] && report "stdout not empty"
+    cmp -s bad.h before.h || report "existing output changed"
+    [ "$fail" = 0 ] || show err
+    ;;
+  unreachable)
+    # A > 0 cannot be reached on the DMU (spec §6.1): gap exactly A, for every B. Three such
+    # blocks among reachable ones; A = -100 is reachable (other branch, C + 180).
+    printf '%s\n' 'N10 G17 G90 G94' 'N20 TRAORI' 'N30 G1 X0 Y0 Z50 A-45 B30 F1000' \
+      'N40 G1 X1 Y0 Z50 A5 B30' 'N50 G1 X2 Y0 Z50 A-30 B60' 'N60 G1 X3 Y0 Z50 A10 B200' \
+      'N70 G1 X4 Y0 Z50 A-100 B20' 'N80 G1 X5 Y0 Z50 A20 B0' 'N90 TRAFOOF' 'N100 M30' >up.mpf
+    run 3 translate --from sajo-12000p --to dmu-80p -o up.h up.mpf
+    for pair in '4 5' '6 10' '8 20'; do
+      set -- $pair
+      l=$(grep -E "^up\.mpf:$1:[0-9]+: error: " err)
+      [ -n "$l" ] || { report "line $1 not listed"; continue; }
+      echo "$l" | grep -q 'unreachable on dmu-80p' || report "line $1: not called unreachable: $l"
+      g=$(echo "$l" | sed -n 's/.* is \([0-9.]*\) deg outside.*/\1/p')
+      { [ -n "$g" ] && near "$g" "$2" 1e-6; } || report "line $1: gap '$g', expected $2"
+      echo "$l" | grep -Eq "A=?$2([^0-9]|$)" || report "line $1: source angle A$2 not shown: $l"
+    done
+    n=$(grep -c ': error: ' err)
+    [ "$n" = 3 ] || report "$n errors, expected 3"
+    grep -Eq '1 other branch, 3 unreachable' err || report "summary counts"
+    [ -e up.h ] && report "up.h created on failure"
+    [ -s out ] && report "stdout not empty"
+    [ "$fail" = 0 ] || show err
+    ;;
+  no-partial)
+    # A failing run leaves an existing OUT byte for byte as it was, creates no new OUT, and
+    # leaves no temporary file behind; a successful one replaces OUT.
+    printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A10 B0 F500' 'N30 M30' >up.mpf
+    printf 'previous contents\n' >out.h
+    cp out.h before.h
+    run 3 translate --from sajo-12000p --to dmu-80p -o out.h up.mpf
+    cmp -s out.h before.h || report "exit 3 changed out.h"
+    run 3 translate --from sajo-12000p --to dmu-80p -o new.h up.mpf
+    [ -e new.h ] && report "exit 3 created new.h"
+    run 2 translate --from sajo-12000p --to dmu-80p -o new.h missing.mpf
+    [ -e new.h ] && report "exit 2 created new.h"
+    [ "$(ls -A | grep -c kin5)" = 0 ] || report "temporary files left: $(ls -A)"
+    run 0 translate --from sajo-12000p --to dmu-80p -o out.h "$example"
+    check_table1 out.h || report "out.h not replaced on success"
+    [ "$(ls -A | grep -c kin5)" = 0 ] || report "temporary files left: $(ls -A)"
+    ;;
+  missing-input)
+    run 2 translate --from sajo-12000p --to dmu-80p -o x.h does-not-exist.mpf
+    grep -q "does-not-exist.mpf" err || report "path not named"
+    [ -e x.h ] && report "x.h created"
+    mkdir adir
+    run 2 translate --from sajo-12000p --to dmu-80p adir
+    grep -q "adir" err || report "directory not named"
+    ;;
+  usage)
+    run 1 translate --from sajo-12000p --to no-such-machine "$example"
+    grep -q "unknown machine 'no-such-machine'" err || report "unknown machine message"
+    run 1 translate --from sajo-12000p --to dmu-80p --feed fast "$example"
+    run 1 translate --from sajo-12000p --to dmu-80p --to-dialect fanuc "$example"
+    run 1 translate --from sajo-12000p "$example"
+    run 1 translate --from sajo-12000p --to dmu-80p
+    run 1 post --machine dmu-80p --dialect klingon "$examples/cl-path.apt"
+    ;;
+  reverse)
+    # NC -> CL: GOTO/x,y,z,i,j,k with (i,j,k) = (cos A sin B, -sin A, cos A cos B) (K1).
+    run 0 reverse --machine sajo-12000p -o t.apt "$example"
+    printf '%s\n' "$table1" | while read -r sx sy sz sa sb rest; do
+      l=$(grep -E "^GOTO/" t.apt | awk -F'[/,]' -v x="$sx" '{ d = $2 - x; if (d < 0) d = -d; if (d < 1e-6) { print; exit } }')
+      [ -n "$l" ] || { echo "no GOTO at X=$sx" >&2; exit 1; }
+      echo "$l" | awk -F'[/,]' -v y="$sy" -v z="$sz" -v a="$sa" -v b="$sb" 'BEGIN { r = atan2(0, -1) / 180 } {
+        i = cos(a * r) * sin(b * r); j = -sin(a * r); k = cos(a * r) * cos(b * r)
+        e = 0; d[1] = $3 - y; d[2] = $4 - z; d[3] = $5 - i; d[4] = $6 - j; d[5] = $7 - k
+        for (n = 1; n <= 5; ++n) { t = d[n] < 0 ? -d[n] : d[n]; if (t > (n < 3 ? 1e-6 : 1e-6)) e = 1 }
+        if (NF != 7 || e) { print "bad GOTO: " $0 > "/dev/stderr"; exit 1 } }' || exit 1
+    done || { report "GOTO values"; show t.apt; }
+    ;;
+  post)
+    # CL -> DMU 80P: B = arccos(2k - 1) (K7) for each tool axis of the example; the cut is at
+    # Z10, Y-20, X 0..40. With k = 0.9516840, 0.9768268, 0.9852558 (hand-normalised vectors):
+    # B = 25.3956, 17.5121, 13.9488 deg (arccos(2k-1), worked out separately).
+    run 0 post --machine dmu-80p -o p.h "$examples/cl-path.apt"
+    for pair in '0 25.3956' '10 17.5121' '20 13.9488' '30 17.5121' '40 25.3956'; do
+      set -- $pair
+      l=$(words p.h | while IFS= read -r w; do
+            x=$(value "$w" X); z=$(value "$w" Z)
+            if [ -n "$x" ] && [ -n "$z" ] && near "$x" "$1" 1e-6 && near "$z" 10 1e-6; then echo "$w"; break; fi
+          done)
+      b=$(value "$l" B)
+      { [ -n "$b" ] && near "$b" "$2" 0.001; } || report "X=$1: B=$b, expected $2"
+    done
+    [ "$fail" = 0 ] || show p.h err
+    ;;
+  *)
+    echo "run.sh: unknown test '$name'" >&2
+    exit 2
+    ;;
+esac
+exit "$fail"
