@@ -85,12 +85,7 @@ struct two_axis_geometry {
   }
 
   /// Angle from u to the set of axes reachable with ψq unlimited (G5); 0 inside.
-  constexpr radians workspace_gap(const vec3& u) const {
-    const double theta = angle_between(p, u).value;
-    if (theta < theta_min.value) return {theta_min.value - theta};
-    if (theta > theta_max.value) return {theta - theta_max.value};
-    return {0.0};
-  }
+  constexpr radians workspace_gap(const vec3& u) const { return latitude_gap(angle_between(p, u).value); }
 
   /// ψp of (G4): the signed angle about p from w = R(q, ψq) t to u, between their projections on
   /// the plane normal to p.
@@ -105,19 +100,21 @@ struct two_axis_geometry {
                                     radians tolerance = {1e-9}, double pole_radius = 1e-10) const {
     two_axis_solution out{};
     const vec3 u = normalized(u_in);
-    out.gap = workspace_gap(u);
+    const double theta_u = angle_between(p, u).value;  // ∠(p, u), used for the gap and (G3)
+    out.gap = latitude_gap(theta_u);
     if (out.gap.value > tolerance.value) return out;  // S4: no ψq gives this latitude
     out.gap = {0.0};
 
     // (G2)-(G3): ρ² − (κ−c₀)² as (cos θmin − cos θ)(cos θ − cos θmax), each factor in sines.
-    const double theta = math::clamp(angle_between(p, u).value, theta_min.value, theta_max.value);
+    const double theta = math::clamp(theta_u, theta_min.value, theta_max.value);
     const double to_top = 2.0 * math::sin(0.5 * (theta + theta_min.value)) * math::sin(0.5 * (theta - theta_min.value));
     const double to_bottom = 2.0 * math::sin(0.5 * (theta_max.value + theta)) * math::sin(0.5 * (theta_max.value - theta));
     const double prod = to_top * to_bottom;
     const double s = prod > 0 ? math::sqrt(prod) : 0.0;
     const double kappa_minus_c0 = math::cos(theta) - c0;
-    const radians psi_q_plus{delta.value + math::atan2(s, kappa_minus_c0)};
-    const radians psi_q_minus{delta.value - math::atan2(s, kappa_minus_c0)};
+    const double half_opening = math::atan2(s, kappa_minus_c0);
+    const radians psi_q_plus{delta.value + half_opening};
+    const radians psi_q_minus{delta.value - half_opening};
 
     const bool at_pole = norm(cross(p, u)) <= pole_radius;
     out.status = at_pole ? reach_status::pole : reach_status::reachable;
@@ -146,6 +143,12 @@ struct two_axis_geometry {
   }
 
  private:
+  // Angle from the latitude θ = ∠(p, u) to [θmin, θmax] (G5); 0 inside.
+  constexpr radians latitude_gap(double theta) const {
+    if (theta < theta_min.value) return {theta_min.value - theta};
+    if (theta > theta_max.value) return {theta - theta_max.value};
+    return {0.0};
+  }
   constexpr radians signed_angle_about_p(const vec3& from, const vec3& to) const {
     return {math::atan2(dot(p, cross(from, to)), dot(from, to))};
   }
