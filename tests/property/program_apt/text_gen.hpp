@@ -1,0 +1,63 @@
+/// @file text_gen.hpp
+/// Drawing NC numbers and words the way hand-written and post-processed programs spell them:
+/// exact decimal values, random case, optional `+`, trailing and leading dots. For use inside
+/// RapidCheck properties (each function draws with `*gen`).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <rapidcheck.h>
+
+#include <kin5/program/number.hpp>
+
+namespace kin5::test {
+
+/// k / 10^decimals for k uniform in [lo·10^d, hi·10^d]: a value every writer reproduces exactly.
+inline double draw_decimal(double lo, double hi, int decimals) {
+  double scale = 1;
+  for (int i = 0; i < decimals; ++i) scale *= 10;
+  const auto k = *rc::gen::inRange<std::int64_t>(static_cast<std::int64_t>(lo * scale),
+                                                 static_cast<std::int64_t>(hi * scale) + 1);
+  return static_cast<double>(k) / scale;
+}
+
+/// `value` spelled in one of the ways NC programs write it: `+5`, `5.`, `.5`, `-.5`, `5.500`.
+inline std::string draw_spelling(double value, int decimals) {
+  std::string s = kin5::program::format_number(value, decimals);
+  const bool negative = s.front() == '-';
+  std::string digits = negative ? s.substr(1) : s;
+  if (digits.find('.') == std::string::npos && *rc::gen::arbitrary<bool>()) digits += '.';
+  if (digits.rfind("0.", 0) == 0 && *rc::gen::arbitrary<bool>()) digits.erase(0, 1);
+  if (digits.find('.') != std::string::npos && *rc::gen::arbitrary<bool>()) digits += "00";
+  const std::string sign = negative ? "-" : (*rc::gen::arbitrary<bool>() ? "+" : "");
+  return sign + digits;
+}
+
+/// `word` (upper case) in random letter case.
+inline std::string draw_case(std::string word) {
+  const int mode = *rc::gen::inRange(0, 3);
+  for (char& c : word) {
+    const bool lower = mode == 1 || (mode == 2 && *rc::gen::arbitrary<bool>());
+    if (lower && c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  }
+  return word;
+}
+
+/// Zero to two spaces or tabs.
+inline std::string draw_blanks() {
+  return *rc::gen::element<std::string>("", "", " ", "  ", "\t");
+}
+
+/// Text for a comment or name: letters, digits and inner spaces, no outer blanks.
+inline std::string draw_words(std::size_t max_words = 3) {
+  const auto n = *rc::gen::inRange<std::size_t>(1, max_words + 1);
+  std::string s;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i) s += ' ';
+    s += *rc::gen::element<std::string>("ROUGH", "finish", "T1", "op_10", "D10R0.5", "x-y", "Z-5", "ok!", "a=b");
+  }
+  return s;
+}
+
+}  // namespace kin5::test
