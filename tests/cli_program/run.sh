@@ -114,21 +114,22 @@ case "$name" in
     cmp -s a c || report "-o - differs from -o file"
     ;;
   summary)
-    # The example has 24 lines, one block each; 6 of them move (the approach, the four rows
+    # The example has 23 lines, one block each; 6 of them move (the approach, the four rows
     # and the retract), all directly reachable.
     run 0 translate --from sajo-12000p --to dmu-80p -o s.h "$example"
-    grep -Eq '24 blocks read, 24 written, [0-9]+ passed through; 6 direct, 0 other branch, 0 unreachable' err ||
+    grep -Eq '23 blocks read, 23 written, [0-9]+ passed through; 6 direct, 0 other branch, 0 unreachable' err ||
       { report "summary line"; show err; }
     ;;
   bad-input)
-    # Errors at known places, every one reported as FILE:LINE:COL: error: (a number that is not
-    # one, at the start of its word; an axis word twice in one block).
+    # Errors at known places, every one reported as FILE:LINE:COL: error: at the first byte of
+    # the offending word: a number that is not one (X1.2.3), an unknown word (YY), incremental
+    # positioning (G91, not supported).
     printf '%s\n' 'N10 G17 G90 G94' 'N20 TRAORI' 'N30 G1 X1.2.3 Y0 Z0 F100' 'N40 G1 X0 Y0 Z5' \
-      'N50 G1 X1 Y2 Z3 YY F100' 'N60 G1 X=7 Y0' 'N70 M30' >bad.mpf
+      'N50 G1 X1 Y2 Z3 YY F100' 'N60 G1 X0 Y0 G91' 'N70 M30' >bad.mpf
     echo keep >bad.h
     cp bad.h before.h
     run 2 translate --from sajo-12000p --to dmu-80p -o bad.h bad.mpf
-    for where in 'bad.mpf:3:8: error: ' 'bad.mpf:5:17: error: ' 'bad.mpf:6:8: error: '; do
+    for where in 'bad.mpf:3:8: error: ' 'bad.mpf:5:17: error: ' 'bad.mpf:6:14: error: '; do
       grep -Fq -- "$where" err || report "missing '$where...'"
     done
     n=$(grep -c ': error: ' err)
