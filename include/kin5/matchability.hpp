@@ -1,0 +1,71 @@
+/// @file matchability.hpp
+/// Whether a block of one machine can be run on another (spec §6.1, generalised to any pair):
+///
+/// * `direct`: the source pose lies on the source machine's principal branch (branch 0 of
+///   `inverse<From>` gives it back) and the target reaches the tool axis;
+/// * `other_branch`: the target reaches it, but the source pose is on the source's other
+///   branch, (K3). For SAJO → DMU 80P that is A_s ∈ [As1, −90°), where the paper's eq 19 puts
+///   C_d 180° off (spec E6, P13); solving the tool axis, as kin5 does, is exact there too;
+/// * `unreachable`: no target solution within travel; the gap is the angle from the tool axis
+///   to the target's reach. SAJO A_s ∈ (0°, As2] has gap exactly A_s on the DMU 80P (P14).
+#pragma once
+
+#include <string_view>
+
+#include "inverse.hpp"
+
+namespace kin5 {
+
+/// How a source block maps to the target machine (see the file comment).
+enum class matchability { direct, other_branch, unreachable };
+
+constexpr std::string_view name(matchability m) {
+  switch (m) {
+    case matchability::direct: return "direct";
+    case matchability::other_branch: return "other-branch";
+    case matchability::unreachable: return "unreachable";
+  }
+  return "?";
+}
+
+/// Whether commanded angles `source` of machine M lie on its principal branch: branch 0 of
+/// `inverse<M>` for their own tool axis gives them back, modulo 360°, to `tolerance`. At a pole
+/// the free angle is kept, so a pole pose is principal when its carried angle is. A one-rotary
+/// machine has a single branch.
+template <machine M>
+constexpr bool on_principal_branch(const rotary_angles<M>& source, radians tolerance = {1e-7}) {
+  if constexpr (rotary_count<M> == 1) {
+    return true;
+  } else {
+    inverse_options options{};
+    options.pole = pole_policy::keep(source[0]);
+    const auto solutions = inverse<M>(tool_axis<M>(source), options);
+    for (const auto& s : solutions) {
+      if (s.branch != 0) continue;
+      bool same = true;
+      for (std::size_t i = 0; i < rotary_count<M>; ++i)
+        same = same && math::abs(math::wrap_pi(s.angles[i].value - source[i].value)) <= tolerance.value;
+      if (same) return true;
+    }
+    return false;
+  }
+}
+
+/// The class of one block: `source_principal` from `on_principal_branch`, `target_reachable`
+/// from the target's `inverse` (a solution within travel).
+constexpr matchability classify(bool source_principal, bool target_reachable) {
+  if (!target_reachable) return matchability::unreachable;
+  return source_principal ? matchability::direct : matchability::other_branch;
+}
+
+/// The class of source angles of From on machine To, tool axes mapped by `target_R_source`.
+/// `gap`, when given, receives the angle to the target's reach (0 when reachable).
+template <machine From, machine To>
+constexpr matchability classify(const rotary_angles<From>& source, const mat3& target_R_source,
+                                radians* gap = nullptr) {
+  const auto target = inverse<To>(target_R_source * tool_axis<From>(source));
+  if (gap) *gap = target.reachable() ? radians{0.0} : target.gap;
+  return classify(on_principal_branch<From>(source), target.reachable());
+}
+
+}  // namespace kin5
