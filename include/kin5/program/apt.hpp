@@ -181,8 +181,7 @@ class reader {
       }
     }
     if (major.empty()) {
-      if (trim(content).empty()) return b;  // a `$$` comment line
-      b.passthrough = true;
+      b.passthrough = !st.has_comment;  // a `$$` comment line, or something else kept as written
       return b;
     }
 
@@ -297,7 +296,7 @@ class reader {
     } else if (major == "PPRINT") {
       std::string text(tail);
       if (b.comment) text += (text.empty() ? "$$ " : " $$ ") + *b.comment;
-      b.comment = std::move(text);
+      b.comment = std::string(trim(text));
     } else if (major == "CIRCLE") {
       error(major_at, "circular CL data (CIRCLE) is not supported");
     } else {
