@@ -23,7 +23,8 @@ cmake --build "$build" --target kin5_bench_inverse -j2 >/dev/null
 
 csv="$build/bench/inverse.csv"
 "$build/bench/kin5_bench_inverse" --benchmark_format=csv --benchmark_repetitions="$reps" \
-  --benchmark_report_aggregates_only=true --benchmark_min_time="$min_time" "$@" >"$csv"
+  --benchmark_report_aggregates_only=true --benchmark_min_time="$min_time" \
+  --benchmark_enable_random_interleaving=true "$@" >"$csv"
 
 # CSV columns: name,iterations,real_time,cpu_time,time_unit,...; names like "inverse/dmu-80p_median".
 awk -F, '
