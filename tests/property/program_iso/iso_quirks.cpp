@@ -1,0 +1,150 @@
+// Real-world ISO / Fanuc and LinuxCNC habits on small hand-written programs, with
+// hand-derived expectations.
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include <kin5/program/iso.hpp>
+
+using namespace kin5::program;
+
+namespace {
+using strings = std::vector<std::string>;
+}
+
+TEST_CASE("iso: a Fanuc post style program with G43.4, homing and arcs") {
+  const std::string text =
+      "%\r\n"
+      "O0042 (BRACKET)\r\n"
+      "N10 G40 G17 G49 G90 G80 G21\r\n"
+      "N20 G91 G28 Z0. M05\r\n"
+      "N30 G28 X0. Y0. B0.\r\n"
+      "T05 M06\r\n"
+      "G05.1 Q1\r\n"
+      "G54\r\n"
+      "G00 B-30. C45. S8000 M03\r\n"
+      "G43.4 G90 X10. Y-5.5 H05\r\n"
+      "Z3.\r\n"
+      "G01 Z-1. F250.\r\n"
+      "X20.\r\n"
+      "G02 X25. Y-.5 I5. J0\r\n"
+      "G03 X30 Y-5.5 R5.\r\n"
+      "g1x35y-5.5b-29.5c+44.8\r\n"
+      "G49\r\n"
+      "G05.1 Q0\r\n"
+      "M30\r\n"
+      "%\r\n";
+  const read_result r = iso::read(text, "b.nc");
+  REQUIRE(r.errors.empty());
+  REQUIRE(r.warnings.size() == 1);
+  CHECK(r.warnings[0].to_string("warning") == "b.nc:9:1: warning: G91 of line 4 not cancelled by G90: axis words read as absolute");
+  const auto& b = r.parsed.blocks;
+  REQUIRE(b.size() == 20);
+  CHECK((b[0].passthrough && b[0].text == "%"));
+  CHECK((b[1].program_begin == "0042" && b[1].comment == "BRACKET"));
+  CHECK(b[2].number == 10);
+  CHECK(b[2].kept_words == strings{"G40", "G17", "G90", "G80"});
+  CHECK((b[2].tcp == false && b[2].metric == true));
+  CHECK((b[3].machine_coordinates && b[3].kept_words == strings{"G91", "G28"} && b[3].axes.z_mm == 0.0));
+  CHECK(b[3].m_codes == std::vector<int>{5});
+  CHECK((b[4].machine_coordinates && b[4].axes.b_deg == 0.0));
+  CHECK((b[5].tool == 5 && b[5].m_codes == std::vector<int>{6}));
+  CHECK(b[6].kept_words == strings{"G05.1", "Q1"});
+  CHECK(b[7].kept_words == strings{"G54"});
+  CHECK((b[8].motion == motion_kind::rapid && b[8].axes.b_deg == -30.0 && b[8].axes.c_deg == 45.0));
+  CHECK((b[8].spindle_rpm == 8000.0 && b[8].m_codes == std::vector<int>{3}));
+  CHECK((b[9].tcp == true && b[9].kept_words == strings{"G90", "H05"} && b[9].axes.x_mm == 10.0));
+  CHECK((!b[10].motion && b[10].axes.z_mm == 3.0));
+  CHECK((b[11].motion == motion_kind::linear && b[11].feed == 250.0));
+  // Arc from (20, -5.5, -1): centre 5 mm further in X.
+  REQUIRE(b[13].arc);
+  CHECK(b[13].motion == motion_kind::arc_cw);
+  CHECK(b[13].arc->plane == arc_plane::xy);
+  CHECK(b[13].arc->centre_mm == kin5::vec3{25, -5.5, -1});
+  REQUIRE(b[14].arc);
+  CHECK((b[14].arc->radius_mm == 5.0 && !b[14].arc->centre_mm));
+  CHECK((b[15].motion == motion_kind::linear && b[15].axes.x_mm == 35.0 && b[15].axes.c_deg == 44.8));
+  CHECK(b[16].tcp == false);
+  CHECK(b[18].program_end == "M30");
+  CHECK(b[19].passthrough);
+}
+
+TEST_CASE("iso: LinuxCNC style: M428 remap, semicolon comments, G93, G43 is not TCP") {
+  const std::string text =
+      "%\n"
+      "M428 ;TCP:xyzbc\n"
+      "G00 G17 G40 G90 G94\n"
+      "T3 M6\n"
+      "G43 H3 Z12.5 M08\n"
+      "G93\n"
+      "G01 X1.5 Y-2 Z-.25 B10 C-90 F120.75\n"
+      "G94\n"
+      "M2\n"
+      "%\n";
+  const read_result r = iso::read(text, "l.ngc");
+  REQUIRE(r.errors.empty());
+  const auto& b = r.parsed.blocks;
+  REQUIRE(b.size() == 10);
+  CHECK((b[1].m_codes == std::vector<int>{428} && !b[1].tcp && b[1].comment == "TCP:xyzbc"));
+  CHECK((b[2].motion == motion_kind::rapid && b[2].feed_mode == feed_unit::per_minute));
+  CHECK((!b[4].tcp && b[4].kept_words == strings{"G43", "H3"} && b[4].m_codes == std::vector<int>{8}));
+  CHECK(b[5].feed_mode == feed_unit::inverse_time);
+  CHECK((b[6].feed == 120.75 && b[6].axes.z_mm == -0.25 && b[6].axes.c_deg == -90.0));
+  CHECK(b[8].program_end == "M2");
+}
+
+TEST_CASE("iso: G43.5 vectors, arcs inside G43.5, other planes") {
+  const std::string text =
+      "G43.5 H2 I0 J0 K1\n"
+      "G1 X10 Y0 Z5 I0 J-.6 K.8 F1000\n"
+      "G2 X20 Y0 I5 J0\n"
+      "G18 G3 X30 Z5 I5 K-1\n"
+      "G19 G2 Y5 Z10 R7\n"
+      "G49\n";
+  const read_result r = iso::read(text, "v.nc");
+  REQUIRE(r.errors.empty());
+  const auto& b = r.parsed.blocks;
+  REQUIRE(b.size() == 6);
+  CHECK((b[0].tcp == true && b[0].axes.tool_axis == kin5::vec3{0, 0, 1}));
+  CHECK(b[1].axes.tool_axis == kin5::vec3{0, -0.6, 0.8});
+  CHECK((!b[2].axes.tool_axis && b[2].arc->centre_mm == kin5::vec3{15, 0, 5}));
+  CHECK(b[3].arc->plane == arc_plane::zx);
+  CHECK(b[3].arc->centre_mm == kin5::vec3{25, 0, 4});  // from (20, 0, 5)
+  CHECK((b[4].arc->plane == arc_plane::yz && b[4].arc->radius_mm == 7.0));
+  // Written back: G43.5 because vectors follow, arcs in their planes.
+  CHECK(iso::write(r.parsed) ==
+        "G43.5 I0 J0 K1 H2\n"
+        "G1 X10 Y0 Z5 I0 J-0.6 K0.8 F1000\n"
+        "G2 X20 Y0 I5 J0\n"
+        "G18 G3 X30 Z5 I5 K-1\n"
+        "G19 G2 Y5 Z10 R7\n"
+        "G49\n");
+}
+
+TEST_CASE("iso: comments keep non-UTF-8 bytes, lone CR ends lines, blank lines are skipped") {
+  const read_result r = iso::read("(caf\xe9 \x80)\r\r  \rG0 X1", "c.nc");
+  REQUIRE(r.errors.empty());
+  REQUIRE(r.parsed.blocks.size() == 2);
+  CHECK(r.parsed.blocks[0].comment == "caf\xe9 \x80");
+  CHECK(r.parsed.blocks[1].where == source_location{"c.nc", 4, 1});
+}
+
+TEST_CASE("iso: blocks from another dialect") {
+  program p;
+  p.language = dialect::heidenhain;
+  block l;
+  l.text = "L X+1 Y+2 FMAX M91";
+  l.motion = motion_kind::linear;
+  l.feed_rapid = true;
+  l.axes.x_mm = 1, l.axes.y_mm = 2;
+  l.machine_coordinates = true;
+  block cyc;
+  cyc.text = "CYCL DEF 7.0 (DATUM)";
+  cyc.passthrough = true;
+  block k;
+  k.text = "BLK FORM 0.1 Z";
+  k.kept_words = {"BLK FORM 0.1 Z"};
+  p.blocks = {l, cyc, k};
+  CHECK(iso::write(p) == "G53 G0 X1 Y2\n;CYCL DEF 7.0 (DATUM)\n(BLK FORM 0.1 Z)\n");
+}
