@@ -26,13 +26,16 @@ csv="$build/bench/inverse.csv"
   --benchmark_report_aggregates_only=true --benchmark_min_time="$min_time" \
   --benchmark_enable_random_interleaving=true "$@" >"$csv"
 
+# Machines in catalog order, from the registered names "inverse/<id>".
+order=$("$build/bench/kin5_bench_inverse" --benchmark_list_tests=true 2>/dev/null | sed -n 's|^inverse/||p' | tr '\n' ' ')
+
 # CSV columns: name,iterations,real_time,cpu_time,time_unit,...; names like "inverse/dmu-80p_median".
-awk -F, '
+awk -F, -v ids="$order" '
+  BEGIN { n = split(ids, order, " ") }
   $1 ~ /_median"?$/ {
     name = $1; gsub(/"/, "", name); sub(/_median$/, "", name)
-    split(name, part, "/"); kind = part[1]; id = part[2]
-    t[kind, id] = $4
-    if (!(id in seen)) { seen[id] = 1; order[++n] = id }
+    split(name, part, "/")
+    t[part[1], part[2]] = $4
   }
   END {
     printf "%-22s %12s %12s %14s %14s %14s\n", "machine", "inverse ns", "closed ns", "newton ns", "inv/closed", "newton/inv"
