@@ -246,6 +246,12 @@ inline read_result read(std::string_view text, std::string file_name) {
           } else if (v < s.size() && (s[v] == '+' || s[v] == '-')) {
             w.sign = s[v];
             k = v + 1;
+            const std::size_t d = skip_spaces(k);
+            if (d > k && starts_number(s, d)) {  // `X+ 5`: a sign must touch its digits
+              w.sign = 0;
+              w.error = number_error::not_a_number;
+              k = d + std::max<std::size_t>(read_number(std::string_view(s).substr(d)).length, 1);
+            }
           }
         } else if (starts_number(s, k)) {
           const parsed_number n = read_number(std::string_view(s).substr(k));
@@ -384,7 +390,9 @@ inline read_result read(std::string_view text, std::string file_name) {
       std::vector<std::size_t> axis_pos;
       for (word& w : ws) {
         const std::string& key = w.key;
-        if (key.empty()) {
+        if (w.expression) {
+          value_ok(w);
+        } else if (key.empty()) {
           if (w.error == number_error::too_large) error(w.pos, "value out of range");
           else error(w.pos, "number without an address letter");
         } else if (key.size() == 1 && is_axis_letter(key[0])) {
@@ -405,7 +413,7 @@ inline read_result read(std::string_view text, std::string file_name) {
         } else if (head == "LN" && key.size() == 2 && key[0] == 'N' && (key[1] == 'X' || key[1] == 'Y' || key[1] == 'Z')) {
           if (value_ok(w)) b.kept_words.push_back(w.written);
         } else if (head == "CC") {
-          error(w.pos, "unknown word '" + key + "'");
+          error(w.pos, "unknown word '" + w.written + "'");
         } else if (key == "R" && head == "CR" && !radius && !w.sign) {
           if (value_ok(w)) radius = *w.value;
         } else if (key == "R" && w.value && *w.value == 0 && w.error == number_error::none) {
@@ -615,7 +623,7 @@ inline std::string write(const program& p, const write_options& options = {}) {
     auto fail = [&](const std::string& what) {
       const std::string at = b.where.line ? b.where.file + ":" + std::to_string(b.where.line)
                                           : (p.file.empty() ? "block " : p.file + ": block ") + std::to_string(bi);
-      throw std::invalid_argument(at + ": " + what);
+      throw std::invalid_argument(at + ": block cannot be written in heidenhain: " + what);
     };
     std::vector<std::string> lines;
 
@@ -640,13 +648,13 @@ inline std::string write(const program& p, const write_options& options = {}) {
       continue;
     }
 
-    if (b.metric && !*b.metric) fail("inch programs cannot be written in heidenhain");
-    if (b.feed_mode == feed_unit::inverse_time) fail("inverse-time feed (G93) cannot be written in heidenhain");
+    if (b.metric && !*b.metric) fail("inch units");
+    if (b.feed_mode == feed_unit::inverse_time) fail("inverse-time feed (G93)");
     auto pgm_name = [&](const std::optional<std::string>& n) {
       std::string name = n && !n->empty() ? *n : begin_name.value_or("");
       if (name.empty()) name = "PGM";
-      for (char c : name)
-        if (is_space(c) || c == ';' || is_control(static_cast<unsigned char>(c))) fail("program name '" + name + "' cannot be written");
+      for (char& c : name)  // a name is one word: blanks and `;` become `_`
+        if (is_space(c) || c == ';' || is_control(static_cast<unsigned char>(c))) c = '_';
       return name;
     };
     if (b.program_begin) {
@@ -705,7 +713,7 @@ inline std::string write(const program& p, const write_options& options = {}) {
       std::string l;
       if (arc) {
         if (!b.arc || (!b.arc->centre_mm && !b.arc->radius_mm)) fail("arc has neither a centre nor a radius");
-        if (b.axes.tool_axis) fail("an arc cannot carry a tool-axis vector in heidenhain");
+        if (b.axes.tool_axis) fail("an arc cannot carry a tool-axis vector");
         if (b.arc->radius_mm) {
           if (b.arc->plane != plane) fail("radius arc outside the working plane");
           l = "CR";

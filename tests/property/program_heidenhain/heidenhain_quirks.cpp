@@ -1,0 +1,170 @@
+// Real-world Heidenhain habits on a small hand-written program in the style of NX output and
+// hand edits (unnumbered header, repeated numbers, `~` continuation, `*` sections, `;`-disabled
+// lines, other encodings in comments, CRLF), with hand-derived expectations.
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include <kin5/program/heidenhain.hpp>
+
+using namespace kin5::program;
+using kin5::vec3;
+
+namespace {
+const std::string program_text =
+    "BEGIN PGM BRACKET MM\r\n"
+    "M129\r\n"
+    "PLANE RESET STAY\r\n"
+    "CYCL DEF 247 DATUM SETTING~\r\n"
+    "Q339=1; DATUM NUMBER\r\n"
+    "1 ; \r\n"
+    "2 ;  OPERATION: ROUGH - TOOL: T3 D10.0\r\n"
+    "3 TOOL CALL  3 Z S8000\r\n"
+    "4 L X-450. Y-10. FMAX M91\r\n"
+    "5 L B0.0 C0.0 FMAX\r\n"
+    "6 l x61. y.5 fmax m3\r\n"
+    "\r\n"
+    "6 L Z-.25 F1000. M8 ; plunge\r\n"
+    "* - FINISH \xC4\xE3\r\n"
+    "8 CC X+10 Y+0\r\n"
+    "9 C X+20 Y+0 DR- R0\r\n"
+    "10 CR X+30 Y+10 R+10 DR+\r\n"
+    "11 LN X+1 Y+2 Z+3 TX+0 TY-0.7071068 TZ+0.7071068 F500\r\n"
+    "12 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\r\n"
+    "13 L X+34.983 Y+118.526 Z+9.1 B+17.067 C+87.479 R0 F1137 M128\r\n"
+    "14 ;L X+0 Y+0 M128\r\n"
+    "15 FUNCTION RESET TCPM\r\n"
+    "16 M140 MB MAX\r\n"
+    "17\r\n"
+    "18 M5 M9\r\n"
+    "19 M30\r\n"
+    "20 END PGM 100 MM\r\n";
+}  // namespace
+
+TEST_CASE("heidenhain: a program in NX and hand-edit style") {
+  const read_result r = heidenhain::read(program_text, "b.h");
+  REQUIRE(r.errors.empty());
+  REQUIRE(r.warnings.size() == 2);
+  CHECK(r.warnings[0].to_string("warning") == "b.h:4:1: warning: CYCL DEF 247 selects a datum preset; passed through unchanged");
+  CHECK(r.warnings[1].to_string("warning") == "b.h:27:12: warning: END PGM name '100' differs from BEGIN PGM 'BRACKET'");
+  const auto& b = r.parsed.blocks;
+  REQUIRE(b.size() == 25);
+  CHECK((b[0].program_begin == "BRACKET" && b[0].metric == true && !b[0].number));
+  CHECK((b[1].tcp == false && b[1].m_codes.empty()));
+  CHECK((b[2].passthrough && b[2].text == "PLANE RESET STAY"));
+  CHECK((b[3].passthrough && b[3].text == "CYCL DEF 247 DATUM SETTING~\nQ339=1; DATUM NUMBER"));
+  CHECK((b[4].number == 1 && b[4].comment == " " && b[4].where.line == 6));
+  CHECK(b[5].comment == "  OPERATION: ROUGH - TOOL: T3 D10.0");
+  CHECK((b[6].tool == 3 && b[6].spindle_rpm == 8000.0 && b[6].kept_words == std::vector<std::string>{"Z"}));
+  CHECK((b[7].motion == motion_kind::rapid && b[7].feed_rapid && b[7].axes.x_mm == -450.0 && b[7].axes.y_mm == -10.0));
+  CHECK((b[7].machine_coordinates && b[7].m_codes == std::vector<int>{91}));
+  CHECK((b[8].axes.b_deg == 0.0 && b[8].axes.c_deg == 0.0 && !b[8].axes.has_linear()));
+  CHECK((b[9].number == 6 && b[9].axes.x_mm == 61.0 && b[9].axes.y_mm == 0.5 && b[9].m_codes == std::vector<int>{3}));
+  CHECK((b[10].number == 6 && b[10].where.line == 13 && b[10].axes.z_mm == -0.25 && b[10].feed == 1000.0));
+  CHECK((b[10].motion == motion_kind::linear && !b[10].feed_rapid && b[10].comment == " plunge"));
+  CHECK((b[11].comment == " - FINISH \xC4\xE3" && !b[11].number));
+  // CC gives X and Y; Z comes from the last position (Z-.25).
+  REQUIRE(b[12].arc);
+  CHECK((b[12].arc->centre_mm == vec3{10, 0, -0.25} && b[12].arc->plane == arc_plane::xy));
+  CHECK((!b[12].motion && !b[12].moves()));
+  REQUIRE(b[13].arc);
+  CHECK((b[13].motion == motion_kind::arc_cw && b[13].axes.x_mm == 20.0 && b[13].axes.y_mm == 0.0));
+  CHECK((b[13].arc->centre_mm == vec3{10, 0, -0.25} && b[13].kept_words == std::vector<std::string>{"R0"}));
+  REQUIRE(b[14].arc);
+  CHECK((b[14].motion == motion_kind::arc_ccw && b[14].arc->radius_mm == 10.0 && !b[14].arc->centre_mm));
+  CHECK((b[15].motion == motion_kind::linear && b[15].axes.tool_axis == vec3{0, -0.7071068, 0.7071068}));
+  CHECK((b[15].axes.z_mm == 3.0 && b[15].feed == 500.0));
+  CHECK((b[16].tcp == true && b[16].kept_words == std::vector<std::string>{"F TCP", "AXIS POS", "PATHCTRL AXIS"}));
+  // Table 1, row 1, DMU side (spec §5).
+  CHECK((b[17].axes.x_mm == 34.983 && b[17].axes.y_mm == 118.526 && b[17].axes.z_mm == 9.1));
+  CHECK((b[17].axes.b_deg == 17.067 && b[17].axes.c_deg == 87.479 && b[17].feed == 1137.0 && b[17].tcp == true));
+  CHECK((b[17].m_codes.empty() && b[17].kept_words == std::vector<std::string>{"R0"}));
+  CHECK((b[18].comment == "L X+0 Y+0 M128" && !b[18].tcp));
+  CHECK(b[19].tcp == false);
+  CHECK((b[20].passthrough && b[20].text == "16 M140 MB MAX"));
+  CHECK((b[21].number == 17 && !b[21].comment && !b[21].passthrough && !b[21].motion));
+  CHECK(b[22].m_codes == std::vector<int>{5, 9});
+  CHECK(b[23].m_codes == std::vector<int>{30});
+  CHECK((b[24].program_end == "100" && b[24].metric == true));
+}
+
+TEST_CASE("heidenhain: the writer numbers blocks from 0 in Heidenhain style") {
+  const read_result r = heidenhain::read(program_text, "b.h");
+  const std::string expected =
+      "0 BEGIN PGM BRACKET MM\n"
+      "1 M129\n"
+      "2 PLANE RESET STAY\n"
+      "3 CYCL DEF 247 DATUM SETTING~\n"
+      "Q339=1; DATUM NUMBER\n"
+      "4 ; \n"
+      "5 ;  OPERATION: ROUGH - TOOL: T3 D10.0\n"
+      "6 TOOL CALL 3 Z S8000\n"
+      "7 L X-450 Y-10 FMAX M91\n"
+      "8 L B+0 C+0 FMAX\n"
+      "9 L X+61 Y+0.5 FMAX M3\n"
+      "10 L Z-0.25 F1000 M8 ; plunge\n"
+      "11 ; - FINISH \xC4\xE3\n"
+      "12 CC X+10 Y+0\n"
+      "13 C X+20 Y+0 DR- R0\n"
+      "14 CR X+30 Y+10 R+10 DR+\n"
+      "15 LN X+1 Y+2 Z+3 TX+0 TY-0.7071068 TZ+0.7071068 F500\n"
+      "16 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\n"
+      "17 L X+34.983 Y+118.526 Z+9.1 B+17.067 C+87.479 R0 F1137 M128\n"
+      "18 ;L X+0 Y+0 M128\n"
+      "19 M129\n"
+      "20 M140 MB MAX\n"
+      "21\n"
+      "22 M5 M9\n"
+      "23 M30\n"
+      "24 END PGM 100 MM\n";
+  CHECK(heidenhain::write(r.parsed) == expected);
+}
+
+TEST_CASE("heidenhain: blocks from another dialect are written, and what has no Heidenhain form is kept as a comment") {
+  program p;
+  p.language = dialect::iso;
+  p.file = "in.nc";
+  block b;
+  b.program_begin = "O1234 BRACKET";
+  p.blocks.push_back(b);
+  b = {};
+  b.passthrough = true;
+  b.text = "G05.1 Q1";
+  p.blocks.push_back(b);
+  b = {};
+  b.motion = motion_kind::linear;
+  b.axes.x_mm = 10;
+  b.kept_words = {"G17", "G40"};
+  p.blocks.push_back(b);
+  b = {};
+  b.motion = motion_kind::arc_ccw;  // G3 X20 Y0 I5 J0 from X10 Y0: the centre comes first as CC
+  b.axes.x_mm = 20;
+  b.axes.y_mm = 0;
+  b.arc = arc_words{arc_plane::xy, vec3{15, 0, 0}, std::nullopt};
+  b.feed = 250;
+  p.blocks.push_back(b);
+  b = {};
+  b.tool = 4;
+  b.m_codes = {6};
+  p.blocks.push_back(b);
+  b = {};
+  b.motion = motion_kind::rapid;  // G53 G0 Z0
+  b.axes.z_mm = 0;
+  b.machine_coordinates = true;
+  p.blocks.push_back(b);
+  b = {};
+  b.program_end = "";
+  b.comment = "end";
+  p.blocks.push_back(b);
+  CHECK(heidenhain::write(p) ==
+        "0 BEGIN PGM O1234_BRACKET MM\n"
+        "1 ;G05.1 Q1\n"
+        "2 L X+10 ;kept: G17 G40\n"
+        "3 CC X+15 Y+0\n"
+        "4 C X+20 Y+0 DR+ F250\n"
+        "5 TOOL CALL 4\n"
+        "6 M6\n"
+        "7 L Z+0 FMAX M91\n"
+        "8 END PGM O1234_BRACKET MM ;end\n");
+}
