@@ -416,6 +416,10 @@ class reader {
       if (b.axes.z_mm) last_[2] = b.axes.z_mm;
     }
 
+    // The order the writer uses: G codes first, then the others (H, D, P, Q), each as written.
+    std::stable_partition(b.kept_words.begin(), b.kept_words.end(),
+                          [](const std::string& k) { return to_upper(k.front()) == 'G'; });
+
     if (unknown_found) {
       if (suppress) {
       } else if (b.moves() || b.arc) {
