@@ -971,7 +971,7 @@ inline std::string write(const program& p, const write_options& options = {}) {
     if (b.comment || !comment.empty()) line += line.empty() ? ";" : " ;";
     if (!comment.empty()) line += " " + comment;
     written.move(b);
-    if (b.program_begin && line.empty()) continue;
+    if (line.empty()) continue;  // nothing to say (a lone header has been written)
     if (b.program_begin && b.number && line == "N" + std::to_string(*b.number)) continue;
     out += detail::checked_line(std::move(line), b, file) + '\n';
   }
