@@ -615,7 +615,9 @@ void write_nc(const program::program& in, const std::vector<source_step>& steps,
         length = block_length({}, std::span<const double>(ds.data(), s.rotary_n));
       }
       o.feed = inverse_time_feed(*s.feed, length);
-      if (!o.feed) out.warnings.push_back(at(b, "zero-length move: no inverse-time F written"));
+      if (!o.feed)
+        out.warnings.push_back(at(b, s.start_mm ? "zero-length move: no inverse-time F written"
+                                                : "start point unknown, so is the block time: no inverse-time F written"));
       if (!output_inverse_time) o.feed_mode = program::feed_unit::inverse_time, output_inverse_time = true;
     }
     if (previous && path.branch[*previous] >= 0 && path.branch[j] >= 0 && path.branch[*previous] != path.branch[j] &&

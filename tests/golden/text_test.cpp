@@ -1,0 +1,95 @@
+// NC text through the whole chain: Siemens text read → translate → Heidenhain text written →
+// read again. Also the rules for blocks that are not plain motion: TCP off, machine
+// coordinates, passthrough, comments and M functions kept in order.
+#include <cmath>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include <kin5/kin5.hpp>
+#include <kin5/program/heidenhain.hpp>
+#include <kin5/program/siemens.hpp>
+
+#include "program_builder.hpp"
+
+using kin5::machines::dmu_80p;
+using kin5::machines::sajo_12000p;
+namespace siemens = kin5::program::siemens;
+namespace heidenhain = kin5::program::heidenhain;
+
+namespace {
+
+constexpr const char* table1_mpf =
+    "; Table 1 of seed 000 on the SAJO 12000P\n"
+    "T1 M6\n"
+    "S4000 M3\n"
+    "TRAORI\n"
+    "G1 X-34.983 Y9.1 Z118.526 A-77.954 B3.536 F1091\n"
+    "X-33.824 Y9.118 Z117.545 A-77.913 B4.027 F1093\n"
+    "X-32.674 Y9.153 Z116.558 A-77.918 B4.588 F1094\n"
+    "X-31.531 Y9.203 Z115.567 A-77.963 B5.158 F1096\n"
+    "TRAFOOF\n"
+    "M30\n";
+
+}  // namespace
+
+TEST_CASE("Siemens Table 1 text -> Heidenhain text on the DMU 80P") {
+  const auto in = siemens::read(table1_mpf, "table1.mpf");
+  REQUIRE(in.ok());
+  const auto t = kin5::translate<sajo_12000p, dmu_80p>(in.parsed, {});
+  REQUIRE(t.ok());
+  CHECK(t.blocks_read == in.parsed.blocks.size());
+  CHECK(t.blocks_written == t.blocks_read);
+  const std::string text = heidenhain::write(t.output);
+  CAPTURE(text);
+  // The first motion, as Table 1 prints it for the DMU (F as the source: tcp policy).
+  CHECK(text.find("L X+34.983 Y+118.526 Z+9.1 B+17.067 C+87.479") != std::string::npos);
+  CHECK(text.find("M128") != std::string::npos);  // TRAORI → M128
+  CHECK(text.find("M129") != std::string::npos);  // TRAFOOF → M129
+  const auto back = heidenhain::read(text, "table1.h");
+  REQUIRE(back.ok());
+  std::vector<kin5::program::axis_words> moves;
+  for (const auto& b : back.parsed.blocks)
+    if (b.moves()) moves.push_back(b.axes);
+  REQUIRE(moves.size() == 4);
+  CHECK(*moves[3].x_mm == 31.531);
+  CHECK(*moves[3].y_mm == 115.567);
+  CHECK(*moves[3].z_mm == 9.203);
+  CHECK(*moves[3].b_deg == 17.054);
+  CHECK(*moves[3].c_deg == 89.106);
+}
+
+TEST_CASE("motion without TCP is an error naming the line, with the rotary message once rotary axes moved") {
+  const auto in = siemens::read("G1 X1 Y2 Z3 F100\nA-10 B5\nTRAORI\nX2\n", "off.mpf");
+  REQUIRE(in.ok());
+  const auto t = kin5::translate<sajo_12000p, dmu_80p>(in.parsed, {});
+  REQUIRE(t.errors.size() == 2);
+  CHECK(t.errors[0].where.line == 1);
+  CHECK(t.errors[0].message.find("without tool-tip tracking (TCP)") != std::string::npos);
+  CHECK(t.errors[1].where.line == 2);
+  CHECK(t.errors[1].message ==
+        "rotary motion without tool-tip tracking (TCP) needs the machine geometry, which kin5 does not model yet");
+  CHECK(t.blocks_written == t.blocks_read - 2);  // accounted for: written or an error
+}
+
+TEST_CASE("machine-coordinate moves pass through unchanged with a warning and content stays in order") {
+  const auto in = siemens::read(
+      "; start\nG0 SUPA Z0\nTRAORI\nG0 X0 Y0 Z50 A-45 B30\nM8\nG1 Z10 F200\nSUPA Z0\nM30\n", "mc.mpf");
+  REQUIRE(in.ok());
+  const auto t = kin5::translate<sajo_12000p, dmu_80p>(in.parsed, kin5::test::options(kin5::feed_policy::tcp, kin5::program::dialect::siemens));
+  REQUIRE(t.ok());
+  CHECK(t.blocks_written == t.blocks_read);
+  CHECK(t.passed_through == 2);
+  REQUIRE(t.warnings.size() >= 2);
+  CHECK(t.warnings[0].where.line == 2);
+  CHECK(t.output.blocks[1].machine_coordinates);
+  CHECK(t.output.blocks[1].axes.z_mm == 0.0);  // unchanged, not mapped
+  CHECK(t.output.blocks[0].comment == std::string("start"));
+  CHECK(t.output.blocks[4].m_codes == std::vector<int>{8});
+  // G0 stays rapid without F; Z10 (modal X0 Y0) maps to (−0, 10, 0)-shaped (x_d, y_d, z_d) = (0, 10, 0).
+  CHECK(t.output.blocks[3].motion == kin5::program::motion_kind::rapid);
+  CHECK_FALSE(t.output.blocks[3].feed.has_value());
+  CHECK(*t.output.blocks[5].axes.y_mm == 10.0);
+  CHECK(*t.output.blocks[5].axes.z_mm == 0.0);
+  REQUIRE(t.reports.size() == 2);
+}
