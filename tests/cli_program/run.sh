@@ -68,12 +68,12 @@ table1='-34.983 9.100 118.526 -77.954 3.536 1091 34.983 118.526 9.100 17.067 87.
 # check_table1 FILE [FEEDS]: the four Table 1 rows are in FILE: X Y Z exact (to 1e-6), B and C
 # within 0.001 deg, F as FEEDS (default: the SAJO feeds, the tcp policy) within 1 mm/min.
 check_table1() {
-  feeds=${2:-"1091 1093 1094 1096"}
+  file=$1 feeds=${2:-"1091 1093 1094 1096"}
   n=0
   printf '%s\n' "$table1" | while read -r sx sy sz sa sb sf dx dy dz db dc; do
     n=$((n + 1))
     f=$(echo "$feeds" | awk -v k="$n" '{ print $k }')
-    l=$(line_with "$1" X "$dx")
+    l=$(line_with "$file" X "$dx")
     if [ -z "$l" ]; then echo "row $n: no block with X=$dx" >&2; exit 1; fi
     for pair in "Y $dy 1e-6" "Z $dz 1e-6" "B $db 0.001" "F $f 1"; do
       set -- $pair
@@ -117,7 +117,7 @@ case "$name" in
     # The example has 23 lines, one block each; 6 of them move (the approach, the four rows
     # and the retract), all directly reachable.
     run 0 translate --from sajo-12000p --to dmu-80p -o s.h "$example"
-    grep -Eq '23 blocks read, 23 written, [0-9]+ passed through; 6 direct, 0 other branch, 0 unreachable' err ||
+    grep -Eq '23 blocks read, 23 written, [0-9]+ passed through; 6 direct, 0 other-branch, 0 unreachable' err ||
       { report "summary line"; show err; }
     ;;
   bad-input)
@@ -150,14 +150,14 @@ case "$name" in
       set -- $pair
       l=$(grep -E "^up\.mpf:$1:[0-9]+: error: " err)
       [ -n "$l" ] || { report "line $1 not listed"; continue; }
-      echo "$l" | grep -q 'unreachable on dmu-80p' || report "line $1: not called unreachable: $l"
-      g=$(echo "$l" | sed -n 's/.* is \([0-9.]*\) deg outside.*/\1/p')
-      { [ -n "$g" ] && near "$g" "$2" 1e-6; } || report "line $1: gap '$g', expected $2"
+      echo "$l" | grep -q 'dmu-80p cannot reach this block' || report "line $1: not called unreachable: $l"
+      g=$(echo "$l" | sed -n 's/.*tool axis \([0-9.]*\).* outside.*/\1/p')
+      { [ -n "$g" ] && near "$g" "$2" 0.001; } || report "line $1: gap '$g', expected $2"
       echo "$l" | grep -Eq "A=?$2([^0-9]|$)" || report "line $1: source angle A$2 not shown: $l"
     done
     n=$(grep -c ': error: ' err)
     [ "$n" = 3 ] || report "$n errors, expected 3"
-    grep -Eq '1 other branch, 3 unreachable' err || report "summary counts"
+    grep -Eq '1 other-branch, 3 unreachable' err || report "summary counts"
     [ -e up.h ] && report "up.h created on failure"
     [ -s out ] && report "stdout not empty"
     [ "$fail" = 0 ] || show err

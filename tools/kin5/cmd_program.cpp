@@ -1,5 +1,406 @@
-// Placeholder until the program subcommands land.
+// The program subcommands of the kin5 tool: a whole NC program in, a whole program out.
+//
+//   kin5 translate --from ID --to ID [--feed P] [--from-dialect D] [--to-dialect D] [-o OUT] IN
+//   kin5 reverse   --machine ID [--dialect D] [-o OUT] IN       NC program -> APT CL data
+//   kin5 post      --machine ID [--dialect D] [-o OUT] IN       APT CL data -> NC program
+//
+// Each one reads IN (a path, or '-' for stdin) as bytes, parses it with program/io.hpp, hands
+// it to kin5::translate / reverse / post (translate.hpp), and writes the result to OUT (a path,
+// or '-' / nothing for stdout). Everything else goes to stderr:
+//   * every diagnostic as `FILE:LINE:COL: error: ...` or `... warning: ...`, all of them;
+//   * every block the target cannot reach, as an error at the block, with its source angles
+//     and the angular gap;
+//   * one summary line: blocks read, written, passed through, and per matchability class.
+//
+// Exit codes (commands.hpp): 0 written; 1 bad arguments; 2 the input cannot be read or
+// translated, or the output cannot be written; 3 blocks unreachable on the target. On any
+// non-zero exit OUT is neither created nor changed: the program is written to a temporary
+// file in OUT's directory and renamed over OUT only when complete.
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <kin5/program/io.hpp>
+#include <kin5/translate.hpp>
+
 #include "commands.hpp"
+#include "format.hpp"
+
 namespace kin5::tool {
-void add_program_commands(CLI::App&, int&) {}
+namespace {
+
+namespace prog = kin5::program;
+
+constexpr const char* dialect_names[] = {"siemens", "heidenhain", "iso", "apt"};
+
+// ---- files --------------------------------------------------------------------------------
+
+/// The name diagnostics use for IN: the path as given, or `<stdin>` for '-'.
+std::string display_name(const std::string& path) { return path == "-" ? "<stdin>" : path; }
+
+/// The bytes of `path` ('-': stdin), read in binary mode; nothing, with `error` set, on failure.
+std::optional<std::string> read_bytes(const std::string& path, std::string& error) {
+  std::FILE* f = stdin;
+  if (path != "-") {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+      error = "is a directory";
+      return std::nullopt;
+    }
+    f = std::fopen(path.c_str(), "rb");
+    if (!f) {
+      error = std::strerror(errno);
+      return std::nullopt;
+    }
+  }
+  std::string bytes;
+  constexpr std::size_t chunk = 1 << 20;
+  for (;;) {
+    const std::size_t old = bytes.size();
+    bytes.resize(old + chunk);
+    const std::size_t got = std::fread(bytes.data() + old, 1, chunk, f);
+    bytes.resize(old + got);
+    if (got < chunk) break;
+  }
+  const bool failed = std::ferror(f) != 0;
+  const int saved = errno;
+  if (f != stdin) std::fclose(f);
+  if (failed) {
+    error = std::strerror(saved);
+    return std::nullopt;
+  }
+  return bytes;
+}
+
+/// Writes all of `bytes` to `fd`; false with errno set on failure.
+bool write_all(int fd, std::string_view bytes) {
+  while (!bytes.empty()) {
+    const ssize_t n = ::write(fd, bytes.data(), bytes.size());
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    bytes.remove_prefix(static_cast<std::size_t>(n));
+  }
+  return true;
+}
+
+/// Replaces (or creates) `path` with `bytes` so that `path` is never seen partly written:
+/// a temporary file next to it is written, flushed to disk and renamed over it. An existing
+/// file keeps its permission bits; a new one gets 0666 less the umask, as any created file.
+bool write_file_atomically(const std::string& path, std::string_view bytes, std::string& error) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  fs::path dir = target.parent_path();
+  if (dir.empty()) dir = ".";
+  std::string temp = (dir / ("." + target.filename().string() + ".kin5-XXXXXX")).string();
+  const int fd = ::mkstemp(temp.data());
+  if (fd < 0) {
+    error = std::string("cannot create a temporary file in '") + dir.string() + "': " + std::strerror(errno);
+    return false;
+  }
+  struct stat existing {};
+  mode_t mode = 0;
+  if (::stat(path.c_str(), &existing) == 0) {
+    mode = existing.st_mode & 07777;
+  } else {
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    mode = 0666 & ~mask;
+  }
+  bool ok = ::fchmod(fd, mode) == 0 && write_all(fd, bytes) && ::fsync(fd) == 0;
+  int saved = errno;
+  if (::close(fd) != 0 && ok) {
+    ok = false;
+    saved = errno;
+  }
+  if (ok && std::rename(temp.c_str(), path.c_str()) != 0) {
+    ok = false;
+    saved = errno;
+  }
+  if (!ok) {
+    std::remove(temp.c_str());
+    error = std::strerror(saved);
+  }
+  return ok;
+}
+
+/// Writes `bytes` to stdout ('-') or atomically to `path`.
+bool write_output(const std::string& path, std::string_view bytes, std::string& error) {
+  if (path == "-") {
+    std::cout.flush();
+    if (!write_all(STDOUT_FILENO, bytes)) {
+      error = std::strerror(errno);
+      return false;
+    }
+    return true;
+  }
+  return write_file_atomically(path, bytes, error);
+}
+
+// ---- reporting ----------------------------------------------------------------------------
+
+/// Prints every diagnostic, errors and warnings, in the compilers' format.
+void print_diagnostics(const std::vector<prog::diagnostic>& diagnostics, std::string_view severity) {
+  for (const auto& d : diagnostics) std::cerr << d.to_string(severity) << '\n';
+}
+
+/// A note for a block translated on the other solution branch (printed with --verbose).
+std::string other_branch_message(const block_report& r) {
+  std::string message = "translated on the other solution branch";
+  if (!r.source_angles.empty()) message += ": " + r.source_angles;
+  if (!r.why.empty()) message += " (" + r.why + ")";
+  return prog::diagnostic{r.where, message}.to_string("note");
+}
+
+// ---- the common run -----------------------------------------------------------------------
+
+/// What one program subcommand does, once its arguments are checked.
+struct job {
+  std::string command;      ///< "translate", "reverse", "post": the prefix of its messages
+  std::string input_path;   ///< '-' for stdin
+  std::string output_path;  ///< '-' for stdout
+  prog::dialect input_dialect = prog::dialect::siemens;
+  bool input_dialect_given = false;  ///< false: a dialect recognised by guess_dialect wins
+  prog::dialect output_dialect = prog::dialect::heidenhain;
+  std::string target;       ///< what the output is for, named when blocks are unreachable
+  bool verbose = false;
+  std::function<translation(const prog::program&)> run;
+};
+
+int execute(const job& j) {
+  const std::string prefix = "kin5 " + j.command + ": ";
+  std::string error;
+  const auto bytes = read_bytes(j.input_path, error);
+  if (!bytes) {
+    std::cerr << prefix << "cannot read '" << j.input_path << "': " << error << '\n';
+    return exit_codes::input_error;
+  }
+
+  prog::dialect dialect = j.input_dialect;
+  if (!j.input_dialect_given) {
+    if (const auto guessed = prog::guess_dialect(*bytes); guessed && *guessed != dialect) {
+      std::cerr << prefix << "note: reading " << display_name(j.input_path) << " as " << prog::name(*guessed)
+                << " (recognised by its markers), not as " << prog::name(dialect)
+                << "; choose with --" << (j.command == "translate" ? "from-dialect" : "dialect") << '\n';
+      dialect = *guessed;
+    }
+  }
+  const auto input = prog::read(dialect, *bytes, display_name(j.input_path));
+  print_diagnostics(input.errors, "error");
+  print_diagnostics(input.warnings, "warning");
+  if (!input.ok()) {
+    std::cerr << prefix << input.errors.size() << (input.errors.size() == 1 ? " error" : " errors") << " in "
+              << display_name(j.input_path) << " (read as " << prog::name(dialect)
+              << "); nothing written\n";
+    return exit_codes::input_error;
+  }
+
+  const translation result = j.run(input.parsed);
+  // Unreachable blocks come as errors too (with their source angles and gap), one per report.
+  print_diagnostics(result.errors, "error");
+  print_diagnostics(result.warnings, "warning");
+  std::size_t count[3] = {0, 0, 0};
+  for (const auto& r : result.reports) {
+    ++count[static_cast<int>(r.match)];
+    if (r.match == matchability::other_branch && j.verbose) std::cerr << other_branch_message(r) << '\n';
+  }
+  const std::size_t unreachable = count[static_cast<int>(matchability::unreachable)];
+
+  int code = exit_codes::ok;
+  std::string text;
+  if (result.errors.size() > unreachable) {
+    code = exit_codes::input_error;
+  } else if (unreachable > 0) {
+    code = exit_codes::unreachable;
+  } else {
+    try {
+      text = prog::write(j.output_dialect, result.output);
+    } catch (const std::invalid_argument& e) {
+      std::cerr << prefix << "cannot write the program as " << prog::name(j.output_dialect) << ": " << e.what()
+                << '\n';
+      code = exit_codes::input_error;
+    }
+  }
+
+  std::cerr << prefix << result.blocks_read << " blocks read, "
+            << (code == exit_codes::ok ? result.blocks_written : 0) << " written, " << result.passed_through
+            << " passed through; ";
+  for (matchability m : {matchability::direct, matchability::other_branch, matchability::unreachable})
+    std::cerr << count[static_cast<int>(m)] << ' ' << name(m) << (m == matchability::unreachable ? "\n" : ", ");
+
+  if (code == exit_codes::input_error && !result.errors.empty()) {
+    const std::size_t n = result.errors.size();
+    std::cerr << prefix << n << (n == 1 ? " error" : " errors") << "; nothing written\n";
+  } else if (code == exit_codes::unreachable) {
+    std::cerr << prefix << unreachable << (unreachable == 1 ? " block" : " blocks") << " cannot be reached on "
+              << j.target << "; nothing written\n";
+  }
+  if (code != exit_codes::ok) return code;
+
+  if (!write_output(j.output_path, text, error)) {
+    std::cerr << prefix << "cannot write '" << j.output_path << "': " << error << '\n';
+    return exit_codes::input_error;
+  }
+  return exit_codes::ok;
+}
+
+// ---- argument checks ----------------------------------------------------------------------
+
+/// Whether `id` is a catalog machine; if not, says so with the valid ids.
+bool known_machine(std::string_view command, std::string_view option, const std::string& id) {
+  for (auto known : machine_ids())
+    if (known == id) return true;
+  std::cerr << "kin5 " << command << ": " << option << ": unknown machine '" << id
+            << "'; valid ids: " << join(machine_ids()) << '\n';
+  return false;
+}
+
+/// The dialect named `given`, or else the machine's default.
+prog::dialect dialect_or_default(const std::string& given, const std::string& machine_id) {
+  if (!given.empty()) return *prog::parse_dialect(given);
+  return prog::default_dialect(machine_id).value_or(prog::dialect::siemens);
+}
+
+feed_policy parse_feed(const std::string& s) {
+  if (s == "block-time") return feed_policy::block_time;
+  if (s == "inverse-time") return feed_policy::inverse_time;
+  return feed_policy::tcp;
+}
+
+struct translate_arguments {
+  std::string from, to, feed = "tcp", from_dialect, to_dialect, output = "-", input;
+  bool verbose = false;
+};
+
+struct machine_arguments {
+  std::string machine, dialect, output = "-", input;
+  bool verbose = false;
+};
+
+int run_translate(const translate_arguments& a) {
+  if (!known_machine("translate", "--from", a.from) || !known_machine("translate", "--to", a.to))
+    return exit_codes::usage;
+  job j;
+  j.command = "translate";
+  j.input_path = a.input;
+  j.output_path = a.output;
+  j.input_dialect = dialect_or_default(a.from_dialect, a.from);
+  j.input_dialect_given = !a.from_dialect.empty();
+  j.output_dialect = dialect_or_default(a.to_dialect, a.to);
+  j.target = a.to;
+  j.verbose = a.verbose;
+  translate_options options;
+  options.feed = parse_feed(a.feed);
+  options.output_dialect = j.output_dialect;
+  j.run = [&a, options](const prog::program& p) { return kin5::translate(a.from, a.to, p, options); };
+  return execute(j);
+}
+
+int run_reverse(const machine_arguments& a) {
+  if (!known_machine("reverse", "--machine", a.machine)) return exit_codes::usage;
+  job j;
+  j.command = "reverse";
+  j.input_path = a.input;
+  j.output_path = a.output;
+  j.input_dialect = dialect_or_default(a.dialect, a.machine);
+  j.input_dialect_given = !a.dialect.empty();
+  j.output_dialect = prog::dialect::apt;
+  j.target = "APT CL data";
+  j.verbose = a.verbose;
+  j.run = [&a](const prog::program& p) { return kin5::reverse(a.machine, p); };
+  return execute(j);
+}
+
+int run_post(const machine_arguments& a) {
+  if (!known_machine("post", "--machine", a.machine)) return exit_codes::usage;
+  job j;
+  j.command = "post";
+  j.input_path = a.input;
+  j.output_path = a.output;
+  j.input_dialect = prog::dialect::apt;
+  j.input_dialect_given = true;
+  j.output_dialect = dialect_or_default(a.dialect, a.machine);
+  j.target = a.machine;
+  j.verbose = a.verbose;
+  const prog::dialect out = j.output_dialect;
+  j.run = [&a, out](const prog::program& p) { return kin5::post(a.machine, p, out); };
+  return execute(j);
+}
+
+std::string default_dialect_table() {
+  std::string out = "Default dialects (--*dialect overrides):";
+  for (auto id : machine_ids()) {
+    const auto d = prog::default_dialect(id);
+    out += "\n  " + std::string(id) + " " + std::string(d ? prog::name(*d) : "siemens");
+  }
+  return out;
+}
+
+const char* exit_code_footer =
+    "\nExit codes: 0 written; 1 bad arguments; 2 the input cannot be read or has errors (all listed as\n"
+    "FILE:LINE:COL: error: ...), or the output cannot be written; 3 blocks unreachable on the target\n"
+    "(each listed with its source angles and gap). On a non-zero exit OUT is not created or changed.\n";
+
+}  // namespace
+
+void add_program_commands(CLI::App& app, int& exit_code) {
+  const auto dialects = CLI::IsMember(std::vector<std::string>(std::begin(dialect_names), std::end(dialect_names)));
+
+  {
+    auto a = std::make_shared<translate_arguments>();
+    auto* sub = app.add_subcommand("translate", "Translate an NC program from one machine to another");
+    sub->add_option("--from", a->from, "Machine the program was written for (see `kin5 machines`)")->required();
+    sub->add_option("--to", a->to, "Machine to write the program for")->required();
+    sub->add_option("--feed", a->feed,
+                    "Feed policy: tcp keeps F (tool-tip speed, right for TRAORI/M128 programs); block-time keeps "
+                    "each block's time, the paper's eq 23; inverse-time writes G93-style 1/min")
+        ->check(CLI::IsMember({"block-time", "tcp", "inverse-time"}))
+        ->capture_default_str();
+    sub->add_option("--from-dialect", a->from_dialect, "Dialect of IN (default: the --from machine's)")
+        ->check(dialects);
+    sub->add_option("--to-dialect", a->to_dialect, "Dialect of OUT (default: the --to machine's)")->check(dialects);
+    sub->add_option("-o,--output", a->output, "Output file; '-' for stdout")->capture_default_str();
+    sub->add_flag("-v,--verbose", a->verbose, "Also list the blocks translated on the other solution branch");
+    sub->add_option("input", a->input, "Input NC program; '-' for stdin")->required();
+    sub->footer(default_dialect_table() + exit_code_footer);
+    sub->callback([a, &exit_code] { exit_code = run_translate(*a); });
+  }
+  {
+    auto a = std::make_shared<machine_arguments>();
+    auto* sub = app.add_subcommand("reverse", "Turn a machine's NC program into APT CL data (tool tip and axis)");
+    sub->add_option("--machine,-m", a->machine, "Machine the program was written for")->required();
+    sub->add_option("--dialect", a->dialect, "Dialect of IN (default: the machine's)")->check(dialects);
+    sub->add_option("-o,--output", a->output, "Output file; '-' for stdout")->capture_default_str();
+    sub->add_flag("-v,--verbose", a->verbose, "Also list the blocks read on the other solution branch");
+    sub->add_option("input", a->input, "Input NC program; '-' for stdin")->required();
+    sub->footer(default_dialect_table() + exit_code_footer);
+    sub->callback([a, &exit_code] { exit_code = run_reverse(*a); });
+  }
+  {
+    auto a = std::make_shared<machine_arguments>();
+    auto* sub = app.add_subcommand("post", "Post-process APT CL data into an NC program for a machine");
+    sub->add_option("--machine,-m", a->machine, "Machine to write the program for")->required();
+    sub->add_option("--dialect", a->dialect, "Dialect of OUT (default: the machine's)")->check(dialects);
+    sub->add_option("-o,--output", a->output, "Output file; '-' for stdout")->capture_default_str();
+    sub->add_flag("-v,--verbose", a->verbose, "Also list the blocks posted on the other solution branch");
+    sub->add_option("input", a->input, "Input APT CL file; '-' for stdin")->required();
+    sub->footer(default_dialect_table() + exit_code_footer);
+    sub->callback([a, &exit_code] { exit_code = run_post(*a); });
+  }
+}
+
 }  // namespace kin5::tool
