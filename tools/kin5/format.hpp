@@ -21,8 +21,10 @@ namespace kin5::tool {
 
 /// The finite number that is the whole of `s` (leading `+` allowed), or nothing.
 inline std::optional<double> parse_real(std::string_view s) {
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-  if (s.empty() || s.front() == '+') return std::nullopt;
+  if (!s.empty() && s.front() == '+') {
+    s.remove_prefix(1);
+    if (!s.empty() && (s.front() == '+' || s.front() == '-')) return std::nullopt;  // "+-1", "++1"
+  }
   double v = 0.0;
   const auto r = std::from_chars(s.data(), s.data() + s.size(), v, std::chars_format::general);
   if (r.ec != std::errc{} || r.ptr != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
