@@ -195,6 +195,14 @@ case "$name" in
     run 1 translate --from sajo-12000p "$example"
     run 1 translate --from sajo-12000p --to dmu-80p
     run 1 post --machine dmu-80p --dialect klingon "$examples/cl-path.apt"
+    # Heidenhain has no inverse-time feed (G93): an argument error, found before reading.
+    run 1 translate --from sajo-12000p --to dmu-80p --feed inverse-time "$example"
+    grep -q 'inverse-time' err || report "inverse-time message"
+    ;;
+  inverse-time)
+    # With a dialect that has G93 the translation runs and switches G93 on.
+    run 0 translate --from sajo-12000p --to dmu-80p --to-dialect siemens --feed inverse-time -o it.mpf "$example"
+    grep -q 'G93' it.mpf || { report "no G93 in the output"; show it.mpf; }
     ;;
   reverse)
     # NC -> CL: GOTO/x,y,z,i,j,k with (i,j,k) = (cos A sin B, -sin A, cos A cos B) (K1).
