@@ -24,6 +24,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -192,6 +193,8 @@ class reader {
   }
 
   void interpret(block& b, std::vector<word>& words) {
+    // A block that turns out to be passthrough must leave the reader's record as it was.
+    const auto saved = std::make_tuple(motion_, plane_, vector_tcp_, incremental_, incremental_line_, last_[0], last_[1], last_[2]);
     // First pass: what kind of block this is.
     bool homing = false, g43_5 = false, uses_pq = false, g52 = false;
     const word* motion_word = nullptr;
@@ -430,7 +433,7 @@ class reader {
         kept.where = b.where;
         kept.text = b.text;
         kept.passthrough = true;
-        if (b.tcp) vector_tcp_ = false;
+        std::tie(motion_, plane_, vector_tcp_, incremental_, incremental_line_, last_[0], last_[1], last_[2]) = saved;
         b = std::move(kept);
       }
     }
@@ -488,7 +491,7 @@ inline std::string write(const program& p, const write_options& options = {}) {
     if (b.number) words.push_back("N" + std::to_string(*b.number));
     if (b.program_begin) {
       const std::string& name = *b.program_begin;
-      if (!name.empty() && name.size() <= 8 && name.find_first_not_of("0123456789") == std::string::npos)
+      if (!name.empty() && name.find_first_not_of("0123456789") == std::string::npos)
         words.push_back("O" + name);
       else
         notes += (notes.empty() ? "" : " ") + std::string("program ") + name;
@@ -498,7 +501,9 @@ inline std::string write(const program& p, const write_options& options = {}) {
       for (const std::string& k : b.kept_words) {
         if (!k.empty() && to_upper(k.front()) == 'G') {
           words.push_back(k);
-          const parsed_number n = read_number(std::string_view(k).substr(1));
+          std::string_view digits = std::string_view(k).substr(1);
+          while (!digits.empty() && is_space(digits.front())) digits.remove_prefix(1);
+          const parsed_number n = read_number(digits);
           const int g = n.error == number_error::none ? detail::g_code(n.value) : -1;
           if (g == 170) plane = arc_plane::xy;
           if (g == 180) plane = arc_plane::zx;
