@@ -4,7 +4,8 @@
 ///
 ///     u = R((1,0,−1)/√2, −A) · R(Y, B) · ẑ                                    (spec §3.4)
 ///
-/// With B ∈ [−120°, 120°] the whole sphere is reachable (spec §4.5: ρ = 1, c₀ = 0).
+/// ρ = 1, c₀ = 0 (spec §4.5): with B unlimited the whole sphere is reachable. With B ∈ [−120°, 120°]
+/// the latitude p·w = sin(B − 45°) stays in [−1, sin 75°], so axes within 15° of p are not.
 #pragma once
 
 #include "../machine.hpp"
