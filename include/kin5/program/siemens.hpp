@@ -803,14 +803,10 @@ inline read_result read(std::string_view text, std::string file_name) {
       result.parsed.blocks.push_back(std::move(b));
       continue;
     }
-    if (line.text[first] == '%') {
-      if (auto name = detail::program_header(line.text)) {
-        b.program_begin = *name;
-        state = detail::modal_state{};
-        state.program_name = *name;
-      } else {
-        b.passthrough = true;
-      }
+    if (auto name = detail::program_header(line.text)) {
+      b.program_begin = *name;
+      state = detail::modal_state{};
+      state.program_name = *name;
       result.parsed.blocks.push_back(std::move(b));
       continue;
     }
