@@ -208,6 +208,7 @@ inline read_result read(std::string_view text, std::string file_name) {
       return false;
     };
     auto passthrough = [&] { b.passthrough = true; };
+    std::vector<diagnostic> stray;  // bytes that start no word: errors unless the block passes through
 
     // Splits the rest of the line into words; reports bytes that start no word. Stops at `;`.
     auto lex = [&](std::size_t k) {
@@ -264,9 +265,9 @@ inline read_result read(std::string_view text, std::string file_name) {
           }
         } else {
           const unsigned char c = static_cast<unsigned char>(s[k]);
-          if (!is_control(c)) {  // control bytes were reported above
-            error(k, c >= 0x80 ? "unexpected byte " + hex_byte(c) : std::string("unexpected character '") + s[k] + "'");
-          }
+          if (!is_control(c))  // control bytes were reported above
+            stray.push_back({where(k), c >= 0x80 ? "unexpected byte " + hex_byte(c)
+                                                 : std::string("unexpected character '") + s[k] + "'"});
           ++k;
           while (k < s.size() && !is_space(s[k]) && s[k] != ';' && !is_letter(s[k])) ++k;
           continue;
@@ -364,7 +365,6 @@ inline read_result read(std::string_view text, std::string file_name) {
         } else if (w.key.size() == 1 && (w.key == "X" || w.key == "Y" || w.key == "Z") && !w.value && !w.sign &&
                    !w.expression && w.error == number_error::none) {
           t.kept_words.push_back(w.key);
-          plane = w.key == "Z" ? arc_plane::xy : w.key == "Y" ? arc_plane::zx : arc_plane::yz;
         } else if (w.key == "S" && w.value && !t.spindle_rpm) {
           t.spindle_rpm = *w.value;
         } else if (w.key == "F" && w.value && !t.feed) {
@@ -375,8 +375,11 @@ inline read_result read(std::string_view text, std::string file_name) {
           understood = false;
         }
       }
-      if (understood && (t.tool || t.spindle_rpm)) b = std::move(t);
-      else {
+      if (understood && (t.tool || t.spindle_rpm)) {
+        b = std::move(t);
+        for (const std::string& w : b.kept_words)  // the tool axis sets the working plane
+          if (w == "X" || w == "Y" || w == "Z") plane = w == "Z" ? arc_plane::xy : w == "Y" ? arc_plane::zx : arc_plane::yz;
+      } else {
         b.comment.reset();
         passthrough();
       }
@@ -598,6 +601,7 @@ inline read_result read(std::string_view text, std::string file_name) {
     }
 
     if (!b.passthrough) {
+      out.errors.insert(out.errors.end(), stray.begin(), stray.end());
       if (b.axes.x_mm) last[0] = b.axes.x_mm;
       if (b.axes.y_mm) last[1] = b.axes.y_mm;
       if (b.axes.z_mm) last[2] = b.axes.z_mm;
@@ -722,7 +726,8 @@ inline std::string write(const program& p, const write_options& options = {}) {
           l = "C";
         }
       } else {
-        l = b.axes.tool_axis ? "LN" : "L";
+        const bool normal = std::any_of(kept.begin(), kept.end(), [](const std::string& w) { return !w.empty() && to_upper(w[0]) == 'N'; });
+        l = b.axes.tool_axis || normal ? "LN" : "L";
       }
       const axis_words& a = b.axes;
       if (a.x_mm) l += coord("X", *a.x_mm, options.linear_decimals);

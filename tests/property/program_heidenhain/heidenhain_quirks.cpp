@@ -89,6 +89,18 @@ TEST_CASE("heidenhain: a program in NX and hand-edit style") {
   CHECK((b[24].program_end == "100" && b[24].metric == true));
 }
 
+TEST_CASE("heidenhain: tool calls by name and other controls' words pass through") {
+  const read_result r = heidenhain::read("TOOL CALL \"MILL_D10\" Z S5000 DL+0.1\nTOOL CALL 5 Y\nCR X+1 Z+0 R+5 DR+\n", "n.h");
+  REQUIRE(r.errors.empty());
+  REQUIRE(r.parsed.blocks.size() == 3);
+  CHECK(r.parsed.blocks[0].passthrough);
+  CHECK((r.parsed.blocks[1].tool == 5 && r.parsed.blocks[1].kept_words == std::vector<std::string>{"Y"}));
+  // TOOL CALL … Y makes ZX the working plane of the radius arc.
+  REQUIRE(r.parsed.blocks[2].arc);
+  CHECK(r.parsed.blocks[2].arc->plane == arc_plane::zx);
+  CHECK(heidenhain::write(r.parsed) == "0 TOOL CALL \"MILL_D10\" Z S5000 DL+0.1\n1 TOOL CALL 5 Y\n2 CR X+1 Z+0 R+5 DR+\n");
+}
+
 TEST_CASE("heidenhain: the writer numbers blocks from 0 in Heidenhain style") {
   const read_result r = heidenhain::read(program_text, "b.h");
   const std::string expected =
