@@ -1,0 +1,131 @@
+// Program-level laws: every block accounted for, unreachable blocks all listed with their gap,
+// arcs mapped exactly and back, non-motion content kept in order.
+#include <set>
+
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <kin5/kin5.hpp>
+
+#include "generators.hpp"
+#include "program_builder.hpp"
+
+namespace {
+
+using namespace kin5;
+using machines::dmu_80p;
+using machines::sajo_12000p;
+
+/// The 24 proper rotations that permute the axes with signs: the setups under which every
+/// principal plane maps to a principal plane.
+std::vector<mat3> signed_permutations() {
+  std::vector<mat3> out;
+  const vec3 e[3] = {unit_x, unit_y, unit_z};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) {
+        if (i == j || j == k || i == k) continue;
+        for (int s = 0; s < 8; ++s) {
+          const mat3 m = mat3::from_columns((s & 1 ? -1.0 : 1.0) * e[i], (s & 2 ? -1.0 : 1.0) * e[j],
+                                            (s & 4 ? -1.0 : 1.0) * e[k]);
+          if (determinant(m) > 0) out.push_back(m);
+        }
+      }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("every block is accounted for, and unreachable blocks are all listed with their gap") {
+  rc::prop("SAJO programs with A over its whole travel on the DMU 80P", [] {
+    const auto n = *rc::gen::inRange<std::size_t>(1, 30);
+    auto p = test::tcp_program(program::dialect::siemens, "random.mpf");
+    std::set<std::size_t> unreachable_lines;
+    std::vector<double> a_values;
+    for (std::size_t k = 0; k < n; ++k) {
+      const int kind = *rc::gen::inRange(0, 4);
+      if (kind == 0) {  // a non-motion block: comment, M function or spindle speed
+        auto& b = test::add_block(p);
+        b.comment = "c" + std::to_string(k);
+        b.m_codes = {8};
+        continue;
+      }
+      double a = *test::uniform(-120.0, 30.0);
+      if (std::abs(a) < 1e-6) a = 1e-3;  // away from the reach boundary S3 at a = 0
+      const double b = *test::uniform(-180.0, 180.0);
+      auto& m = test::add_motion(p, {*test::uniform(-100, 100), 0.0, 50.0, a, b, std::nullopt, 700.0},
+                                 kind == 1 ? program::motion_kind::rapid : program::motion_kind::linear);
+      if (a > 0) unreachable_lines.insert(m.where.line);
+      a_values.push_back(a);
+    }
+    const auto t = translate<sajo_12000p, dmu_80p>(p, test::options());
+    RC_ASSERT(t.blocks_read == p.blocks.size());
+    RC_ASSERT(t.ok() == unreachable_lines.empty());
+    RC_ASSERT(t.blocks_written + unreachable_lines.size() == t.blocks_read);
+    RC_ASSERT(t.reports.size() == a_values.size());
+    std::set<std::size_t> error_lines;
+    for (const auto& e : t.errors) error_lines.insert(e.where.line);
+    RC_ASSERT(error_lines == unreachable_lines);
+    for (std::size_t i = 0; i < t.reports.size(); ++i) {
+      const auto& r = t.reports[i];
+      RC_ASSERT((r.match == matchability::unreachable) == (a_values[i] > 0));
+      if (a_values[i] > 0) RC_ASSERT(std::abs(to_degrees(r.gap).value - a_values[i]) <= 1e-9);  // P14
+    }
+    // Non-motion blocks are kept, in order, among the written ones.
+    std::vector<std::string> in_comments, out_comments;
+    for (const auto& b : p.blocks)
+      if (b.comment) in_comments.push_back(*b.comment);
+    for (const auto& b : t.output.blocks)
+      if (b.comment) out_comments.push_back(*b.comment);
+    RC_ASSERT(in_comments == out_comments);
+  });
+}
+
+TEST_CASE("arcs map exactly under every axis-permuting setup and come back unchanged") {
+  const auto setups = signed_permutations();
+  REQUIRE(setups.size() == 24);
+  rc::prop("arc on the SAJO -> SAJO under a signed permutation -> back", [&setups] {
+    const mat3 R = setups[*rc::gen::inRange<std::size_t>(0, setups.size())];
+    const rigid_transform d_T_s{R, *test::tip()};
+    const auto plane = *rc::gen::element(program::arc_plane::xy, program::arc_plane::zx, program::arc_plane::yz);
+    const auto direction = *rc::gen::element(program::motion_kind::arc_cw, program::motion_kind::arc_ccw);
+    const vec3 start = *test::tip(), centre = *test::tip();
+    const vec3 end = *test::tip();
+    // Reachable tool axis after the setup: draw it on the target, map it back.
+    const auto target = *test::angles_within<sajo_12000p>(1.0);
+    const vec3 u_s = R.transposed() * tool_axis<sajo_12000p>(target);
+    const auto source = inverse<sajo_12000p>(u_s).first_within_travel();
+    RC_PRE(source.has_value());
+    auto p = test::tcp_program(program::dialect::siemens, "arc.mpf");
+    auto& first = test::add_motion(p, {start.x, start.y, start.z, std::nullopt, std::nullopt, std::nullopt, 300.0});
+    test::set_rotary_words<sajo_12000p>(first.axes, *source);
+    auto& arc = test::add_motion(p, {end.x, end.y, end.z, std::nullopt, std::nullopt, std::nullopt, std::nullopt},
+                                 direction);
+    arc.arc = program::arc_words{plane, centre, std::nullopt};
+    const auto there = translate<sajo_12000p, sajo_12000p>(p, test::options(feed_policy::tcp, program::dialect::iso, d_T_s));
+    RC_ASSERT(there.ok());
+    const auto& mapped = there.output.blocks.back();
+    // The plane's normal maps onto the target plane's normal, the direction flips with its sign.
+    const vec3 n_s = plane == program::arc_plane::xy ? unit_z : plane == program::arc_plane::zx ? unit_y : unit_x;
+    const vec3 n_d = R * n_s;
+    const vec3 target_normal = mapped.arc->plane == program::arc_plane::xy ? unit_z
+                               : mapped.arc->plane == program::arc_plane::zx ? unit_y
+                                                                             : unit_x;
+    RC_ASSERT(std::abs(std::abs(dot(n_d, target_normal)) - 1.0) <= 1e-12);
+    RC_ASSERT((mapped.motion == direction) == (dot(n_d, target_normal) > 0));
+    const auto back = translate<sajo_12000p, sajo_12000p>(
+        there.output, test::options(feed_policy::tcp, program::dialect::siemens, d_T_s.inverse()));
+    RC_ASSERT(back.ok());
+    const auto& again = back.output.blocks.back();
+    RC_ASSERT(again.motion == direction);
+    RC_ASSERT(again.arc->plane == plane);
+    // Centre: the in-plane part comes back; its normal part is the start's (a planar arc).
+    vec3 expected_centre = centre;
+    if (plane == program::arc_plane::xy) expected_centre.z = start.z;
+    if (plane == program::arc_plane::zx) expected_centre.y = start.y;
+    if (plane == program::arc_plane::yz) expected_centre.x = start.x;
+    RC_ASSERT(norm(*again.arc->centre_mm - expected_centre) <= 1e-9);
+    const vec3 e{again.axes.x_mm.value_or(start.x), again.axes.y_mm.value_or(start.y), again.axes.z_mm.value_or(start.z)};
+    RC_ASSERT(norm(e - end) <= 1e-9);
+  });
+}

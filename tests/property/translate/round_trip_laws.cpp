@@ -1,0 +1,164 @@
+// Round trips: reverse∘post = identity on CL paths for every catalog machine, and
+// translate A→B→A = identity on the reachable set for several machine pairs.
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <kin5/kin5.hpp>
+
+#include "generators.hpp"
+
+namespace {
+
+using namespace kin5;
+
+program::program cl_program(const std::vector<vec3>& tips, const std::vector<vec3>& axes) {
+  program::program p;
+  p.language = program::dialect::apt;
+  p.file = "path.cl";
+  for (std::size_t k = 0; k < tips.size(); ++k) {
+    program::block b;
+    b.where = {p.file, k + 1, 1};
+    b.motion = program::motion_kind::linear;
+    b.axes.x_mm = tips[k].x, b.axes.y_mm = tips[k].y, b.axes.z_mm = tips[k].z;
+    b.axes.tool_axis = axes[k];
+    b.feed = 1000.0;
+    p.blocks.push_back(b);
+  }
+  program::block end;
+  end.where = {p.file, tips.size() + 1, 1};
+  end.program_end = "FINI";
+  p.blocks.push_back(end);
+  return p;
+}
+
+template <machine M>
+program::program nc_program(const std::vector<test::pose<M>>& path) {
+  program::program p;
+  p.language = program::dialect::siemens;
+  p.file = "path.mpf";
+  program::block on;
+  on.where = {p.file, 1, 1};
+  on.tcp = true;
+  p.blocks.push_back(on);
+  for (const auto& q : path) {
+    program::block b;
+    b.where = {p.file, p.blocks.size() + 1, 1};
+    b.motion = program::motion_kind::linear;
+    b.axes.x_mm = q.tip_mm.x, b.axes.y_mm = q.tip_mm.y, b.axes.z_mm = q.tip_mm.z;
+    test::set_rotary_words<M>(b.axes, q.angles);
+    b.feed = 500.0;
+    p.blocks.push_back(b);
+  }
+  return p;
+}
+
+std::vector<const program::block*> motions(const program::program& p) {
+  std::vector<const program::block*> out;
+  for (const auto& b : p.blocks)
+    if (b.moves()) out.push_back(&b);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("reverse after post is the identity on reachable CL paths, every catalog machine") {
+  machines::for_each_machine([]<class M>() {
+    rc::prop(std::string("reverse∘post = id on ") + std::string(M::id), [] {
+      const auto path = *test::path_within<M>(8);
+      std::vector<vec3> tips, axes;
+      for (const auto& q : path) tips.push_back(q.tip_mm), axes.push_back(tool_axis<M>(q.angles));
+      const auto cl = cl_program(tips, axes);
+      const auto nc = post<M>(cl, program::dialect::siemens);
+      RC_ASSERT(nc.ok());
+      RC_ASSERT(nc.blocks_written == nc.blocks_read);
+      for (const auto& r : nc.reports) RC_ASSERT(r.match == matchability::direct);
+      const auto back = reverse<M>(nc.output);
+      RC_ASSERT(back.ok());
+      RC_ASSERT(back.output.language == program::dialect::apt);
+      const auto m = motions(back.output);
+      RC_ASSERT(m.size() == tips.size());
+      for (std::size_t k = 0; k < m.size(); ++k) {
+        RC_ASSERT(*m[k]->axes.x_mm == tips[k].x);
+        RC_ASSERT(*m[k]->axes.y_mm == tips[k].y);
+        RC_ASSERT(*m[k]->axes.z_mm == tips[k].z);
+        RC_ASSERT(norm(*m[k]->axes.tool_axis - axes[k]) <= 1e-9);
+      }
+    });
+  });
+}
+
+namespace {
+
+/// A random program of From whose tool axes To reaches: draw To's angles, map the axis back
+/// through the setup, solve From, and pick one of From's within-travel solutions at random.
+template <machine From, machine To>
+std::vector<test::pose<From>> reachable_path(const rigid_transform& target_T_source) {
+  const auto count = *rc::gen::inRange<std::size_t>(1, 9);
+  std::vector<test::pose<From>> path;
+  const rigid_transform source_T_target = target_T_source.inverse();
+  for (std::size_t k = 0; k < count; ++k) {
+    const auto target = *test::angles_within<To>(1.0);
+    const vec3 u_s = source_T_target.map_direction(tool_axis<To>(target));
+    const auto solutions = inverse<From>(u_s);
+    std::vector<rotary_angles<From>> within;
+    for (const auto& s : solutions)
+      if (s.within_travel) within.push_back(s.angles);
+    RC_PRE(!within.empty());
+    const auto pick = *rc::gen::inRange<std::size_t>(0, within.size());
+    path.push_back({*test::tip(), within[pick]});
+  }
+  return path;
+}
+
+template <machine From, machine To>
+void check_round_trip() {
+  rc::prop(std::string(From::id) + " -> " + std::string(To::id) + " -> back is the identity", [] {
+    const rigid_transform d_T_s = default_setup<From, To>();
+    const auto path = reachable_path<From, To>(d_T_s);
+    const auto source = nc_program<From>(path);
+    translate_options there;
+    there.output_dialect = program::dialect::iso;
+    const auto t = translate<From, To>(source, there);
+    RC_ASSERT(t.ok());
+    RC_ASSERT(t.blocks_written == t.blocks_read);
+    RC_ASSERT(t.reports.size() == path.size());
+    translate_options back_options;
+    back_options.output_dialect = program::dialect::siemens;
+    const auto back = translate<To, From>(t.output, back_options);
+    RC_ASSERT(back.ok());
+    RC_ASSERT(back.blocks_written == source.blocks.size());
+    const auto m = motions(back.output);
+    const auto mid = motions(t.output);
+    RC_ASSERT(m.size() == path.size());
+    double source_length = 0.0, target_length = 0.0;
+    for (std::size_t k = 0; k < m.size(); ++k) {
+      const vec3 tip{*m[k]->axes.x_mm, *m[k]->axes.y_mm, *m[k]->axes.z_mm};
+      RC_ASSERT(norm(tip - path[k].tip_mm) <= 1e-9);
+      const vec3 u = tool_axis<From>(test::rotary_of<From>(m[k]->axes));
+      RC_ASSERT(norm(u - tool_axis<From>(path[k].angles)) <= 1e-9);
+      // The target's own tool axis is the mapped source axis.
+      const vec3 u_d = tool_axis<To>(test::rotary_of<To>(mid[k]->axes));
+      RC_ASSERT(norm(u_d - d_T_s.map_direction(tool_axis<From>(path[k].angles))) <= 1e-9);
+      if (k > 0) {
+        source_length += norm(path[k].tip_mm - path[k - 1].tip_mm);
+        const vec3 a{*mid[k]->axes.x_mm, *mid[k]->axes.y_mm, *mid[k]->axes.z_mm};
+        const vec3 b{*mid[k - 1]->axes.x_mm, *mid[k - 1]->axes.y_mm, *mid[k - 1]->axes.z_mm};
+        target_length += norm(a - b);
+      }
+    }
+    // The setup is rigid: linear path length is preserved (K10, P11).
+    RC_ASSERT(std::abs(source_length - target_length) <= 1e-9 * (1.0 + source_length));
+  });
+}
+
+}  // namespace
+
+TEST_CASE("translate A -> B -> A is the identity on the reachable set") {
+  using namespace kin5::machines;
+  check_round_trip<sajo_12000p, dmu_80p>();
+  check_round_trip<dmu_80p, sajo_12000p>();
+  check_round_trip<ac_trunnion, dmu_50v>();
+  check_round_trip<dmu_50v, ac_head>();
+  check_round_trip<b_head_a_tilted_table, ac_trunnion>();
+  check_round_trip<ac_head, b_head_a_tilted_table>();
+}
