@@ -149,7 +149,7 @@ TEST_CASE("iso: blocks from another dialect") {
   CHECK(iso::write(p) == "G53 G0 X1 Y2\n;CYCL DEF 7.0 (DATUM)\n(BLK FORM 0.1 Z)\n");
 }
 
-TEST_CASE("iso: a passthrough line changes nothing; spaced kept words write back as they were") {
+TEST_CASE("iso: a passthrough line changes nothing, spaced kept words write back as they were") {
   // G29 is not understood, so the G18 beside it must not select the ZX plane.
   const std::string text = "G0 X0 Y0 Z0\nG18 G29\nG2 X10 Y0 I5\nG 28 Z0\nO004200404\n";
   const read_result r = iso::read(text, "p.nc");
