@@ -69,8 +69,10 @@ struct item {
   std::string text;
 };
 
-/// A word with a value: letter(s) in random case, then the spelled number.
-std::string value_word(const std::string& key, double v, int decimals) { return draw_case(key) + spell(v, decimals); }
+/// A word with a value: letter(s) in random case, now and then a blank, then the spelled number.
+std::string value_word(const std::string& key, double v, int decimals) {
+  return draw_case(key) + (*rc::gen::inRange(0, 8) == 0 ? " " : "") + spell(v, decimals);
+}
 
 void add_m_codes(std::string& text, block& b) {
   const auto codes = *rc::gen::container<std::vector<int>>(
