@@ -233,7 +233,9 @@ class line_reader {
   std::size_t line_;
   const std::string& file_;
   line_parse& out_;
-  std::size_t i_ = 0, first_ = 0;
+  std::size_t i_ = 0, first_ = 0;  // the next byte; the block's first non-blank byte
+  bool named_tool_ = false;         // T="name" seen
+  std::string motion_word_, feed_word_, tcp_word_;  // as written, for "conflicting words"
 
   source_location at(std::size_t pos) const { return {file_, line_, pos + 1}; }
   void error(std::size_t pos, std::string m) { out_.errors.push_back({at(pos), std::move(m)}); }
@@ -320,16 +322,23 @@ class line_reader {
     return present;
   }
 
+  /// Skips what follows a number that makes it malformed: `.3` of `1.2.3`, `e5` or `EX3` of an exponent.
+  void skip_malformed_number() {
+    while (i_ < s_.size() && (is_digit(s_[i_]) || s_[i_] == '.' || s_[i_] == '+' || s_[i_] == '-' ||
+                              to_upper(s_[i_]) == 'E' || to_upper(s_[i_]) == 'X'))
+      ++i_;
+  }
+
   void mark_geometry(std::size_t pos) {
     if (!out_.has_geometry) out_.geometry_column = pos;
     out_.has_geometry = true;
   }
 
-  /// Consumes an expression value (after `=`) and reports it.
-  void expression(char letter, std::size_t start, std::size_t value_pos) {
+  /// Consumes an expression value (after `=`) and reports it. `geometry`: an axis, vector,
+  /// centre or radius word, for which an expression is always an error.
+  void expression(bool geometry, std::size_t start, std::size_t value_pos) {
     consume_run();
     const std::string value = upper(s_.substr(value_pos, i_ - value_pos));
-    const bool geometry = is_axis_letter(letter) || is_centre_letter(letter) || letter == 'R';
     if (value.rfind("IC(", 0) == 0) {
       error(start, "incremental positioning (IC) is not supported");
     } else if (value == "NAN" || value == "INF" || value == "-NAN" || value == "-INF" || value == "INFINITY") {
@@ -344,37 +353,32 @@ class line_reader {
     else out_.has_content = true;
   }
 
-  /// Reads the plain number after `=`; false (and reported) if it is not one.
-  std::optional<double> assigned_number(char letter, std::size_t start) {
+  /// Reads the plain number after `word=`; nothing (and reported) if it is not one.
+  std::optional<double> assigned_number(std::string_view word, bool geometry, std::size_t start) {
     skip_spaces();
+    if (geometry) mark_geometry(start);
     const std::size_t value_pos = i_;
     if (i_ >= s_.size() || s_[i_] == ';') {
-      error(start, std::string("word '") + letter + "' has no value");
+      error(start, "word '" + std::string(word) + "' has no value");
       return std::nullopt;
     }
     const auto n = read_number(s_.substr(i_));
     const std::size_t extent = number_extent(s_.substr(i_));
     const char next = peek(i_ + extent), after = to_upper(peek(i_ + extent + 1));
-    if (n.length > 0 && (next == 'e' || next == 'E') && (is_digit(after) || after == '+' || after == '-' || after == 'X')) {
-      i_ += extent;
-      consume_run();
-      error(start, "value out of range");
-      if (is_axis_letter(letter) || is_centre_letter(letter)) mark_geometry(start);
-      return std::nullopt;
-    }
+    const bool exponent = (next == 'e' || next == 'E') && (is_digit(after) || after == '+' || after == '-' || after == 'X');
     const bool operand_follows = next == '+' || next == '-' || next == '*' || next == '/' || next == '(' ||
                                  next == '[' || next == '<' || next == '>' || next == '=' || next == '.';
-    if (n.length > 0 && !operand_follows) {
+    if (n.length > 0 && !operand_follows && !exponent) {
       i_ += n.length;
       return n.value;
     }
-    if (n.error == number_error::too_large && !operand_follows) {
+    if ((n.length > 0 && exponent) || (n.error == number_error::too_large && !operand_follows)) {
       i_ += extent;
+      skip_malformed_number();
       error(start, "value out of range");
-      if (is_axis_letter(letter) || is_centre_letter(letter)) mark_geometry(start);
       return std::nullopt;
     }
-    expression(letter, start, value_pos);
+    expression(geometry, start, value_pos);
     return std::nullopt;
   }
 
@@ -410,10 +414,7 @@ class line_reader {
     // `1.2.3`, `1e5`, `1EX3`: a malformed or exponent number.
     const char next = peek(i_), after = to_upper(peek(i_ + 1));
     if (next == '.' || ((next == 'e' || next == 'E') && (is_digit(after) || after == '+' || after == '-' || after == 'X'))) {
-      ++i_;
-      while (i_ < s_.size() && (is_digit(s_[i_]) || s_[i_] == '.' || s_[i_] == '+' || s_[i_] == '-' ||
-                                to_upper(s_[i_]) == 'E' || to_upper(s_[i_]) == 'X'))
-        ++i_;
+      skip_malformed_number();
       error(start, "value out of range");
       if (is_axis_letter(letter) || is_centre_letter(letter)) mark_geometry(start);
       return;
@@ -477,14 +478,13 @@ class line_reader {
       return;
     }
     const std::size_t value_pos = i_;
-    const auto v = assigned_number(letter, start);
+    const auto v = assigned_number(std::string(1, letter), is_axis_letter(letter) || is_centre_letter(letter), start);
     if (!v) return;
     numbered(letter, *v, s_.substr(value_pos, i_ - value_pos), start);
   }
 
   void vector_word(char letter, std::size_t start) {
-    const auto v = assigned_number('X', start);  // axis rules for expressions
-    mark_geometry(start);
+    const auto v = assigned_number(std::string(1, letter) + "3", true, start);
     if (!v) return;
     const std::size_t i = static_cast<std::size_t>(letter - 'A');
     if (duplicate(out_.vector[i].has_value(), start, std::string(1, letter) + "3")) return;
@@ -694,8 +694,7 @@ class line_reader {
 
   void keyword_assignment(const std::string& name, std::size_t start) {
     if (name == "CR") {
-      const auto v = assigned_number('X', start);
-      mark_geometry(start);
+      const auto v = assigned_number("CR", true, start);
       if (!v) return;
       if (duplicate(out_.radius_mm.has_value(), start, "CR")) return;
       if (out_.arc_word.empty()) out_.arc_word = "CR", out_.arc_column = start;
@@ -707,9 +706,6 @@ class line_reader {
     if (name == "RPL") out_.frame_arguments = true;
     unknown(start, "unknown word '" + name + "'");
   }
-
-  bool named_tool_ = false;
-  std::string motion_word_, feed_word_, tcp_word_;
 };
 
 /// `%_N_NAME_MPF`, `%_N_NAME_SPF`, `%NAME`: the program name, or nothing if `line` is not a header.
@@ -748,13 +744,17 @@ inline void finish(line_parse& p, modal_state& state, read_result& result) {
     for (auto& d : p.unknown) p.errors.push_back(std::move(d));
     if (b.motion) state.motion = b.motion;
     if (p.plane) state.plane = *p.plane;
-    if (p.vector[0] || p.vector[1] || p.vector[2]) {
+    // Checks across words only on a line whose words read cleanly: one diagnostic per problem.
+    const bool clean = p.errors.empty();
+    if (clean && (p.vector[0] || p.vector[1] || p.vector[2])) {
       if (!p.vector[0] || !p.vector[1] || !p.vector[2]) error(p.vector_column, "tool-axis vector needs A3, B3 and C3");
       else if (b.axes.has_rotary()) error(p.vector_column, "rotary axes and a tool-axis vector in one block");
       else b.axes.tool_axis = vec3{*p.vector[0], *p.vector[1], *p.vector[2]};
     }
     const bool has_centre = p.centre_offset_mm[0] || p.centre_offset_mm[1] || p.centre_offset_mm[2];
-    if (has_centre || p.radius_mm) {
+    if (!clean) {
+      // an arc word may be the one in error: leave the arc out
+    } else if (has_centre || p.radius_mm) {
       if (!is_arc(state.motion)) {
         error(p.arc_column, "word '" + p.arc_word + "' needs G2 or G3");
       } else if (has_centre && p.radius_mm) {

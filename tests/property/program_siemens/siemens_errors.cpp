@@ -94,6 +94,10 @@ const std::vector<bad_case> cases = {
     {"G0 X0 Y0 Z0\nSUPA Z0\nG2 X10 I5 J0", {"bad.mpf:3:8: error: arc start point is not known"}},
     {"G1 A3=1 X5", {"bad.mpf:1:4: error: tool-axis vector needs A3, B3 and C3"}},
     {"G1 A3=1 B3=0 C3=0 A10", {"bad.mpf:1:4: error: rotary axes and a tool-axis vector in one block"}},
+    {"G0 X0 Y0 Z0\nG2 X1 CR=", {"bad.mpf:2:7: error: word 'CR' has no value"}},
+    {"G1 B3=0 C3=1 A3=", {"bad.mpf:1:14: error: word 'A3' has no value"}},
+    {"G0 X0 Y0 Z0\nG2 X1 Y1 I=R1 J0", {"bad.mpf:2:10: error: " + expr}},
+    {"G1 X=1e5 Y2", {"bad.mpf:1:4: error: value out of range"}},
     // unclosed things
     {"G1 X10 (open", {"bad.mpf:1:8: error: comment '(' is not closed"}},
     {"MSG(\"open", {"bad.mpf:1:4: error: missing ')'"}},
