@@ -24,7 +24,8 @@ namespace kin5::paper::liu_dmu50v {
 constexpr vec3 eq2_om(double b_deg) {
   constexpr double half_sqrt2 = 0.70710678118654752;
   const double cb = cos_deg(b_deg), sb = sin_deg(b_deg);
-  return {half_sqrt2 * sb, -0.5 + half_sqrt2 * half_sqrt2 * cb, 0.5 + half_sqrt2 * half_sqrt2 * cb};
+  // (√2/2)(√2/2) is written 1/2, so that B = 180° gives a_z = 0 exactly.
+  return {half_sqrt2 * sb, -0.5 + 0.5 * cb, 0.5 + 0.5 * cb};
 }
 
 /// (K22): u = R(Z, C) · [003:2](B), the tool axis eqs [003:4-5] invert.

@@ -215,9 +215,11 @@ constexpr region region_of(double a_s_deg) {
 /// The result of the corrected M1 → M2 translation.
 struct m1_to_m2 {
   region rule = region::none;
-  /// The M2 angles (not normalised, E7). For `none`: the nearest pose, B_d = 180°, C_d = B_s.
+  /// The M2 angles (not normalised, E7). For `none`: the nearest reachable pose, B_d = 180° and
+  /// C_d = B_s (A_s ≤ 90°) or B_s + 180° (A_s > 90°).
   dmu_angles_deg angles{};
-  /// Angle from T·u_s to M2's reach, degrees: 0, or A_s for `none` (spec §6.1).
+  /// Angle from T·u_s to M2's reach, degrees: 0, or arcsin(sin A_s) for `none`, which is A_s on
+  /// (0°, 90°] (spec §6.1) and 180° − A_s beyond.
   double gap_deg = 0.0;
 };
 
@@ -226,7 +228,10 @@ struct m1_to_m2 {
 /// At A_s = −90° it gives C_d = B_s + 90°, the printed convention and the continuous limit.
 constexpr m1_to_m2 k12_corrected(double a_s_deg, double b_s_deg) {
   const region rule = region_of(a_s_deg);
-  if (rule == region::none) return {rule, {180.0, b_s_deg}, wrap180_deg(a_s_deg)};
+  if (rule == region::none) {
+    const double a = wrap180_deg(a_s_deg);
+    return a <= 90.0 ? m1_to_m2{rule, {180.0, b_s_deg}, a} : m1_to_m2{rule, {180.0, b_s_deg + 180.0}, 180.0 - a};
+  }
   const double minus_sin_a = -sin_deg(a_s_deg);  // = k_d ≥ 0
   const double sqrt_minus_sin = math::sqrt(minus_sin_a > 0.0 ? minus_sin_a : 0.0);
   const double sqrt_one_plus_sin = math::sqrt(2.0) * math::abs(sin_deg(0.5 * (a_s_deg + 90.0)));
