@@ -440,8 +440,8 @@ class reader {
   }
 };
 
-/// "G43.5" or "G43.4" for the tool-tip tracking switched on at block `i`: G43.5 when a block
-/// before the next switch-off carries a tool-axis vector.
+/// Whether tool-tip tracking switched on at block `i` is written G43.5 (rather than G43.4): a
+/// block from `i` up to the next switch carries a tool-axis vector.
 inline bool vector_tcp_from(const std::vector<block>& blocks, std::size_t i) {
   for (std::size_t k = i; k < blocks.size(); ++k) {
     if (k > i && blocks[k].tcp) break;
