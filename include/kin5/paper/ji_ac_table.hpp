@@ -37,7 +37,7 @@ constexpr vec3 k18_tool_axis(double a_deg, double c_deg) {
 
 /// (K19): both inverse branches of (K18), paired by sign:
 /// (+arccos k, atan2(i, j)) and (−arccos k, atan2(i, j) + 180°). At the poles k = ±1 c is free
-/// and atan2(0, 0) = 0 is returned.
+/// (whatever atan2 gives for the two zero components).
 constexpr std::array<ac_angles_deg, 2> k19_inverse(const vec3& u) {
   const double a = acos_deg(math::clamp(u.z, -1.0, 1.0));
   const double c = atan2_deg(u.x, u.y);

@@ -87,7 +87,8 @@ constexpr case_table_result eq7_b_corrected(double i, double k) {
 /// (K2) b = atan2(i, k) mod 360° ∈ [0°, 360°): the closed form of corrected [000:7].
 constexpr double k2_b_deg(const vec3& u) { return wrap360_deg(atan2_deg(u.x, u.z)); }
 
-/// (K2) inverse of M1 on the branch a ∈ [−90°, 90°]. At the poles u = ±Y_s, b = 0.
+/// (K2) inverse of M1 on the branch a ∈ [−90°, 90°]. At the poles u = ±Y_s, b is arbitrary
+/// (whatever atan2 gives for the two zero components).
 constexpr sajo_angles_deg k2_inverse(const vec3& u) { return {k2_a_deg(u), k2_b_deg(u)}; }
 
 /// (K3) the second solution branch, (a, b) → (−180° − a, b + 180°): same tool axis.
@@ -153,7 +154,7 @@ constexpr std::optional<double> eq13_c_deg(const vec3& u) {
 constexpr double k9_c_deg(const vec3& u) { return k8_ct_deg(u) + wrap180_deg(atan2_deg(u.y, u.x) - 90.0); }
 
 /// (K7)-(K9) inverse of M2. Empty when k < 0 (unreachable, spec P7). At the pole u = +Z_d,
-/// c_t = 90° and the bracket gives −90°, so c = 0.
+/// b = 0 and c is arbitrary.
 constexpr std::optional<dmu_angles_deg> k7_k9_inverse(const vec3& u) {
   if (u.z < 0.0) return std::nullopt;
   return dmu_angles_deg{k7_b_deg(u), k9_c_deg(u)};
