@@ -215,9 +215,13 @@ item draw_item(state& st) {
       break;
     }
     case 13: {  // machine coordinates
-      const int kind = *rc::gen::inRange(0, 3);
-      const char* g = kind == 0 ? "G53" : kind == 1 ? "G28" : "G30";
+      const int kind = *rc::gen::inRange(0, 4);
+      const char* g = kind == 0 ? "G53" : kind == 2 ? "G30" : "G28";
       b.machine_coordinates = true;
+      if (kind == 3) {  // the homing idiom `G91 G28 Z0`: accepted (later moves warn, read absolute)
+        b.kept_words.push_back(draw_case("G91"));
+        it.words.push_back(b.kept_words.back());
+      }
       b.kept_words.push_back(draw_case(g));
       it.words.push_back(b.kept_words.back());
       const double z = draw_decimal(-500, 500, 3);
