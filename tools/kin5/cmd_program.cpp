@@ -16,6 +16,7 @@
 // translated, or the output cannot be written; 3 blocks unreachable on the target. On any
 // non-zero exit OUT is neither created nor changed: the program is written to a temporary
 // file in OUT's directory and renamed over OUT only when complete.
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -153,17 +154,41 @@ bool write_output(const std::string& path, std::string_view bytes, std::string& 
 
 // ---- reporting ----------------------------------------------------------------------------
 
-/// Prints every diagnostic, errors and warnings, in the compilers' format.
-void print_diagnostics(const std::vector<prog::diagnostic>& diagnostics, std::string_view severity) {
-  for (const auto& d : diagnostics) std::cerr << d.to_string(severity) << '\n';
+/// A diagnostic with its severity ("error", "warning", "note").
+struct message {
+  const char* severity;
+  prog::diagnostic diagnostic;
+};
+
+/// Adds every diagnostic of `from` to `to` with severity `severity`.
+void collect(std::vector<message>& to, const std::vector<prog::diagnostic>& from, const char* severity) {
+  for (const auto& d : from) to.push_back({severity, d});
 }
 
-/// A note for a block translated on the other solution branch (printed with --verbose).
-std::string other_branch_message(const block_report& r) {
-  std::string message = "translated on the other solution branch";
-  if (!r.source_angles.empty()) message += ": " + r.source_angles;
-  if (!r.why.empty()) message += " (" + r.why + ")";
-  return prog::diagnostic{r.where, message}.to_string("note");
+/// Prints `messages` in source order (line, then column; ties in the order collected), each
+/// as `FILE:LINE:COL: severity: text`, the format compilers use (`FILE: severity: text` for a
+/// message about the whole file).
+void print_in_source_order(std::vector<message> messages) {
+  std::stable_sort(messages.begin(), messages.end(), [](const message& a, const message& b) {
+    const auto& l = a.diagnostic.where;
+    const auto& r = b.diagnostic.where;
+    return l.line != r.line ? l.line < r.line : l.column < r.column;
+  });
+  for (const auto& m : messages) {
+    const auto& where = m.diagnostic.where;
+    if (where.line == 0)  // about the whole file
+      std::cerr << where.file << ": " << m.severity << ": " << m.diagnostic.message << '\n';
+    else
+      std::cerr << m.diagnostic.to_string(m.severity) << '\n';
+  }
+}
+
+/// A note for a block translated on the other solution branch (listed with --verbose).
+prog::diagnostic other_branch_note(const block_report& r) {
+  std::string text = "translated on the other solution branch";
+  if (!r.source_angles.empty()) text += ": " + r.source_angles;
+  if (!r.why.empty()) text += " (" + r.why + ")";
+  return {r.where, text};
 }
 
 // ---- the common run -----------------------------------------------------------------------
@@ -184,7 +209,7 @@ struct job {
 int execute(const job& j) {
   const std::string prefix = "kin5 " + j.command + ": ";
   std::string error;
-  const auto bytes = read_bytes(j.input_path, error);
+  auto bytes = read_bytes(j.input_path, error);
   if (!bytes) {
     std::cerr << prefix << "cannot read '" << j.input_path << "': " << error << '\n';
     return exit_codes::input_error;
@@ -199,9 +224,14 @@ int execute(const job& j) {
       dialect = *guessed;
     }
   }
-  const auto input = prog::read(dialect, *bytes, display_name(j.input_path));
-  print_diagnostics(input.errors, "error");
-  print_diagnostics(input.warnings, "warning");
+  auto input = prog::read(dialect, *bytes, display_name(j.input_path));
+  bytes.reset();  // blocks keep their own text; the file's bytes are no longer needed
+  {
+    std::vector<message> messages;
+    collect(messages, input.errors, "error");
+    collect(messages, input.warnings, "warning");
+    print_in_source_order(std::move(messages));
+  }
   if (!input.ok()) {
     std::cerr << prefix << input.errors.size() << (input.errors.size() == 1 ? " error" : " errors") << " in "
               << display_name(j.input_path) << " (read as " << prog::name(dialect)
@@ -210,13 +240,18 @@ int execute(const job& j) {
   }
 
   const translation result = j.run(input.parsed);
+  input = {};  // the output program is all that is left to write
   // Unreachable blocks come as errors too (with their source angles and gap), one per report.
-  print_diagnostics(result.errors, "error");
-  print_diagnostics(result.warnings, "warning");
   std::size_t count[3] = {0, 0, 0};
-  for (const auto& r : result.reports) {
-    ++count[static_cast<int>(r.match)];
-    if (r.match == matchability::other_branch && j.verbose) std::cerr << other_branch_message(r) << '\n';
+  {
+    std::vector<message> messages;
+    collect(messages, result.errors, "error");
+    collect(messages, result.warnings, "warning");
+    for (const auto& r : result.reports) {
+      ++count[static_cast<int>(r.match)];
+      if (r.match == matchability::other_branch && j.verbose) messages.push_back({"note", other_branch_note(r)});
+    }
+    print_in_source_order(std::move(messages));
   }
   const std::size_t unreachable = count[static_cast<int>(matchability::unreachable)];
 
@@ -305,6 +340,11 @@ int run_translate(const translate_arguments& a) {
   j.verbose = a.verbose;
   translate_options options;
   options.feed = parse_feed(a.feed);
+  if (options.feed == feed_policy::inverse_time && !supports_inverse_time(j.output_dialect)) {
+    std::cerr << "kin5 translate: --feed inverse-time needs an output dialect with inverse-time feed (G93): "
+              << prog::name(j.output_dialect) << " has none; choose --to-dialect siemens or iso, or another --feed\n";
+    return exit_codes::usage;
+  }
   options.output_dialect = j.output_dialect;
   j.run = [&a, options](const prog::program& p) { return kin5::translate(a.from, a.to, p, options); };
   return execute(j);
