@@ -548,16 +548,17 @@ class line_reader {
       case 'H':
         out_.has_content = true;
         if (!is_whole(v)) return error(start, std::string("word '") + letter + "' needs a whole number");
-        b.kept_words.push_back(canonical);
+        b.kept_words.push_back(letter + std::to_string(static_cast<long long>(v)));
         return;
       default: unknown(start, "unknown word '" + canonical + "'");
     }
   }
 
-  void g_word(double v, const std::string& canonical, std::size_t start) {
+  void g_word(double v, const std::string& as_written, std::size_t start) {
     block& b = out_.b;
-    if (!is_whole(v) || v > 9999) return unknown(start, "unknown word '" + canonical + "'");
+    if (!is_whole(v) || v > 9999) return unknown(start, "unknown word '" + as_written + "'");
     const auto g = static_cast<long long>(v);
+    const std::string canonical = "G" + std::to_string(g);  // G017, G+17, G17. → G17
     out_.has_content = true;
     auto conflict = [&](bool clash, std::string_view earlier) {
       if (clash) error(start, "conflicting words '" + std::string(earlier) + "' and '" + canonical + "'");

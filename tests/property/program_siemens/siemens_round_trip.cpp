@@ -90,7 +90,8 @@ const std::vector<std::string> passthrough_pool = {
 
 void add_kept(line& l, state& s, const std::string& word) {
   l.expected.kept_words.push_back(word);
-  l.words.push_back(word[0] == 'G' || word[0] == 'D' || word[0] == 'H' ? draw_case(word.substr(0, 1)) + word.substr(1) : draw_case(word));
+  const bool numbered = word[0] == 'G' || word[0] == 'D' || word[0] == 'H';
+  l.words.push_back(numbered ? spell_code(word[0], std::stoll(word.substr(1))) : draw_case(word));
   if (word == "G17") s.plane = arc_plane::xy;
   if (word == "G18") s.plane = arc_plane::zx;
   if (word == "G19") s.plane = arc_plane::yz;
