@@ -493,7 +493,12 @@ inline read_result read(std::string_view text, std::string file_name) {
       }
       if (understood) b = std::move(m);
       else {
-        if (has_axis_word(i)) error(i, "unknown word in a block with axis words");
+        for (const word& w : ws)
+          if (!w.key.empty() && w.key.size() <= 2 && is_axis_letter(w.key.back()) && (w.key.size() == 1 || w.key[0] == 'I') &&
+              (w.value || w.expression || w.error != number_error::none)) {
+            error(w.pos, "axis word '" + w.key + "' without a motion keyword");
+            break;
+          }
         b.comment.reset();
         passthrough();
       }
