@@ -204,6 +204,33 @@ case "$name" in
     run 0 translate --from sajo-12000p --to dmu-80p --to-dialect siemens --feed inverse-time -o it.mpf "$example"
     grep -q 'G93' it.mpf || { report "no G93 in the output"; show it.mpf; }
     ;;
+  both-ways)
+    # Table 1 back again: DMU 80P -> SAJO 12000P on the translated program returns the SAJO
+    # columns (K13; spec §5: within 0.00055 deg of the table), B compared modulo 360.
+    run 0 translate --from sajo-12000p --to dmu-80p -o there.h "$example"
+    run 0 translate --from dmu-80p --to sajo-12000p -o back.mpf there.h
+    printf '%s\n' "$table1" | while read -r sx sy sz sa sb rest; do
+      l=$(line_with back.mpf X "$sx")
+      [ -n "$l" ] || { echo "no block with X=$sx" >&2; exit 1; }
+      { near "$(value "$l" Y)" "$sy" 1e-6 && near "$(value "$l" Z)" "$sz" 1e-6 &&
+        near "$(value "$l" A)" "$sa" 0.001 && near360 "$(value "$l" B)" "$sb" 0.001; } ||
+        { echo "expected X=$sx Y=$sy Z=$sz A=$sa B=$sb: $l" >&2; exit 1; }
+    done || { report "SAJO values"; show back.mpf; }
+    ;;
+  guess-dialect)
+    # A Heidenhain program given for the SAJO (whose default is siemens) is recognised by
+    # BEGIN PGM and M128, with a note, and read as Heidenhain.
+    printf '%s\n' '0 BEGIN PGM T1 MM' '1 TOOL CALL 1 Z S4000' '2 M128' \
+      '3 L X-34.983 Y+9.1 Z+118.526 A-77.954 B+3.536 F1091' \
+      '4 L X-33.824 Y+9.118 Z+117.545 A-77.913 B+4.027 F1093' \
+      '5 L X-32.674 Y+9.153 Z+116.558 A-77.918 B+4.588 F1094' \
+      '6 L X-31.531 Y+9.203 Z+115.567 A-77.963 B+5.158 F1096' '7 M129' '8 END PGM T1 MM' >t1.h
+    run 0 translate --from sajo-12000p --to dmu-80p -o t1-dmu.h t1.h
+    grep -q 'as heidenhain' err || report "no note on the recognised dialect"
+    check_table1 t1-dmu.h || { report "Table 1 values from a Heidenhain source"; show t1-dmu.h; }
+    # Told explicitly, kin5 reads it as Siemens, and fails on the Heidenhain words.
+    run 2 translate --from sajo-12000p --to dmu-80p --from-dialect siemens -o t1-dmu.h t1.h
+    ;;
   reverse)
     # NC -> CL: GOTO/x,y,z,i,j,k with (i,j,k) = (cos A sin B, -sin A, cos A cos B) (K1).
     run 0 reverse --machine sajo-12000p -o t.apt "$example"
