@@ -112,6 +112,12 @@ inline bool is_frame_keyword(std::string_view w) {
          w == "TOFRAMEY" || w == "TOFRAMEZ";
 }
 
+/// Kept words written after T rather than before the motion word: `D1`, `H2`, `T="name"`.
+/// The reader stores kept words in that order too (the others first), so writing keeps them.
+inline bool is_late_kept(std::string_view w) {
+  return (w.size() > 1 && (w[0] == 'D' || w[0] == 'H') && is_digit(w[1])) || w.rfind("T=", 0) == 0;
+}
+
 /// Splits a call's arguments at top-level commas.
 inline std::vector<std::string_view> split_args(std::string_view args) {
   std::vector<std::string_view> out;
@@ -743,6 +749,7 @@ inline void finish(line_parse& p, modal_state& state, read_result& result) {
     b = std::move(kept);
   } else {
     for (auto& d : p.unknown) p.errors.push_back(std::move(d));
+    std::stable_partition(b.kept_words.begin(), b.kept_words.end(), [](const std::string& w) { return !is_late_kept(w); });
     if (b.motion) state.motion = b.motion;
     if (p.plane) state.plane = *p.plane;
     // Checks across words only on a line whose words read cleanly: one diagnostic per problem.
@@ -867,7 +874,7 @@ constexpr std::string_view plane_word(arc_plane p) {
 
 /// Writes `p` as a Siemens 840D program, one line per block, in the order
 /// `N  TRAORI/TRAFOOF  G71  G93/G94  kept words  SUPA  G17-G19  G0-G3  X Y Z A B C  A3= B3= C3=
-/// I J K / CR=  F  S  T  M  ;comment`. Blocks read from another dialect keep their passthrough
+/// I J K / CR=  F  S  T  D H T="name"  M  ;comment`. Blocks read from another dialect keep their passthrough
 /// text and kept words in a comment. Throws `std::invalid_argument` ("file:line: reason") for a
 /// block Siemens cannot express (inch units, a rapid arc, an arc without a known start point).
 inline std::string write(const program& p, const write_options& options = {}) {
@@ -899,6 +906,7 @@ inline std::string write(const program& p, const write_options& options = {}) {
     if (b.feed_mode) detail::append_word(line, *b.feed_mode == feed_unit::inverse_time ? "G93" : "G94");
     if (same) {
       for (const auto& w : b.kept_words) {
+        if (detail::is_late_kept(w)) continue;
         detail::append_word(line, w);
         if (const auto plane = detail::plane_of(w)) written.plane = *plane;
       }
@@ -956,6 +964,10 @@ inline std::string write(const program& p, const write_options& options = {}) {
     if (b.feed) number("F", *b.feed, options.feed_decimals);
     if (b.spindle_rpm) number("S", *b.spindle_rpm, options.feed_decimals);
     if (b.tool) detail::append_word(line, "T" + std::to_string(*b.tool));
+    if (same) {
+      for (const auto& w : b.kept_words)
+        if (detail::is_late_kept(w)) detail::append_word(line, w);
+    }
     for (int m : b.m_codes) detail::append_word(line, "M" + std::to_string(m));
     if (b.program_end && std::find(b.m_codes.begin(), b.m_codes.end(), 2) == b.m_codes.end() &&
         std::find(b.m_codes.begin(), b.m_codes.end(), 30) == b.m_codes.end())

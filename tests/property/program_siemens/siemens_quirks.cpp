@@ -95,7 +95,7 @@ TEST_CASE("siemens: a whole program with header, set-up, TRAORI and end", "[siem
 }
 
 TEST_CASE("siemens: spelling quirks", "[siemens][quirks]") {
-  const auto r = read_ok("g1 x+10. y-.5 z = .25 a=+0 f=.5 t 7\rn0020G0X-450.Y2\r  N30\tg01 g017 d02 x 1\tM 03");
+  const auto r = read_ok("g1 x+10. y-.5 z = .25 a=+0 f=.5 t 7\rn0020G0X-450.Y2\r  N30\tg01 d02 g017 x 1\tM 03");
   REQUIRE(r.parsed.blocks.size() == 3);
   const block& a = r.parsed.blocks[0];
   CHECK(a.motion == motion_kind::linear);
@@ -113,7 +113,7 @@ TEST_CASE("siemens: spelling quirks", "[siemens][quirks]") {
   CHECK(b.axes.y_mm == 2);
   const block& c = r.parsed.blocks[2];
   CHECK(c.where == source_location{"q.mpf", 3, 3});
-  CHECK(c.text == "  N30\tg01 g017 d02 x 1\tM 03");
+  CHECK(c.text == "  N30\tg01 d02 g017 x 1\tM 03");
   CHECK(c.kept_words == std::vector<std::string>{"G17", "D2"});
   CHECK(c.number == 30);
   CHECK(c.axes.x_mm == 1);

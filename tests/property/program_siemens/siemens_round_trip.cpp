@@ -2,6 +2,7 @@
 // drawn together with the block it must read as (the independent expectation): words in random
 // case, with or without blanks, `X=` assignments, `+` signs, trailing and leading dots,
 // comments of either kind, and LF / CRLF / CR line endings.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -309,6 +310,11 @@ drawn_program draw_program() {
   std::string ending;
   for (int i = 0; i < n; ++i) {
     line l = draw_line(s);
+    // D, H and T="name" are read after the other kept words (the order the writer uses).
+    auto& kept = l.expected.kept_words;
+    std::stable_partition(kept.begin(), kept.end(), [](const std::string& w) {
+      return !(w[0] == 'D' || w[0] == 'H' || w.rfind("T=", 0) == 0);
+    });
     const std::string text = l.verbatim ? *l.verbatim : join(l.words);
     if (ending != "\r" && *rc::gen::inRange(0, 8) == 0) d.text += "\n", ++line_number;  // an empty line, skipped
     ++line_number;
