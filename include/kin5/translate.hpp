@@ -518,6 +518,11 @@ void write_nc(const program::program& in, const std::vector<source_step>& steps,
         }
         o.arc->plane = mapped->first;
         o.arc->centre_mm = target_T_source.map_point(*b.arc->centre_mm);
+        if (language != program::dialect::heidenhain) {  // G2/G3 carry their own centre: keep a note
+          const vec3 c = *o.arc->centre_mm;
+          if (!o.comment) o.comment = "circle centre X" + fixed(c.x, 3) + " Y" + fixed(c.y, 3) + " Z" + fixed(c.z, 3);
+          o.arc.reset();
+        }
       }
       if (policy == feed_policy::inverse_time && b.feed_mode != program::feed_unit::inverse_time) {
         o.feed.reset();

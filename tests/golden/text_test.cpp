@@ -93,3 +93,89 @@ TEST_CASE("machine-coordinate moves pass through unchanged with a warning and co
   CHECK(*t.output.blocks[5].axes.z_mm == 0.0);
   REQUIRE(t.reports.size() == 2);
 }
+
+TEST_CASE("Heidenhain CC and C on the DMU 80P become a G18 arc on the SAJO") {
+  // DMU: B = 90°, C = 0 gives u_d = (1/√2, 1/2, 1/2) (spec §9.5). T u_d = (−1/√2, 1/2, 1/2) on the
+  // SAJO: −sin A = 1/2, so A = −30°, and B = atan2(−1/√2, 1/2) = −54.735610° (K2).
+  // Arc: XY plane on the DMU, normal Z_d, T Z_d = +Y_s: G18 on the SAJO, direction kept.
+  const char* h =
+      "0 BEGIN PGM ARC MM\n"
+      "1 L X+10 Y+0 Z+5 B+90 C+0 R0 F500 M128\n"
+      "2 CC X+0 Y+0\n"
+      "3 C X+0 Y+10 DR+\n"
+      "4 END PGM ARC MM\n";
+  const auto in = heidenhain::read(h, "arc.h");
+  REQUIRE(in.ok());
+  const auto t = kin5::translate<dmu_80p, sajo_12000p>(
+      in.parsed, kin5::test::options(kin5::feed_policy::tcp, kin5::program::dialect::siemens));
+  REQUIRE(t.ok());
+  CHECK(t.blocks_written == t.blocks_read);
+  const kin5::program::block* line = nullptr;
+  const kin5::program::block* arc = nullptr;
+  for (const auto& b : t.output.blocks) {
+    if (b.moves() && !b.arc) line = &b;
+    if (b.moves() && b.arc) arc = &b;
+  }
+  REQUIRE(line);
+  REQUIRE(arc);
+  CHECK(std::abs(*line->axes.a_deg - -30.0) <= 1e-9);
+  CHECK(std::abs(*line->axes.b_deg - -54.735610) <= 1e-6);
+  CHECK(std::abs(*line->axes.x_mm - -10.0) <= 1e-12);
+  CHECK(std::abs(*line->axes.y_mm - 5.0) <= 1e-12);
+  CHECK(std::abs(*line->axes.z_mm - 0.0) <= 1e-12);
+  CHECK(arc->motion == kin5::program::motion_kind::arc_ccw);
+  CHECK(arc->arc->plane == kin5::program::arc_plane::zx);
+  CHECK(kin5::norm(*arc->arc->centre_mm - kin5::vec3{0, 5, 0}) <= 1e-12);
+  CHECK(std::abs(*arc->axes.x_mm - 0.0) <= 1e-12);
+  CHECK(std::abs(*arc->axes.z_mm - 10.0) <= 1e-12);
+  const std::string text = siemens::write(t.output);
+  CAPTURE(text);
+  CHECK(text.find("G18 G3 X0 Z10 I10 K0") != std::string::npos);  // centre − start = (10, ·, 0)
+}
+
+TEST_CASE("post switches TCP on in the first motion block and off at the program end") {
+  kin5::program::program cl;
+  cl.language = kin5::program::dialect::apt;
+  cl.file = "p.cl";
+  for (int k = 0; k < 3; ++k) {
+    kin5::program::block b;
+    b.where = {cl.file, static_cast<std::size_t>(k + 1), 1};
+    if (k < 2) {
+      b.motion = kin5::program::motion_kind::linear;
+      b.axes.x_mm = k, b.axes.y_mm = 0.0, b.axes.z_mm = 10.0;
+      b.axes.tool_axis = kin5::vec3{0.0, 0.6, 0.8};
+      b.feed = 300.0;
+    } else {
+      b.program_end = "FINI";
+    }
+    cl.blocks.push_back(b);
+  }
+  const auto t = kin5::post<dmu_80p>(cl, kin5::program::dialect::heidenhain);
+  REQUIRE(t.ok());
+  REQUIRE(t.output.blocks.size() == 3);
+  CHECK(t.output.blocks[0].tcp == true);
+  CHECK_FALSE(t.output.blocks[1].tcp.has_value());
+  CHECK(t.output.blocks[2].tcp == false);
+  // u = (0, 0.6, 0.8) on the DMU 80P: (K7) B = arccos(2k − 1) = arccos(0.6) = 53.130102°.
+  CHECK(std::abs(*t.output.blocks[0].axes.b_deg - 53.130102354) <= 1e-6);
+  CHECK(kin5::norm(kin5::tool_axis<dmu_80p>({kin5::to_radians(kin5::degrees{*t.output.blocks[0].axes.c_deg}),
+                                             kin5::to_radians(kin5::degrees{*t.output.blocks[0].axes.b_deg})}) -
+                   kin5::vec3{0.0, 0.6, 0.8}) <= 1e-12);
+}
+
+TEST_CASE("run-time dispatch by catalog id matches the template, unknown ids are errors") {
+  const auto in = siemens::read(table1_mpf, "table1.mpf");
+  REQUIRE(in.ok());
+  const auto options = kin5::test::options();
+  const auto by_type = kin5::translate<sajo_12000p, dmu_80p>(in.parsed, options);
+  const auto by_id = kin5::translate("sajo-12000p", "dmu-80p", in.parsed, options);
+  REQUIRE(by_id.ok());
+  CHECK(heidenhain::write(by_id.output) == heidenhain::write(by_type.output));
+  const auto unknown = kin5::translate("sajo-12000p", "no-such-machine", in.parsed, options);
+  REQUIRE(unknown.errors.size() == 1);
+  CHECK(unknown.errors[0].message.find("unknown machine 'no-such-machine'") != std::string::npos);
+  CHECK(unknown.errors[0].message.find("dmu-80p") != std::string::npos);  // lists the known ids
+  CHECK_FALSE(kin5::reverse("nope", in.parsed).ok());
+  CHECK_FALSE(kin5::post("nope", in.parsed, kin5::program::dialect::iso).ok());
+  CHECK(kin5::reverse("sajo-12000p", in.parsed).ok());
+}
