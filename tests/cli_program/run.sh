@@ -175,8 +175,10 @@ case "$name" in
     run 2 translate --from sajo-12000p --to dmu-80p -o new.h missing.mpf
     [ -e new.h ] && report "exit 2 created new.h"
     [ "$(ls -A | grep -c kin5)" = 0 ] || report "temporary files left: $(ls -A)"
+    chmod 640 out.h
     run 0 translate --from sajo-12000p --to dmu-80p -o out.h "$example"
     check_table1 out.h || report "out.h not replaced on success"
+    [ "$(stat -c %a out.h)" = 640 ] || report "out.h lost its permissions: $(stat -c %a out.h)"
     [ "$(ls -A | grep -c kin5)" = 0 ] || report "temporary files left: $(ls -A)"
     ;;
   missing-input)
@@ -192,6 +194,7 @@ case "$name" in
     grep -q "unknown machine 'no-such-machine'" err || report "unknown machine message"
     run 1 translate --from sajo-12000p --to dmu-80p --feed fast "$example"
     run 1 translate --from sajo-12000p --to dmu-80p --to-dialect fanuc "$example"
+    run 1 translate --from sajo-12000p --to dmu-80p --to-dialect apt "$example"
     run 1 translate --from sajo-12000p "$example"
     run 1 translate --from sajo-12000p --to dmu-80p
     run 1 post --machine dmu-80p --dialect klingon "$examples/cl-path.apt"

@@ -45,7 +45,8 @@ namespace {
 
 namespace prog = kin5::program;
 
-constexpr const char* dialect_names[] = {"siemens", "heidenhain", "iso", "apt"};
+/// The NC dialects: every dialect but APT CL data, which `translate` neither reads nor writes.
+constexpr const char* nc_dialect_names[] = {"siemens", "heidenhain", "iso"};
 
 // ---- files --------------------------------------------------------------------------------
 
@@ -381,24 +382,32 @@ int run_post(const machine_arguments& a) {
   return execute(j);
 }
 
+/// The help footer's table of default dialects, one machine per line.
 std::string default_dialect_table() {
-  std::string out = "Default dialects (--*dialect overrides):";
+  std::size_t width = 0;
+  for (auto id : machine_ids()) width = std::max(width, id.size());
+  std::string out =
+      "Dialects: the option's, else (input only) the one recognised from markers such as BEGIN PGM\n"
+      "or TRAORI, else the machine's default:";
   for (auto id : machine_ids()) {
     const auto d = prog::default_dialect(id);
-    out += "\n  " + std::string(id) + " " + std::string(d ? prog::name(*d) : "siemens");
+    std::string line(id);
+    line.resize(width + 2, ' ');
+    out += "\n  " + line + std::string(d ? prog::name(*d) : "siemens");
   }
   return out;
 }
 
 const char* exit_code_footer =
-    "\nExit codes: 0 written; 1 bad arguments; 2 the input cannot be read or has errors (all listed as\n"
+    "\n\nExit codes: 0 written; 1 bad arguments; 2 the input cannot be read or has errors (all listed as\n"
     "FILE:LINE:COL: error: ...), or the output cannot be written; 3 blocks unreachable on the target\n"
     "(each listed with its source angles and gap). On a non-zero exit OUT is not created or changed.\n";
 
 }  // namespace
 
 void add_program_commands(CLI::App& app, int& exit_code) {
-  const auto dialects = CLI::IsMember(std::vector<std::string>(std::begin(dialect_names), std::end(dialect_names)));
+  const auto dialects =
+      CLI::IsMember(std::vector<std::string>(std::begin(nc_dialect_names), std::end(nc_dialect_names)));
 
   {
     auto a = std::make_shared<translate_arguments>();
@@ -406,8 +415,8 @@ void add_program_commands(CLI::App& app, int& exit_code) {
     sub->add_option("--from", a->from, "Machine the program was written for (see `kin5 machines`)")->required();
     sub->add_option("--to", a->to, "Machine to write the program for")->required();
     sub->add_option("--feed", a->feed,
-                    "Feed policy: tcp keeps F (tool-tip speed, right for TRAORI/M128 programs); block-time keeps "
-                    "each block's time, the paper's eq 23; inverse-time writes G93-style 1/min")
+                    "tcp: F kept (tool-tip speed; right for TRAORI/M128/G43.4 programs); block-time: F scaled "
+                    "to keep each block's time, the paper's eq 23; inverse-time: G93, F = 1/block time")
         ->check(CLI::IsMember({"block-time", "tcp", "inverse-time"}))
         ->capture_default_str();
     sub->add_option("--from-dialect", a->from_dialect, "Dialect of IN (default: the --from machine's)")
