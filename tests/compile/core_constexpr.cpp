@@ -1,0 +1,116 @@
+// Compile-time proof of the core: <kin5/kin5.hpp> with the standard library alone, forward and
+// inverse kinematics in constant expressions (spec §5 Table 1 row 1, §9.5), the machine concept
+// rejecting a degenerate machine (spec S1), and the constexpr maths against known constants.
+#if __has_include(<Eigen/Core>)
+#error "core_constexpr must build without Eigen on the include path"
+#endif
+
+#include <kin5/kin5.hpp>
+
+namespace {
+
+using namespace kin5;
+using namespace kin5::literals;
+using machines::dmu_80p;
+using machines::sajo_12000p;
+
+constexpr bool near(double a, double b, double tol) { return math::abs(a - b) <= tol; }
+constexpr bool near(const vec3& a, const vec3& b, double tol) {
+  return near(a.x, b.x, tol) && near(a.y, b.y, tol) && near(a.z, b.z, tol);
+}
+constexpr double deg(radians r) { return to_degrees(r).value; }
+
+// --- constexpr maths against known constants --------------------------------------------
+static_assert(near(math::sin(pi / 6), 0.5, 2.3e-16));
+static_assert(near(math::cos(pi / 3), 0.5, 2.3e-16));
+static_assert(math::sin(0.0) == 0.0 && math::cos(0.0) == 1.0);
+static_assert(near(math::sqrt(2.0), 1.4142135623730951, 2.3e-16));
+static_assert(math::sqrt(4.0) == 2.0);
+static_assert(near(math::atan2(1.0, 1.0), 0.78539816339744831, 1.2e-16));
+static_assert(math::atan2(0.0, -1.0) == pi && math::atan2(-1.0, 0.0) == -pi / 2);
+static_assert(math::asin(1.0) == pi / 2 && math::acos(-1.0) == pi);
+static_assert(near(math::acos(0.5), pi / 3, 3e-16));
+static_assert(math::wrap_pi(-pi) == pi && math::wrap_pi(3 * pi) == pi);
+static_assert(near(math::wrap_pi(7.0), 7.0 - 2 * pi, 1e-15));
+static_assert(near(math::sin(1e6), -0.34999350217129294, 1e-9));  // huge argument, reduced
+
+// --- forward kinematics (spec §9.5 golden values) ---------------------------------------
+constexpr double h = 0.70710678118654752;
+// rotary order is workpiece → tool: dmu-80p lists {C, B}; sajo lists {B, A}.
+static_assert(near(tool_axis<dmu_80p>({to_radians(0_deg), to_radians(90_deg)}), vec3{h, 0.5, 0.5}, 1e-15));
+static_assert(near(tool_axis<dmu_80p>({to_radians(0_deg), to_radians(180_deg)}), vec3{0, 1, 0}, 1e-15));
+static_assert(near(tool_axis<dmu_80p>({to_radians(45_deg), to_radians(60_deg)}),
+                   vec3{0.256236007, 0.609789397, 0.75}, 1e-9));
+static_assert(near(tool_axis<sajo_12000p>({to_radians(30_deg), to_radians(-45_deg)}),
+                   vec3{0.353553391, 0.707106781, 0.612372436}, 1e-9));
+static_assert(near(tool_axis<machines::ac_trunnion>({to_radians(121_deg), to_radians(37_deg)}),
+                   vec3{0.515856159, -0.309957651, 0.798635510}, 1e-9));
+
+// --- Table 1 row 1 (spec §5): sajo (A, B) = (−77.954°, 3.536°) → T·u_s → dmu-80p -------
+constexpr vec3 u_s = tool_axis<sajo_12000p>({to_radians(3.536_deg), to_radians(-77.954_deg)});
+constexpr vec3 u_d{-u_s.x, u_s.z, u_s.y};  // (K11): T = [[-1,0,0],[0,0,1],[0,1,0]]
+constexpr auto row1 = inverse<dmu_80p>(u_d);
+static_assert(row1.status == reach_status::reachable);
+constexpr auto row1_angles = *row1.first_within_travel();
+static_assert(near(deg(row1_angles[1]), 17.067290, 1e-5), "B_d of Table 1 row 1");
+static_assert(near(deg(row1_angles[0]), 87.479443, 1e-5), "C_d of Table 1 row 1");
+static_assert(near(tool_axis<dmu_80p>(row1_angles), u_d, 1e-14));
+
+// The flip region (spec §9.5): sajo (−100°, 20°) needs C_d = 284.980852° ≡ −75.019148°.
+constexpr vec3 flip_s = tool_axis<sajo_12000p>({to_radians(20_deg), to_radians(-100_deg)});
+constexpr auto flip = inverse<dmu_80p>(vec3{-flip_s.x, flip_s.z, flip_s.y});
+static_assert(near(deg((*flip.first_within_travel())[1]), 14.160202, 1e-5));
+static_assert(near(deg((*flip.first_within_travel())[0]), 284.980852 - 360.0, 1e-5));
+
+// Unreachable (spec P7, P14): sajo A = +20° maps below the dmu-80p horizon, gap 20°.
+constexpr vec3 up_s = tool_axis<sajo_12000p>({to_radians(10_deg), to_radians(20_deg)});
+constexpr auto up = inverse<dmu_80p>(vec3{-up_s.x, up_s.z, up_s.y});
+static_assert(up.status == reach_status::unreachable && near(deg(up.gap), 20.0, 1e-9));
+
+// Seed 003 golden value (spec §9.5): u = (−1, 1, 1)/√3 → (B, C) = (81.100571°, 166.173952°).
+constexpr auto s003 = inverse<machines::dmu_50v>(normalized(vec3{-1, 1, 1}));
+static_assert(near(deg((*s003.first_within_travel())[1]), 81.100571, 1e-5));
+static_assert(near(deg((*s003.first_within_travel())[0]), 166.173952, 1e-5));
+
+// Branch choice in a constant expression.
+static_assert(nearest_within_travel<dmu_80p>(row1, {to_radians(80_deg), to_radians(10_deg)}).has_value());
+
+// --- the machine concept ------------------------------------------------------------------
+static_assert(machine<dmu_80p> && machine<sajo_12000p> && machine<machines::a_rotary_4axis>);
+
+/// S1: the carried axis is parallel to the fixed one, so it cannot change the tool direction.
+struct q_parallel_p {
+  static constexpr std::string_view id = "q-parallel-p";
+  static constexpr std::string_view structure = "degenerate: two tables about +Z";
+  static constexpr vec3 tool_reference = unit_x;
+  static constexpr std::array rotary{
+      rotary_axis{axis_letter::C, mount::table, unit_z, angle_sense::tool_relative, rotary_travel::endless()},
+      rotary_axis{axis_letter::A, mount::table, unit_z, angle_sense::tool_relative, rotary_travel::endless()}};
+};
+static_assert(machine_description<q_parallel_p> && !machine<q_parallel_p>);
+
+/// S1: the carried axis is parallel to the tool.
+struct q_parallel_t {
+  static constexpr std::string_view id = "q-parallel-t";
+  static constexpr std::string_view structure = "degenerate: head about the tool axis";
+  static constexpr vec3 tool_reference = unit_z;
+  static constexpr std::array rotary{
+      rotary_axis{axis_letter::B, mount::table, unit_y, angle_sense::tool_relative, rotary_travel::endless()},
+      rotary_axis{axis_letter::C, mount::head, unit_z, angle_sense::tool_relative, rotary_travel::endless()}};
+};
+static_assert(!machine<q_parallel_t>);
+
+/// Not a unit direction.
+struct long_axis {
+  static constexpr std::string_view id = "long-axis";
+  static constexpr std::string_view structure = "invalid: direction of length 2";
+  static constexpr vec3 tool_reference = unit_z;
+  static constexpr std::array rotary{
+      rotary_axis{axis_letter::C, mount::table, vec3{0, 0, 2}, angle_sense::tool_relative, rotary_travel::endless()},
+      rotary_axis{axis_letter::A, mount::head, unit_x, angle_sense::tool_relative, rotary_travel::endless()}};
+};
+static_assert(!machine<long_axis>);
+
+}  // namespace
+
+int main() { return 0; }
