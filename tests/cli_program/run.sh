@@ -101,6 +101,15 @@ case "$name" in
     run 0 translate --from sajo-12000p --to dmu-80p --feed block-time -o bt.h "$example"
     check_table1 bt.h "1091 1089.25 1094.48 1102.02" || { report "block-time feeds"; show bt.h; }
     ;;
+  crlf)
+    # Read as bytes: the example with CRLF line ends gives the same motion.
+    run 0 translate --from sajo-12000p --to dmu-80p -o lf.h "$example"
+    awk '{ printf "%s\r\n", $0 }' "$example" >crlf.mpf
+    run 0 translate --from sajo-12000p --to dmu-80p -o crlf.h crlf.mpf
+    check_table1 crlf.h || { report "Table 1 values from CRLF input"; show crlf.h; }
+    words lf.h >a; words crlf.h >b
+    cmp -s a b || report "CRLF and LF inputs give different motion"
+    ;;
   stdin-stdout)
     # '-' in and out: the same program as file to file.
     run 0 translate --from sajo-12000p --to dmu-80p -o file.h "$example"
