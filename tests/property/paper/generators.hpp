@@ -91,9 +91,10 @@ inline constexpr double deg = M_PI / 180.0;
 
 /// Tolerance in degrees for an angle recovered by a formula whose conditioning degrades as
 /// `distance_rad` (the distance to its pole or reach limit) shrinks: an argument rounded by
-/// 1e-16 near ±1 of arccos/arcsin moves the angle by about 1e-16/distance radians.
+/// ~1e-16 near ±1 of arccos/arcsin, or an azimuth about a pole at that distance, is fixed only
+/// to about 1e-16/distance radians. 2e-13 degrees = 3.5e-15 radians leaves a factor ~16.
 inline double conditioned_tol_deg(double distance_rad, double base_deg = 1e-9) {
-  return base_deg + 5e-14 / distance_rad;
+  return base_deg + 2e-13 / distance_rad;
 }
 
 /// Independent oracle: R(n, θ) from Eigen's angle-axis, θ in degrees.

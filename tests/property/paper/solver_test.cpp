@@ -64,7 +64,7 @@ TEST_CASE("P25 sajo-12000p: the solver gives [000:6-7] (K2) and its second branc
                                    paper_test::near_direction(-kin5::unit_y, 0.1));
     const double off_pole = std::hypot(u.x, u.z);
     RC_PRE(off_pole > 1e-9);
-    const double tol = 1e-9 + 1e-14 / off_pole;
+    const double tol = 1e-9 + 2e-13 / off_pole;
     const auto k2 = tian::k2_inverse(u);
     const auto k3 = tian::k3_second_branch(k2);
     const auto r = kin5::inverse<km::sajo_12000p>(u);
@@ -86,9 +86,15 @@ TEST_CASE("P25 dmu-80p: the solver gives [000:10-13] (K7)-(K9)", "[paper][solver
     RC_ASSERT(seed.has_value());
     const auto r = kin5::inverse<km::dmu_80p>(u);
     RC_ASSERT(r.reachable());
+    // At the reach limit k -> 0 (S3) B and C are square-root conditioned: the solver works from
+    // theta = angle(p, u), which cannot resolve k below ~1e-16, i.e. ~1e-8 rad in B. There the
+    // angles are compared loosely and every solution must still reproduce u.
+    const bool at_limit = u.z < 1e-6;
     bool within = false;
-    RC_ASSERT(has_solution<km::dmu_80p>(r, {seed->c_deg, seed->b_deg}, 1e-9 + 1e-14 / off_pole, &within));
+    RC_ASSERT(has_solution<km::dmu_80p>(r, {seed->c_deg, seed->b_deg}, 1e-9 + 2e-13 / off_pole + (at_limit ? 1e-5 : 0.0), &within));
     RC_ASSERT(within);
+    for (const auto& s : r)
+      if (s.within_travel) RC_ASSERT(max_abs_diff(kin5::tool_axis<km::dmu_80p>(s.angles), u) < 1e-12);
   });
 }
 
@@ -121,7 +127,7 @@ TEST_CASE("P25 ac-trunnion: the solver gives both branches of (K19)", "[paper][s
                                    paper_test::near_direction(-kin5::unit_z, 0.1));
     const double off_pole = std::hypot(u.x, u.y);
     RC_PRE(off_pole > 1e-9);
-    const double tol = 1e-9 + 1e-14 / off_pole;
+    const double tol = 1e-9 + 2e-13 / off_pole;
     const auto r = kin5::inverse<km::ac_trunnion>(u);
     for (const auto& s : ji::k19_inverse(u)) {
       bool within = false;
@@ -139,7 +145,7 @@ TEST_CASE("P25 dmu-50v: the solver gives [003:3] (K23) and corrected [003:5] (K2
     const double off_pole = std::hypot(u.x, u.y);
     RC_PRE(off_pole > 1e-9);
     // [003:3] is an arccos: precise to about 1e-8 rad / sqrt(distance to its ends).
-    const double tol = 1e-9 + 1e-14 / off_pole + 1e-5 * (u.z < 1e-6 || u.z > 0.999);
+    const double tol = 1e-9 + 2e-13 / off_pole + 1e-5 * (u.z < 1e-6 || u.z > 0.999);
     const auto r = kin5::inverse<km::dmu_50v>(u);
     bool within = false;
     RC_ASSERT(has_solution<km::dmu_50v>(r, {liu::k24_c_deg(u), liu::eq3_b_deg(u.z)}, tol, &within));
