@@ -121,6 +121,10 @@ case "$name" in
     "$exe" translate --from sajo-12000p --to dmu-80p -o - "$example" >dash.h 2>err
     words dash.h >c
     cmp -s a c || report "-o - differs from -o file"
+    # Errors in stdin are named <stdin>.
+    printf 'N10 TRAORI\nN20 G91 X1\n' | "$exe" translate --from sajo-12000p --to dmu-80p - >out 2>err
+    [ $? = 2 ] || report "bad stdin: exit code"
+    grep -q '^<stdin>:2:5: error: ' err || { report "bad stdin: no <stdin>:2:5 error"; show err; }
     ;;
   summary)
     # The example has 23 lines, one block each; 6 of them move (the approach, the four rows
