@@ -59,13 +59,16 @@ constexpr double cos_reduced(double r) {
   return sum;
 }
 
-// x = k·pi/2 + r with |r| <= pi/4 (Cody–Waite: pi/2 split into two doubles).
+// x = k·pi/2 + r with |r| <= pi/4 (Cody–Waite: pi/2 split into three parts of 33 significant
+// bits, so each k·part is exact and r keeps full precision for |k| < 2^20, |x| < 1.6e6).
 struct reduced { double r; long long quadrant; };
 constexpr reduced reduce_half_pi(double x) {
-  constexpr double half_pi_hi = 1.5707963267948966;
-  constexpr double half_pi_lo = 6.123233995736766e-17;
-  const double k = round_half_away(x / half_pi_hi);
-  const double r = (x - k * half_pi_hi) - k * half_pi_lo;
+  constexpr double half_pi_1 = 1.57079632673412561417e+00;
+  constexpr double half_pi_2 = 6.07710050630396597660e-11;
+  constexpr double half_pi_3 = 2.02226624871116645580e-21;
+  constexpr double half_pi_3_tail = 8.47842766036889956997e-32;
+  const double k = round_half_away(x / 1.5707963267948966);
+  const double r = (((x - k * half_pi_1) - k * half_pi_2) - k * half_pi_3) - k * half_pi_3_tail;
   auto q = static_cast<long long>(k) % 4;
   if (q < 0) q += 4;
   return {r, q};
