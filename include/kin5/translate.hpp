@@ -236,7 +236,7 @@ rotary_path<M> plan_rotary_path(std::span<const vec3> tool_axes) {
 
 // ---------------------------------------------------------------------------------------------
 
-namespace detail {
+namespace translate_detail {
 
 inline std::string fixed(double v, int decimals) {
   char buf[64];
@@ -695,28 +695,28 @@ inline program::diagnostic file_error(const program::program& in, std::string me
   return {program::source_location{in.file, 0, 0}, std::move(message)};
 }
 
-}  // namespace detail
+}  // namespace translate_detail
 
 /// Translates NC program `nc` of machine From into one for machine To (see the file comment).
 /// The source must run with tool-tip tracking; `options.output_dialect` must be an NC dialect.
 template <machine From, machine To>
 translation translate(const program::program& nc, const translate_options& options = {}) {
-  translation out = detail::start(nc, options.output_dialect);
+  translation out = translate_detail::start(nc, options.output_dialect);
   if (nc.language == program::dialect::apt) {
-    out.errors.push_back(detail::file_error(nc, "APT CL data names no machine axes: use post, not translate"));
+    out.errors.push_back(translate_detail::file_error(nc, "APT CL data names no machine axes: use post, not translate"));
     return out;
   }
   if (options.output_dialect == program::dialect::apt) {
-    out.errors.push_back(detail::file_error(nc, "translate writes NC; for APT CL data use reverse"));
+    out.errors.push_back(translate_detail::file_error(nc, "translate writes NC; for APT CL data use reverse"));
     return out;
   }
   if (options.feed == feed_policy::inverse_time && !supports_inverse_time(options.output_dialect)) {
-    out.errors.push_back(detail::file_error(nc, "inverse-time feed (G93) cannot be written in " +
+    out.errors.push_back(translate_detail::file_error(nc, "inverse-time feed (G93) cannot be written in " +
                                                     std::string(program::name(options.output_dialect))));
     return out;
   }
-  const auto steps = detail::read_source<detail::nc_source<From>>(nc, out);
-  detail::write_nc<To>(nc, steps, options.setup.value_or(default_setup<From, To>()), options.feed,
+  const auto steps = translate_detail::read_source<translate_detail::nc_source<From>>(nc, out);
+  translate_detail::write_nc<To>(nc, steps, options.setup.value_or(default_setup<From, To>()), options.feed,
                                                 options.output_dialect, false, out);
   return out;
 }
@@ -726,13 +726,13 @@ translation translate(const program::program& nc, const translate_options& optio
 /// Circular moves are errors (CL data here is GOTO points only).
 template <machine M>
 translation reverse(const program::program& nc) {
-  translation out = detail::start(nc, program::dialect::apt);
+  translation out = translate_detail::start(nc, program::dialect::apt);
   if (nc.language == program::dialect::apt) {
-    out.errors.push_back(detail::file_error(nc, "the input is already APT CL data"));
+    out.errors.push_back(translate_detail::file_error(nc, "the input is already APT CL data"));
     return out;
   }
-  const auto steps = detail::read_source<detail::nc_source<M>>(nc, out);
-  detail::write_cl(nc, steps, out);
+  const auto steps = translate_detail::read_source<translate_detail::nc_source<M>>(nc, out);
+  translate_detail::write_cl(nc, steps, out);
   return out;
 }
 
@@ -742,17 +742,17 @@ translation reverse(const program::program& nc) {
 /// spells it) and off again in the program-end block.
 template <machine M>
 translation post(const program::program& cl, program::dialect out_dialect) {
-  translation out = detail::start(cl, out_dialect);
+  translation out = translate_detail::start(cl, out_dialect);
   if (out_dialect == program::dialect::apt) {
-    out.errors.push_back(detail::file_error(cl, "post writes NC: choose siemens, heidenhain or iso"));
+    out.errors.push_back(translate_detail::file_error(cl, "post writes NC: choose siemens, heidenhain or iso"));
     return out;
   }
-  const auto steps = detail::read_source<detail::cl_source>(cl, out);
-  detail::write_nc<M>(cl, steps, rigid_transform::identity(), feed_policy::tcp, out_dialect, true, out);
+  const auto steps = translate_detail::read_source<translate_detail::cl_source>(cl, out);
+  translate_detail::write_nc<M>(cl, steps, rigid_transform::identity(), feed_policy::tcp, out_dialect, true, out);
   return out;
 }
 
-namespace detail {
+namespace translate_detail {
 inline std::string catalog_ids() {
   std::string ids;
   machines::for_each_machine([&]<class M>() { ids += (ids.empty() ? "" : ", ") + std::string(M::id); });
@@ -763,7 +763,7 @@ inline translation unknown_machine(const program::program& in, program::dialect 
   out.errors.push_back(file_error(in, "unknown machine '" + std::string(id) + "'; known: " + catalog_ids()));
   return out;
 }
-}  // namespace detail
+}  // namespace translate_detail
 
 /// `translate<From, To>` for catalog ids; an error for an unknown id.
 inline translation translate(std::string_view from_id, std::string_view to_id, const program::program& nc,
@@ -778,7 +778,7 @@ inline translation translate(std::string_view from_id, std::string_view to_id, c
     });
   });
   if (out) return std::move(*out);
-  return detail::unknown_machine(nc, options.output_dialect, from_known ? to_id : from_id);
+  return translate_detail::unknown_machine(nc, options.output_dialect, from_known ? to_id : from_id);
 }
 
 /// `reverse<M>` for a catalog id; an error for an unknown id.
@@ -788,7 +788,7 @@ inline translation reverse(std::string_view machine_id, const program::program& 
     if (M::id == machine_id) out = reverse<M>(nc);
   });
   if (out) return std::move(*out);
-  return detail::unknown_machine(nc, program::dialect::apt, machine_id);
+  return translate_detail::unknown_machine(nc, program::dialect::apt, machine_id);
 }
 
 /// `post<M>` for a catalog id; an error for an unknown id.
@@ -798,7 +798,7 @@ inline translation post(std::string_view machine_id, const program::program& cl,
     if (M::id == machine_id) out = post<M>(cl, out_dialect);
   });
   if (out) return std::move(*out);
-  return detail::unknown_machine(cl, out_dialect, machine_id);
+  return translate_detail::unknown_machine(cl, out_dialect, machine_id);
 }
 
 }  // namespace kin5

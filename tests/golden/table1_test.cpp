@@ -186,3 +186,20 @@ TEST_CASE("spec 9.5 golden values, one block each") {
     CHECK(t.reports.at(0).match == (v.a < -90 ? kin5::matchability::other_branch : kin5::matchability::direct));
   }
 }
+
+TEST_CASE("a source program in inverse time (G93) keeps its F, and needs a dialect with G93") {
+  auto p = sajo_program();
+  p.blocks[1].feed_mode = kin5::program::feed_unit::inverse_time;
+  for (std::size_t k = 1; k <= 4; ++k) p.blocks[k].feed = 10.0 * static_cast<double>(k);
+  for (auto policy : {kin5::feed_policy::tcp, kin5::feed_policy::block_time, kin5::feed_policy::inverse_time}) {
+    const auto t = kin5::translate<sajo_12000p, dmu_80p>(p, kin5::test::options(policy, dialect::iso));
+    REQUIRE(t.ok());
+    const auto m = motions(t.output);
+    REQUIRE(m.size() == 4);
+    CHECK(m[0]->feed_mode == kin5::program::feed_unit::inverse_time);
+    for (std::size_t k = 0; k < 4; ++k) CHECK(m[k]->feed == 10.0 * static_cast<double>(k + 1));
+  }
+  const auto refused = kin5::translate<sajo_12000p, dmu_80p>(p, kin5::test::options());  // Heidenhain: no G93
+  REQUIRE(refused.errors.size() == 1);
+  CHECK(refused.errors[0].where.line == 2);
+}
