@@ -128,16 +128,16 @@ std::vector<std::vector<rotary_candidate<M>>> rotary_candidates(std::span<const 
     at_pole[k] = r.status == reach_status::pole;
     if (!at_pole[k]) add(out[k], r, false);
   }
+  // The nearest reachable non-pole block before and after each block (n: none), in O(n).
+  std::vector<std::size_t> before(n, n), after(n, n);
+  for (std::size_t k = 1; k < n; ++k) before[k] = (!at_pole[k - 1] && !out[k - 1].empty()) ? k - 1 : before[k - 1];
+  for (std::size_t k = n - 1; k-- > 0;) after[k] = (!at_pole[k + 1] && !out[k + 1].empty()) ? k + 1 : after[k + 1];
   for (std::size_t k = 0; k < n; ++k) {
     if (!at_pole[k]) continue;
     std::vector<radians> free_angles;
-    auto take_from = [&](std::size_t j) {
-      for (const auto& c : out[j]) free_angles.push_back(c.angles[0]);
-    };
-    for (std::size_t j = k; j-- > 0;)
-      if (!at_pole[j] && !out[j].empty()) { take_from(j); break; }
-    for (std::size_t j = k + 1; j < n; ++j)
-      if (!at_pole[j] && !out[j].empty()) { take_from(j); break; }
+    for (std::size_t j : {before[k], after[k]})
+      if (j < n)
+        for (const auto& c : out[j]) free_angles.push_back(c.angles[0]);
     if (free_angles.empty()) free_angles.push_back(radians{0.0});
     for (radians p : free_angles) {
       inverse_options options{};
