@@ -140,6 +140,17 @@ TEMPLATE_LIST_TEST_CASE("FK∘IK = id and IK∘FK contains the generating angles
       RC_ASSERT(distance(oracle<M>(s.angles), u) <= tol + clamp_tol);
     }
   });
+  rc::prop("near and at the poles ±p (1e-12..1e-3 rad): every listed solution reproduces u", [] {
+    const vec3 u = *test::near_axis(M::rotary[0].direction);
+    const auto r = inverse<M>(u);
+    const double pole_distance = norm(cross(M::rotary[0].direction, u));
+    const double tol = r.status == reach_status::pole ? 1e-12 + 2.0 * pole_distance : 1e-12;
+    for (const auto& s : r) {
+      if (r.status == reach_status::unreachable) break;  // listed angles are then only nearest shifts
+      const double clamp_tol = at_a_limit<M>(s.angles) ? inverse_options{}.travel_slack.value : 0.0;
+      RC_ASSERT(distance(oracle<M>(s.angles), u) <= tol + clamp_tol);
+    }
+  });
   rc::prop("the generating angles are among the solutions, flagged within travel", [] {
     const auto a = *test::angles_within<M>();
     const vec3 u = oracle<M>(a);
@@ -162,7 +173,7 @@ TEMPLATE_LIST_TEST_CASE("FK∘IK = id and IK∘FK contains the generating angles
 TEMPLATE_LIST_TEST_CASE("travel flags and output ranges", "[core][inverse]", kin5::machines::catalog) {
   using M = TestType;
   rc::prop("within_travel is exactly 'every axis inside its travel'; status agrees", [] {
-    const vec3 u = *rc::gen::oneOf(test::unit_vector(), near_reach_edge<M>(),
+    const vec3 u = *rc::gen::oneOf(test::unit_vector(), near_reach_edge<M>(), test::near_axis(M::rotary[0].direction),
                                    rc::gen::map(test::angles_anywhere<M>(), [](auto a) { return oracle<M>(a); }));
     const auto r = inverse<M>(u);
     bool any_within = false;
@@ -188,7 +199,7 @@ TEMPLATE_LIST_TEST_CASE("reach and gap agree with a dense sweep of the Eigen cha
                         kin5::machines::catalog) {
   using M = TestType;
   rc::prop("unreachable exactly when the sweep finds no pose; gap = sweep minimum", [] {
-    const vec3 u = *rc::gen::oneOf(test::unit_vector(), near_reach_edge<M>());
+    const vec3 u = *rc::gen::oneOf(test::unit_vector(), near_reach_edge<M>(), test::near_axis(M::rotary[0].direction));
     double swept = 0.0;
     if constexpr (p_covers_turn<M>()) {
       swept = test::sweep_min_angle_turning_p<M>(eigen::to_eigen(u));
