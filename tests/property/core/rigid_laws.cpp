@@ -38,8 +38,8 @@ TEST_CASE("rigid_transform laws", "[core][rigid]") {
     const rigid_transform a_T_b = *rigid();
     const auto a_T_a = a_T_b * a_T_b.inverse();
     const auto b_T_b = a_T_b.inverse() * a_T_b;
-    RC_ASSERT(max_abs(eigen::to_eigen(a_T_a).matrix() - Eigen::Matrix4d::Identity()) <= 1e-12);
-    RC_ASSERT(max_abs(eigen::to_eigen(b_T_b).matrix() - Eigen::Matrix4d::Identity()) <= 1e-12);
+    RC_ASSERT(max_abs(eigen::to_eigen(a_T_a).matrix() - Eigen::Matrix4d::Identity()) <= 1e-11);  // |t| <= 1.7e3 mm
+    RC_ASSERT(max_abs(eigen::to_eigen(b_T_b).matrix() - Eigen::Matrix4d::Identity()) <= 1e-11);  // |t| <= 1.7e3 mm
   });
   rc::prop("composition is associative, matches Eigen, and maps points as a chain", [] {
     const rigid_transform a_T_b = *rigid(), b_T_c = *rigid(), c_T_d = *rigid();
