@@ -131,7 +131,7 @@ std::vector<std::vector<rotary_candidate<M>>> rotary_candidates(std::span<const 
   // The nearest reachable non-pole block before and after each block (n: none), in O(n).
   std::vector<std::size_t> before(n, n), after(n, n);
   for (std::size_t k = 1; k < n; ++k) before[k] = (!at_pole[k - 1] && !out[k - 1].empty()) ? k - 1 : before[k - 1];
-  for (std::size_t k = n - 1; k-- > 0;) after[k] = (!at_pole[k + 1] && !out[k + 1].empty()) ? k + 1 : after[k + 1];
+  for (std::size_t k = n; k-- > 1;) after[k - 1] = (!at_pole[k] && !out[k].empty()) ? k : after[k];
   for (std::size_t k = 0; k < n; ++k) {
     if (!at_pole[k]) continue;
     std::vector<radians> free_angles;

@@ -45,3 +45,28 @@ TEST_CASE("a path through the SAJO pole switches branch instead of a half turn o
   CHECK(t.warnings[0].where.line == 2);
   CHECK(t.warnings[0].message.find("branch switch") != std::string::npos);
 }
+
+TEST_CASE("a run of pole blocks takes the free angle of its non-pole neighbour") {
+  // DMU 80P: tool along +Z is its pole (B = 0, C free). Five vertical blocks, then B = 30°, C = 70°.
+  // The vertical blocks take C = 70° from the block after them: the only travel is 30° of B.
+  using kin5::machines::dmu_80p;
+  kin5::program::program cl;
+  cl.language = kin5::program::dialect::apt;
+  cl.file = "vertical.cl";
+  for (int k = 0; k < 6; ++k) {
+    auto& b = kin5::test::add_block(cl);
+    b.motion = kin5::program::motion_kind::linear;
+    b.axes.x_mm = k, b.axes.y_mm = 0.0, b.axes.z_mm = 0.0;
+    b.axes.tool_axis = k < 5 ? kin5::unit_z
+                             : kin5::tool_axis<dmu_80p>({kin5::to_radians(kin5::degrees{70.0}),
+                                                         kin5::to_radians(kin5::degrees{30.0})});
+  }
+  const auto t = kin5::post<dmu_80p>(cl, kin5::program::dialect::heidenhain);
+  REQUIRE(t.ok());
+  REQUIRE(t.output.blocks.size() == 6);
+  for (std::size_t k = 0; k < 6; ++k) {
+    CAPTURE(k);
+    CHECK(std::abs(*t.output.blocks[k].axes.c_deg - 70.0) <= 1e-9);
+    CHECK(std::abs(*t.output.blocks[k].axes.b_deg - (k < 5 ? 0.0 : 30.0)) <= 1e-9);
+  }
+}
