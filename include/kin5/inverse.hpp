@@ -39,10 +39,21 @@ struct inverse_options {
   radians travel_slack{1e-9};
 };
 
+/// Most solutions one tool axis can have on M: two branches (one on a 4-axis machine), times,
+/// for each bounded axis, the number of 360° shifts its travel can hold.
+template <machine M>
+constexpr std::size_t max_solutions() {
+  std::size_t n = rotary_count<M> == 2 ? 2 : 1;
+  for (const auto& a : M::rotary)
+    if (!a.travel.continuous)
+      n *= static_cast<std::size_t>((a.travel.upper.value - a.travel.lower.value) / 360.0) + 1;
+  return n;
+}
+
 /// Every solution for one tool axis.
 template <machine M>
 struct inverse_result {
-  static constexpr std::size_t capacity = 32;  // 2 branches × up to 4 shifts on each of 2 axes
+  static constexpr std::size_t capacity = max_solutions<M>();
 
   reach_status status = reach_status::unreachable;
   radians gap{};  ///< angle from the requested axis to what the machine can reach; 0 if reachable
@@ -82,12 +93,10 @@ constexpr shifted_values shifts_within(const rotary_travel& travel, radians comm
   }
   constexpr double two_pi = 2.0 * pi;
   const double lo = to_radians(travel.lower).value, hi = to_radians(travel.upper).value;
-  // Start at the shift just below lo and walk up.
+  // The first shift at or above lo − slack, then every further turn up to hi + slack.
   double v = lo + math::wrap_pi(commanded.value - lo);
-  if (v > lo) v -= two_pi;
-  for (int i = 0; i < 8 && out.count < out.value.size(); ++i, v += two_pi) {
-    if (v >= lo - slack.value && v <= hi + slack.value) out.value[out.count++] = {math::clamp(v, lo, hi)};
-  }
+  if (v < lo - slack.value) v += two_pi;
+  for (; v <= hi + slack.value && out.count < out.value.size(); v += two_pi) out.value[out.count++] = {math::clamp(v, lo, hi)};
   if (out.count > 0) {
     out.within = true;
     return out;

@@ -64,6 +64,11 @@ struct two_axis_geometry {
   double c0{}, alpha{}, beta{}, rho{};
   radians delta{};
   radians theta_min{}, theta_max{};  ///< reachable range of ∠(p, u) with ψq unlimited (G5)
+  double cos_delta{}, sin_delta{};    ///< cos δ = α/ρ, sin δ = β/ρ
+  vec3 q_cross_t{};                    ///< q × t, for R(q, ψq) t without trigonometry
+  double q_dot_t{};
+  /// p ⊥ q and q ⊥ t: the branches are then related by ψp− = ψp+ + π (G4′, see `branch_pair`).
+  bool orthogonal_chain = false;
 
   static constexpr two_axis_geometry make(const vec3& p, const vec3& q, const vec3& t) {
     two_axis_geometry g{p, q, t};
@@ -72,6 +77,11 @@ struct two_axis_geometry {
     g.beta = dot(p, cross(q, t));
     g.rho = math::sqrt(g.alpha * g.alpha + g.beta * g.beta);
     g.delta = {math::atan2(g.beta, g.alpha)};
+    g.cos_delta = g.rho > 0 ? g.alpha / g.rho : 1.0;
+    g.sin_delta = g.rho > 0 ? g.beta / g.rho : 0.0;
+    g.q_cross_t = cross(q, t);
+    g.q_dot_t = dot(q, t);
+    g.orthogonal_chain = math::abs(dot(p, q)) < 1e-15 && math::abs(g.q_dot_t) < 1e-15;
     const double pq = angle_between(p, q).value, qt = angle_between(q, t).value;
     g.theta_min = {math::abs(pq - qt)};
     const double sum = pq + qt;
@@ -100,18 +110,32 @@ struct two_axis_geometry {
                                     radians tolerance = {1e-9}, double pole_radius = 1e-10) const {
     two_axis_solution out{};
     const vec3 u = normalized(u_in);
+    double kappa_minus_c0 = dot(p, u) - c0;
+    double s = 0.0;
+    if (rho - math::abs(kappa_minus_c0) > 1e-3 * rho) {
+      // Inside the band (G5), away from its edges: reachable, not a pole (poles lie on the
+      // boundary), and ρ² − (κ−c₀)² = (ρ − (κ−c₀))(ρ + (κ−c₀)) with both factors ≥ 1e-3 ρ, so
+      // the rounding of κ (1e-16) costs s at most ~1e-13 relative.
+      s = math::sqrt((rho - kappa_minus_c0) * (rho + kappa_minus_c0));
+      out.status = reach_status::reachable;
+      out.count = 2;
+      const double half_opening = math::atan2(s, kappa_minus_c0);
+      branch_pair(u, kappa_minus_c0, s, half_opening, out);
+      return out;
+    }
     const double theta_u = angle_between(p, u).value;  // ∠(p, u), used for the gap and (G3)
     out.gap = latitude_gap(theta_u);
     if (out.gap.value > tolerance.value) return out;  // S4: no ψq gives this latitude
     out.gap = {0.0};
 
-    // (G2)-(G3): ρ² − (κ−c₀)² as (cos θmin − cos θ)(cos θ − cos θmax), each factor in sines.
+    // (G2)-(G3) near the boundary: ρ² − (κ−c₀)² as (cos θmin − cos θ)(cos θ − cos θmax), each
+    // factor a product of sines, so that ψq keeps its precision where arccos would not.
     const double theta = math::clamp(theta_u, theta_min.value, theta_max.value);
     const double to_top = 2.0 * math::sin(0.5 * (theta + theta_min.value)) * math::sin(0.5 * (theta - theta_min.value));
     const double to_bottom = 2.0 * math::sin(0.5 * (theta_max.value + theta)) * math::sin(0.5 * (theta_max.value - theta));
     const double prod = to_top * to_bottom;
-    const double s = prod > 0 ? math::sqrt(prod) : 0.0;
-    const double kappa_minus_c0 = math::cos(theta) - c0;
+    s = prod > 0 ? math::sqrt(prod) : 0.0;
+    kappa_minus_c0 = math::cos(theta) - c0;
     const double half_opening = math::atan2(s, kappa_minus_c0);
     const radians psi_q_plus{delta.value + half_opening};
     const radians psi_q_minus{delta.value - half_opening};
@@ -119,8 +143,7 @@ struct two_axis_geometry {
     const bool at_pole = norm(cross(p, u)) <= pole_radius;
     out.status = at_pole ? reach_status::pole : reach_status::reachable;
     if (!at_pole) {
-      out.branch[0] = {azimuth(u, psi_q_plus), psi_q_plus};
-      out.branch[1] = {azimuth(u, psi_q_minus), psi_q_minus};
+      branch_pair(u, kappa_minus_c0, s, half_opening, out);
       out.count = s > 0 ? 2 : 1;  // on the boundary (S3) the branches merge
       return out;
     }
@@ -143,6 +166,34 @@ struct two_axis_geometry {
   }
 
  private:
+  // Both branches of (G3)/(G4) from sin and cos of the half opening φ = atan2(s, κ − c₀):
+  // ψq± = δ ± φ, and w± = R(q, ψq±) t by Rodrigues with cos(δ ± φ), sin(δ ± φ) formed from
+  // cos δ, sin δ, cos φ, sin φ — one atan2 per branch (for ψp) and none for w.
+  //
+  // (G4′) On an orthogonal chain (p ⊥ q, q ⊥ t) w runs on the great circle normal to q, which
+  // contains p; its two points at latitude κ are mirror images across p, so their projections
+  // normal to p are opposite and ψp− = ψp+ + π. One atan2 fewer, and the law suite checks it
+  // against (G4) on every orthogonal catalog machine.
+  constexpr void branch_pair(const vec3& u, double kappa_minus_c0, double s, double half_opening,
+                             two_axis_solution& out) const {
+    const double r = math::sqrt(s * s + kappa_minus_c0 * kappa_minus_c0);
+    const double cos_phi = r > 0 ? kappa_minus_c0 / r : 1.0, sin_phi = r > 0 ? s / r : 0.0;
+    // (G4) on the projections themselves: w·u − (p·w)(p·u) would cancel near the pole.
+    const vec3 u_perp = u - dot(p, u) * p;
+    const int computed = orthogonal_chain ? 1 : 2;
+    for (int b = 0; b < computed; ++b) {
+      const double sign = b == 0 ? 1.0 : -1.0;
+      const double c = cos_delta * cos_phi - sign * sin_delta * sin_phi;  // cos(δ ± φ)
+      const double sn = sin_delta * cos_phi + sign * cos_delta * sin_phi;  // sin(δ ± φ)
+      const vec3 w = c * t + sn * q_cross_t + ((1.0 - c) * q_dot_t) * q;
+      out.branch[b] = {signed_angle_about_p(w - dot(p, w) * p, u_perp), {delta.value + sign * half_opening}};
+    }
+    if (orthogonal_chain) {
+      const double psi_p = out.branch[0].psi_p.value;
+      out.branch[1] = {{psi_p > 0 ? psi_p - pi : psi_p + pi}, {delta.value - half_opening}};
+    }
+  }
+
   // Angle from the latitude θ = ∠(p, u) to [θmin, θmax] (G5); 0 inside.
   constexpr radians latitude_gap(double theta) const {
     if (theta < theta_min.value) return {theta_min.value - theta};
@@ -172,8 +223,11 @@ struct one_axis_geometry {
   constexpr two_axis_solution solve(const vec3& u_in, radians tolerance = {1e-9}) const {
     two_axis_solution out{};
     const vec3 u = normalized(u_in);
-    out.gap = workspace_gap(u);
-    if (out.gap.value > tolerance.value) return out;
+    // Exactly on the latitude of t (to 1e-12 in p·u) needs no angle; otherwise measure the gap.
+    if (math::abs(dot(p, u) - dot(p, t)) > 1e-12) {
+      out.gap = workspace_gap(u);
+      if (out.gap.value > tolerance.value) return out;
+    }
     out.gap = {0.0};
     const vec3 t_perp = t - dot(p, t) * p, u_perp = u - dot(p, u) * p;
     out.branch[0] = {{math::atan2(dot(p, cross(t_perp, u_perp)), dot(t_perp, u_perp))}, {0.0}};
