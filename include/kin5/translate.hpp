@@ -473,6 +473,25 @@ inline std::optional<std::string> map_plane_words(program::block& b, const mat3&
   return std::nullopt;
 }
 
+/// A block as it goes into a program of another dialect: text kin5 did not interpret
+/// (`passthrough`) and words it kept without interpreting (`kept_words`) mean something only in
+/// the source dialect, so they travel as a comment instead of being written as code.
+inline program::block carried_over(program::block b, program::dialect from, program::dialect to) {
+  if (from == to) return b;
+  std::string note;
+  if (b.passthrough) {
+    note = b.text;  // the whole line, its own comment included
+    b.passthrough = false;
+    b.comment.reset();
+  } else if (!b.kept_words.empty()) {
+    note = std::string(program::name(from)) + ":";
+    for (const auto& w : b.kept_words) note += " " + w;
+  }
+  b.kept_words.clear();
+  if (!note.empty()) b.comment = b.comment ? *b.comment + " | " + note : note;
+  return b;
+}
+
 /// The target side for an NC machine To: branch choice over the program, feed, output blocks.
 template <machine To>
 void write_nc(const program::program& in, const std::vector<source_step>& steps, const rigid_transform& target_T_source,
@@ -495,7 +514,7 @@ void write_nc(const program::program& in, const std::vector<source_step>& steps,
     const source_step& s = steps[k];
     if (s.what == source_step::kind::failed) continue;
     if (s.what == source_step::kind::passthrough) {
-      out.output.blocks.push_back(b);
+      out.output.blocks.push_back(carried_over(b, in.language, language));
       ++out.passed_through;
       continue;
     }
@@ -504,6 +523,7 @@ void write_nc(const program::program& in, const std::vector<source_step>& steps,
       out.errors.push_back(at(b, *error));
       continue;
     }
+    o = carried_over(std::move(o), in.language, language);
     if (b.feed_mode == program::feed_unit::inverse_time && !supports_inverse_time(language)) {
       out.errors.push_back(at(b, "inverse-time feed (G93) cannot be written in " + std::string(program::name(language))));
       continue;
@@ -646,11 +666,11 @@ inline void write_cl(const program::program& in, const std::vector<source_step>&
     const source_step& s = steps[k];
     if (s.what == source_step::kind::failed) continue;
     if (s.what == source_step::kind::passthrough) {
-      out.output.blocks.push_back(b);
+      out.output.blocks.push_back(carried_over(b, in.language, program::dialect::apt));
       ++out.passed_through;
       continue;
     }
-    program::block o = b;
+    program::block o = carried_over(b, in.language, program::dialect::apt);
     if (b.feed_mode == program::feed_unit::inverse_time) {
       out.errors.push_back(at(b, "inverse-time feed (G93) cannot be written as APT CL data"));
       continue;

@@ -179,3 +179,38 @@ TEST_CASE("run-time dispatch by catalog id matches the template, unknown ids are
   CHECK_FALSE(kin5::post("nope", in.parsed, kin5::program::dialect::iso).ok());
   CHECK(kin5::reverse("sajo-12000p", in.parsed).ok());
 }
+
+TEST_CASE("Siemens-only words reach a Heidenhain program as comments, never as code") {
+  const auto in = siemens::read(
+      "G54 G17 D1\n"
+      "CYCLE832(0.01,1,1)\n"
+      "TRAORI\n"
+      "G1 G54 X-34.983 Y9.1 Z118.526 A-77.954 B3.536 F1091 ; first cut\n"
+      "TRAFOOF\n",
+      "words.mpf");
+  REQUIRE(in.ok());
+  const auto t = kin5::translate<sajo_12000p, dmu_80p>(in.parsed, {});
+  REQUIRE(t.ok());
+  CHECK(t.blocks_written == t.blocks_read);
+  const std::string text = heidenhain::write(t.output);
+  CAPTURE(text);
+  // Every line that mentions a Siemens-only word carries it after ';' (a Heidenhain comment).
+  std::size_t start = 0, lines_with_words = 0;
+  while (start < text.size()) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    const std::string line = text.substr(start, end - start);
+    for (const char* word : {"CYCLE832", "G54", "D1"}) {
+      const auto at = line.find(word);
+      if (at == std::string::npos) continue;
+      ++lines_with_words;
+      const auto semicolon = line.find(';');
+      CHECK(semicolon != std::string::npos);
+      CHECK(semicolon < at);
+    }
+    start = end + 1;
+  }
+  CHECK(lines_with_words >= 3);
+  // The Heidenhain reader accepts the result, with the motion intact.
+  const auto back = heidenhain::read(text, "words.h");
+  CHECK(back.ok());
+}
