@@ -276,6 +276,36 @@ case "$name" in
     done
     [ "$fail" = 0 ] || show p.h err
     ;;
+  setup)
+    # A setup given three ways. T of spec K10 written as a matrix and as the half turn about
+    # (0,1,1) (spec §2.3: T = R((0,1,1)/sqrt2, 180 deg)) must give Table 1 exactly as the default.
+    run 0 translate --from sajo-12000p --to dmu-80p --setup-rotation=-1,0,0,0,0,1,0,1,0 -o m.h "$example"
+    check_table1 m.h || { report "Table 1 with --setup-rotation"; show m.h; }
+    run 0 translate --from sajo-12000p --to dmu-80p --setup-axis 0,1,1 --setup-angle 180 -o a.h "$example"
+    check_table1 a.h || { report "Table 1 with --setup-axis/--setup-angle"; show a.h; }
+    # An offset moves every tip by (10, 20, 30) mm and leaves B and C as in Table 1.
+    run 0 translate --from sajo-12000p --to dmu-80p --setup-offset 10,20,-30 -o o.h "$example"
+    while read -r xs ys zs as bs fs xd yd zd bd cd; do
+      x=$(awk -v v="$xd" 'BEGIN { print v + 10 }')
+      l=$(line_with o.h X "$x")
+      [ -n "$l" ] || { report "no block with X=$x"; continue; }
+      near "$(value "$l" Y)" "$(awk -v v="$yd" 'BEGIN { print v + 20 }')" 1e-6 || report "Y of X=$x: $l"
+      near "$(value "$l" Z)" "$(awk -v v="$zd" 'BEGIN { print v - 30 }')" 1e-6 || report "Z of X=$x: $l"
+      near "$(value "$l" B)" "$bd" 0.001 || report "B of X=$x: $l"
+      near360 "$(value "$l" C)" "$cd" 0.001 || report "C of X=$x: $l"
+    done <<EOF
+$table1
+EOF
+    [ "$fail" = 0 ] || show o.h
+    # Bad setups are usage errors (exit 1) and write nothing.
+    run 1 translate --from sajo-12000p --to dmu-80p --setup-rotation 1,0,0,0,1,0,0,0,2 -o bad.h "$example"
+    grep -q "not a proper rotation" err || { report "improper rotation message"; show err; }
+    run 1 translate --from sajo-12000p --to dmu-80p --setup-rotation=1,0,0,0,1,0,0,0,1 --setup-axis 0,0,1 \
+      --setup-angle 5 -o bad.h "$example"
+    run 1 translate --from sajo-12000p --to dmu-80p --setup-axis 0,0,1 -o bad.h "$example"
+    run 1 translate --from sajo-12000p --to dmu-80p --setup-offset 1,2 -o bad.h "$example"
+    [ -e bad.h ] && report "bad.h written on a usage error"
+    ;;
   *)
     echo "run.sh: unknown test '$name'" >&2
     exit 2

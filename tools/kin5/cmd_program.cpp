@@ -319,8 +319,64 @@ feed_policy parse_feed(const std::string& s) {
 
 struct translate_arguments {
   std::string from, to, feed = "tcp", from_dialect, to_dialect, output = "-", input;
+  std::string setup_rotation, setup_axis, setup_offset;
+  std::optional<double> setup_angle_deg;
   bool verbose = false;
 };
+
+/// Numbers separated by commas, exactly `count` of them, or nothing.
+std::optional<std::vector<double>> parse_list(std::string_view text, std::size_t count) {
+  const auto fields = split(text, ',');
+  if (fields.size() != count) return std::nullopt;
+  std::vector<double> out;
+  for (auto f : fields) {
+    const auto v = parse_real(f);
+    if (!v) return std::nullopt;
+    out.push_back(*v);
+  }
+  return out;
+}
+
+/// target_T_source from --setup-rotation | --setup-axis with --setup-angle, and --setup-offset;
+/// what is not given comes from the pair's default setup. Prints the reason and returns nothing
+/// on bad input.
+std::optional<rigid_transform> parse_setup(const translate_arguments& a) {
+  const bool any = !a.setup_rotation.empty() || !a.setup_axis.empty() || a.setup_angle_deg || !a.setup_offset.empty();
+  rigid_transform setup = default_setup(a.from, a.to);
+  if (!any) return setup;
+  auto fail = [](const std::string& why) -> std::optional<rigid_transform> {
+    std::cerr << "kin5 translate: " << why << "\n";
+    return std::nullopt;
+  };
+  if (!a.setup_rotation.empty() && (!a.setup_axis.empty() || a.setup_angle_deg))
+    return fail("give the setup rotation either as --setup-rotation or as --setup-axis with --setup-angle, not both");
+  if (!a.setup_rotation.empty()) {
+    const auto m = parse_list(a.setup_rotation, 9);
+    if (!m) return fail("--setup-rotation needs 9 numbers, row by row, separated by commas");
+    const mat3 r{{vec3{(*m)[0], (*m)[1], (*m)[2]}, vec3{(*m)[3], (*m)[4], (*m)[5]}, vec3{(*m)[6], (*m)[7], (*m)[8]}}};
+    const mat3 should_be_identity = r * r.transposed();
+    double worst = std::abs(determinant(r) - 1.0);
+    for (int i = 0; i < 3; ++i) {
+      const vec3 row = should_be_identity.row[static_cast<std::size_t>(i)];
+      const vec3 unit = mat3::identity().row[static_cast<std::size_t>(i)];
+      worst = std::max(worst, norm(row - unit));
+    }
+    if (worst > 1e-9) return fail("--setup-rotation is not a proper rotation (R Rᵀ = I and det R = +1 to 1e-9)");
+    setup.rotation = r;
+  } else if (!a.setup_axis.empty() || a.setup_angle_deg) {
+    const auto axis = parse_list(a.setup_axis, 3);
+    if (!axis || !a.setup_angle_deg) return fail("--setup-axis X,Y,Z and --setup-angle DEG go together");
+    const vec3 n{(*axis)[0], (*axis)[1], (*axis)[2]};
+    if (!(norm(n) > 1e-12)) return fail("--setup-axis must not be the zero vector");
+    setup.rotation = rotation(normalized(n), to_radians(degrees{*a.setup_angle_deg}));
+  }
+  if (!a.setup_offset.empty()) {
+    const auto t = parse_list(a.setup_offset, 3);
+    if (!t) return fail("--setup-offset needs 3 numbers (millimetres) separated by commas");
+    setup.translation_mm = {(*t)[0], (*t)[1], (*t)[2]};
+  }
+  return setup;
+}
 
 struct machine_arguments {
   std::string machine, dialect, output = "-", input;
@@ -340,6 +396,8 @@ int run_translate(const translate_arguments& a) {
   j.target = a.to;
   j.verbose = a.verbose;
   translate_options options;
+  options.setup = parse_setup(a);
+  if (!options.setup) return exit_codes::usage;
   options.feed = parse_feed(a.feed);
   if (options.feed == feed_policy::inverse_time && !supports_inverse_time(j.output_dialect)) {
     std::cerr << "kin5 translate: --feed inverse-time needs an output dialect with inverse-time feed (G93): "
@@ -423,6 +481,12 @@ void add_program_commands(CLI::App& app, int& exit_code) {
         ->check(dialects);
     sub->add_option("--to-dialect", a->to_dialect, "Dialect of OUT (default: the --to machine's)")->check(dialects);
     sub->add_option("-o,--output", a->output, "Output file; '-' for stdout")->capture_default_str();
+    sub->add_option("--setup-rotation", a->setup_rotation,
+                    "Setup rotation target_R_source, 9 numbers row by row (default: the pair's; see docs)");
+    sub->add_option("--setup-axis", a->setup_axis, "Setup rotation as an axis X,Y,Z (with --setup-angle)");
+    sub->add_option("--setup-angle", a->setup_angle_deg, "Setup rotation angle about --setup-axis, degrees, right-handed");
+    sub->add_option("--setup-offset", a->setup_offset,
+                    "Setup translation X,Y,Z in mm: target point = R * source point + offset (default: the pair's)");
     sub->add_flag("-v,--verbose", a->verbose, "Also list the blocks translated on the other solution branch");
     sub->add_option("input", a->input, "Input NC program; '-' for stdin")->required();
     sub->footer(default_dialect_table() + exit_code_footer);
