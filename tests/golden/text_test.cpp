@@ -7,7 +7,9 @@
 #include <catch2/catch.hpp>
 
 #include <kin5/kin5.hpp>
+#include <kin5/program/apt.hpp>
 #include <kin5/program/heidenhain.hpp>
+#include <kin5/program/iso.hpp>
 #include <kin5/program/siemens.hpp>
 
 #include "program_builder.hpp"
@@ -213,4 +215,30 @@ TEST_CASE("Siemens-only words reach a Heidenhain program as comments, never as c
   // The Heidenhain reader accepts the result, with the motion intact.
   const auto back = heidenhain::read(text, "words.h");
   CHECK(back.ok());
+}
+
+TEST_CASE("a program end is written once in every dialect") {
+  namespace iso = kin5::program::iso;
+  namespace apt = kin5::program::apt;
+  const auto s = siemens::read("%_N_P_MPF\nN10 M30\nN20 M5 M2\n", "end.mpf");
+  REQUIRE(s.ok());
+  CHECK(s.parsed.blocks[1].m_codes.empty());  // the end lives in program_end only
+  CHECK(s.parsed.blocks[1].program_end == "P");
+  CHECK(s.parsed.blocks[2].m_codes == std::vector<int>{5});
+  CHECK(s.parsed.blocks[2].program_end == "M2");
+  CHECK(iso::write(s.parsed) == "(program P)\nN10 M30\nN20 M5 M2\n");
+  CHECK(heidenhain::write(s.parsed) == "0 BEGIN PGM P MM\n1 END PGM P MM\n2 M5\n3 END PGM P MM\n");
+  CHECK(apt::write(s.parsed) == "PARTNO P\nFINI\nSPINDL/OFF\nFINI\n");
+  CHECK(siemens::write(s.parsed) == "%_N_P_MPF\nN10 M30\nN20 M5 M2\n");
+
+  // Heidenhain: M30 is an M function, END PGM the end; M91 is machine coordinates (G53, SUPA).
+  const auto h = heidenhain::read("0 BEGIN PGM P MM\n1 L Z+0 FMAX M91\n2 M30\n3 END PGM P MM\n", "end.h");
+  REQUIRE(h.ok());
+  CHECK(iso::write(h.parsed) == "N0 G21 (program P)\nN1 G53 G0 Z0\nN2 M30\nN3 G21\n");
+  CHECK(siemens::write(h.parsed) == "%_N_P_MPF\nN0 G71\nN1 SUPA G0 Z0\nN2 M30\nN3 G71\n");
+
+  const auto i = iso::read("O1234\nN5 M30\n", "end.nc");
+  REQUIRE(i.ok());
+  CHECK(heidenhain::write(i.parsed) == "0 BEGIN PGM 1234 MM\n1 END PGM 1234 MM\n");
+  CHECK(siemens::write(i.parsed) == "%_N_1234_MPF\nN5 M30\n");
 }

@@ -94,14 +94,21 @@ struct block {
   std::optional<long long> number;    ///< N number or Heidenhain block number
 
   std::optional<std::string> program_begin;  ///< BEGIN PGM / % O… / PARTNO: the program name
-  std::optional<std::string> program_end;    ///< END PGM / M30 / FINI
+  /// Set on the block that ends the program text: END PGM, M2 / M30 (Siemens, ISO), FINI. An M
+  /// code that ends the program lives here only, never also in `m_codes`, so a writer writes
+  /// one end per block (Siemens and ISO writers never write M2 / M30 twice in a block). The value
+  /// is the program's name where known (END PGM name, the Siemens `%_N_` header's), "M2" or
+  /// "M30" when the source wrote that word and gives no name (ISO; Siemens M2), else empty.
+  /// In Heidenhain the text ends at END PGM: an M2 / M30 on an M line there is an ordinary M
+  /// function in `m_codes`.
+  std::optional<std::string> program_end;
   std::optional<std::string> comment;        ///< comment text, without its delimiters
   std::optional<bool> tcp;                   ///< tool-tip tracking switched on (true) or off (false)
   std::optional<feed_unit> feed_mode;        ///< G93 / G94
   std::optional<bool> metric;                ///< G71/G21/MM (true), G70/G20/INCH (false)
   std::optional<long long> tool;             ///< tool call / T number
   std::optional<double> spindle_rpm;         ///< S
-  std::vector<int> m_codes;                  ///< M functions other than those mapped above
+  std::vector<int> m_codes;                  ///< M functions other than those mapped above and `program_end`'s
   std::optional<motion_kind> motion;         ///< set when the block commands a motion word (G0-G3, L, C)
   axis_words axes;                           ///< axis words present in the block
   std::optional<arc_words> arc;              ///< circle data of an arc block

@@ -661,7 +661,9 @@ inline std::string write(const program& p, const write_options& options = {}) {
     if (b.metric && !*b.metric) fail("inch units");
     if (b.feed_mode == feed_unit::inverse_time) fail("inverse-time feed (G93)");
     auto pgm_name = [&](const std::optional<std::string>& n) {
-      std::string name = n && !n->empty() ? *n : begin_name.value_or("");
+      // `program_end` of a G-code dialect may hold its end word, which is no name
+      const bool named = n && !n->empty() && *n != "M2" && *n != "M30";
+      std::string name = named ? *n : begin_name.value_or("");
       if (name.empty()) name = "PGM";
       for (char& c : name)  // a name is one word: blanks and `;` become `_`
         if (is_space(c) || c == ';' || is_control(static_cast<unsigned char>(c))) c = '_';

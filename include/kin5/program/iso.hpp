@@ -474,6 +474,7 @@ inline std::string write(const program& p, const write_options& options = {}) {
   bool vector_tcp = false;
   arc_plane plane = arc_plane::xy;
   std::optional<double> last[3];
+  bool ended = false;  // the last block written had an M2 / M30 M function
   for (std::size_t index = 0; index < p.blocks.size(); ++index) {
     const block& b = p.blocks[index];
     auto fail = [&](const std::string& why) {
@@ -570,8 +571,17 @@ inline std::string write(const program& p, const write_options& options = {}) {
     if (b.feed) put('F', *b.feed, options.feed_decimals);
     if (b.spindle_rpm) put('S', *b.spindle_rpm, options.feed_decimals);
     if (b.tool) words.push_back("T" + std::to_string(*b.tool));
-    for (int m : b.m_codes) words.push_back("M" + std::to_string(m));
-    if (b.program_end) words.push_back(*b.program_end == "M2" ? "M2" : "M30");
+    bool ends = false;  // an M2 / M30 written in this block: never a second one
+    for (int m : b.m_codes) {
+      // M91 / M92 of another dialect are machine coordinates, already written as G53
+      if (!same && b.machine_coordinates && (m == 91 || m == 92)) continue;
+      words.push_back("M" + std::to_string(m));
+      ends = ends || m == 2 || m == 30;
+    }
+    // A program end right after an M2 / M30 M function (Heidenhain `M30`, then `END PGM`) says it again.
+    const bool end_written = ended && !same;
+    ended = ends;
+    if (b.program_end && !ends && !end_written) words.push_back(*b.program_end == "M2" ? "M2" : "M30");
     for (std::string& k : tail) words.push_back(std::move(k));
     if (!notes.empty()) words.push_back(detail::as_comment(notes));
     if (b.comment) words.push_back(detail::as_comment(*b.comment));

@@ -780,9 +780,14 @@ inline void finish(line_parse& p, modal_state& state, read_result& result) {
       error(p.geometry_column, "arc needs a centre (I J K) or a radius (CR=)");
     }
     state.move(b);
-    if (std::find(b.m_codes.begin(), b.m_codes.end(), 2) != b.m_codes.end() ||
-        std::find(b.m_codes.begin(), b.m_codes.end(), 30) != b.m_codes.end())
-      b.program_end = state.program_name.value_or("");
+    // M2 / M30 end the program: carried by `program_end` only, not also in `m_codes`.
+    const bool m30 = std::find(b.m_codes.begin(), b.m_codes.end(), 30) != b.m_codes.end();
+    const bool m2 = std::find(b.m_codes.begin(), b.m_codes.end(), 2) != b.m_codes.end();
+    if (m30 || m2) {
+      b.program_end = m30 ? state.program_name.value_or("") : std::string("M2");
+      b.m_codes.erase(std::remove_if(b.m_codes.begin(), b.m_codes.end(), [](int m) { return m == 2 || m == 30; }),
+                      b.m_codes.end());
+    }
   }
   std::stable_sort(p.errors.begin(), p.errors.end(),
                    [](const diagnostic& a, const diagnostic& c) { return a.where.column < c.where.column; });
@@ -882,6 +887,7 @@ inline std::string write(const program& p, const write_options& options = {}) {
   const bool same = p.language == dialect::siemens;
   detail::modal_state written;                   // what the written text leaves the controller in
   std::optional<motion_kind> model_motion;       // the program's own modal motion
+  bool ended = false;                            // the last block written had an M2 / M30 M function
   for (const block& b : p.blocks) {
     const std::string& file = b.where.file.empty() ? p.file : b.where.file;
     const auto fail = [&](const std::string& why) {
@@ -968,10 +974,17 @@ inline std::string write(const program& p, const write_options& options = {}) {
       for (const auto& w : b.kept_words)
         if (detail::is_late_kept(w)) detail::append_word(line, w);
     }
-    for (int m : b.m_codes) detail::append_word(line, "M" + std::to_string(m));
-    if (b.program_end && std::find(b.m_codes.begin(), b.m_codes.end(), 2) == b.m_codes.end() &&
-        std::find(b.m_codes.begin(), b.m_codes.end(), 30) == b.m_codes.end())
-      detail::append_word(line, "M30");
+    bool ends = false;  // an M2 / M30 written in this block: never a second one
+    for (int m : b.m_codes) {
+      // M91 / M92 of another dialect are machine coordinates, already written as SUPA
+      if (!same && b.machine_coordinates && (m == 91 || m == 92)) continue;
+      detail::append_word(line, "M" + std::to_string(m));
+      ends = ends || m == 2 || m == 30;
+    }
+    // A program end right after an M2 / M30 M function (Heidenhain `M30`, then `END PGM`) says it again.
+    const bool end_written = ended && !same;
+    ended = ends;
+    if (b.program_end && !ends && !end_written) detail::append_word(line, *b.program_end == "M2" ? "M2" : "M30");
     std::string comment;
     if (!same) {
       for (const auto& w : b.kept_words) comment += (comment.empty() ? "" : " ") + w;

@@ -78,7 +78,7 @@ TEST_CASE("siemens: a whole program with header, set-up, TRAORI and end", "[siem
   CHECK(bl[6].axes.z_mm == 0);
   CHECK(bl[7].machine_coordinates);
   CHECK(bl[8].tcp == false);
-  CHECK(bl[9].m_codes == std::vector<int>{30});
+  CHECK(bl[9].m_codes.empty());  // M30 is in program_end only
   CHECK(bl[9].program_end == "SAJO");
   CHECK(r.warnings.empty());
   CHECK(siemens::write(r.parsed) ==
@@ -203,7 +203,8 @@ TEST_CASE("siemens: program ends, names and odd lines", "[siemens][quirks]") {
   const auto r = read_ok("N1 M2\n%MPF123\n   \n%\nM30\n%_N_SUB_SPF\nM17\n");
   const auto& bl = r.parsed.blocks;
   REQUIRE(bl.size() == 7);
-  CHECK(bl[0].program_end == "");  // no header yet
+  CHECK(bl[0].program_end == "M2");  // no header yet: the end word
+  CHECK(bl[0].m_codes.empty());       // an end M code lives in program_end only
   CHECK(bl[1].program_begin == "MPF123");
   CHECK(bl[2].passthrough);  // blanks only
   CHECK(bl[3].passthrough);  // a bare '%'

@@ -227,8 +227,7 @@ line draw_line(state& s) {
     case 9: {  // end of program
       maybe_number(l);
       const int m = coin() ? 30 : 2;
-      b.m_codes.push_back(m);
-      b.program_end = s.name.value_or("");
+      b.program_end = m == 2 ? std::string("M2") : s.name.value_or("");
       l.words.push_back(spell_code('M', m));
       break;
     }
