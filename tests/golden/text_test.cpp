@@ -242,3 +242,52 @@ TEST_CASE("a program end is written once in every dialect") {
   CHECK(heidenhain::write(i.parsed) == "0 BEGIN PGM 1234 MM\n1 END PGM 1234 MM\n");
   CHECK(siemens::write(i.parsed) == "%_N_1234_MPF\nN5 M30\n");
 }
+
+TEST_CASE("APT feed-only, rapid-only and units blocks in the G-code and Heidenhain dialects") {
+  namespace iso = kin5::program::iso;
+  const auto a = kin5::program::apt::read(
+      "PARTNO X\nUNITS/MM\nFEDRAT/MMPM,800\nRAPID\nGOTO/1,2,3\nGOTO/4,5,6\nGOTO/7,8,9\nFINI\n", "a.cls");
+  REQUIRE(a.ok());
+  // An L needs coordinates: F moves to the next cutting move, RAPID is the next move's FMAX.
+  CHECK(heidenhain::write(a.parsed) ==
+        "0 BEGIN PGM X MM\n"
+        "1 ;UNITS/MM\n"
+        "2 ;FEDRAT/MMPM,800\n"
+        "3 ;RAPID\n"
+        "4 L X+1 Y+2 Z+3 FMAX\n"
+        "5 L X+4 Y+5 Z+6 F800\n"
+        "6 L X+7 Y+8 Z+9\n"
+        "7 END PGM X MM\n");
+  // G code has words for all of them.
+  CHECK(siemens::write(a.parsed) ==
+        "%_N_X_MPF\nG71\nG94 F800\nG0\nG0 X1 Y2 Z3\nG1 X4 Y5 Z6\nG1 X7 Y8 Z9\nM30\n");
+  CHECK(iso::write(a.parsed) ==
+        "(program X)\nG21\nG94 F800\nG0\nG0 X1 Y2 Z3\nG1 X4 Y5 Z6\nG1 X7 Y8 Z9\nM30\n");
+  const auto back = heidenhain::read(heidenhain::write(a.parsed), "a.h");
+  CHECK(back.ok());
+
+  // A Siemens block with nothing Siemens-writable left is a comment, not a dropped line.
+  kin5::program::program p;
+  p.language = kin5::program::dialect::apt;
+  kin5::program::block empty;
+  empty.text = "UNITS/XYZ";
+  p.blocks = {empty};
+  CHECK(siemens::write(p) == "; UNITS/XYZ\n");
+  CHECK(heidenhain::write(p) == "0 ;UNITS/XYZ\n");
+}
+
+TEST_CASE("kin5 post of APT CL data to Heidenhain: no coordinate-less L, no empty block") {
+  const auto a = kin5::program::apt::read("UNITS/MM\nRAPID\nGOTO/0,-20,60,0,0,1\nFEDRAT/MMPM,800\n"
+                                          "GOTO/0,-20,10,0,0,1\nGOTO/10,-20,10,0,0,1\nFINI\n", "cl.apt");
+  REQUIRE(a.ok());
+  const auto t = kin5::post("dmu-80p", a.parsed, kin5::program::dialect::heidenhain);
+  REQUIRE(t.ok());
+  const std::string text = heidenhain::write(t.output);
+  CAPTURE(text);
+  CHECK(text.find("0 ;UNITS/MM\n1 ;RAPID\n2 L X+0 Y-20 Z+60") == 0);
+  CHECK(text.find("FMAX M128\n3 ;FEDRAT/MMPM,800\n4 L X+0 Y-20 Z+10") != std::string::npos);
+  CHECK(text.find(" F800\n5 L X+10 Y-20 Z+10") != std::string::npos);
+  CHECK(text.find("L F") == std::string::npos);
+  CHECK(text.find("L FMAX") == std::string::npos);
+  CHECK(heidenhain::read(text, "cl.h").ok());
+}

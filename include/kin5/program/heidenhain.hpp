@@ -10,7 +10,11 @@
 ///
 /// Write: one line per block (a `TOOL CALL` or `CC` line first when another dialect's block needs
 /// one), numbered 0, 1, 2, … as the control requires; source block numbers are not written.
-/// Round trip: `read(write(p))` equals `p` except `where`, `text` and `number`.
+/// A block without coordinates is never an `L` (the control's L needs its end point): a
+/// feed-only block's F goes to the next move without an F, a rapid-only block's FMAX to the next
+/// move; a block left with nothing Heidenhain can say (APT `UNITS/MM`, `RAPID`, a read `L F800`)
+/// becomes a comment carrying its source text. Round trip: `read(write(p))` equals `p` except
+/// `where`, `text` and `number`, for programs whose L blocks all have coordinates.
 /// The full description, with examples, is docs/dialects/heidenhain.md.
 #pragma once
 
@@ -627,6 +631,9 @@ inline std::string write(const program& p, const write_options& options = {}) {
   arc_plane plane = arc_plane::xy;
   std::optional<vec3> centre;
   std::optional<std::string> begin_name;
+  // From a coordinate-less block of another dialect, for the next move that has no F of its own.
+  std::optional<double> pending_feed;
+  bool pending_rapid = false;
 
   for (std::size_t bi = 0; bi < p.blocks.size(); ++bi) {
     const block& b = p.blocks[bi];
@@ -674,7 +681,17 @@ inline std::string write(const program& p, const write_options& options = {}) {
       lines.push_back("BEGIN PGM " + *begin_name + " MM");
     }
 
-    const bool moves = b.motion || !b.axes.empty() || b.feed_rapid || (b.feed && !(b.tool || b.spindle_rpm));
+    // An L needs end-point coordinates: a feed-only or rapid-only block (APT `FEDRAT/…`, `RAPID`;
+    // a lone G0 or F; a read `L F800`) is not written as `L F…` / `L FMAX`. Its F, modal here
+    // too, goes to the next move without one; its rapid to the next move as FMAX.
+    const bool coordless = b.axes.empty() && !b.arc;
+    const bool dropped_move = coordless && (b.motion || b.feed_rapid || (b.feed && !(b.tool || b.spindle_rpm)));
+    if (coordless) {
+      if (b.feed && !(b.tool || b.spindle_rpm)) pending_feed = b.feed;
+      if (b.motion == motion_kind::rapid || b.feed_rapid) pending_rapid = true;
+      else if (b.motion || b.feed) pending_rapid = false;
+    }
+    const bool moves = !coordless && (b.motion || !b.axes.empty() || b.feed_rapid || (b.feed && !(b.tool || b.spindle_rpm)));
     std::vector<std::string> kept = b.kept_words;  // written verbatim (same dialect) or into the comment
     std::vector<std::string> foreign;
     if (!same) foreign.swap(kept);
@@ -757,8 +774,12 @@ inline std::string write(const program& p, const write_options& options = {}) {
         if (w.empty() || to_upper(w[0]) != 'N') l += " " + w;
       kept.clear();
       if (b.feed && (b.feed_rapid || b.motion == motion_kind::rapid)) fail("block has both a feed and rapid traverse");
+      const bool rapid = b.feed_rapid || b.motion == motion_kind::rapid || (pending_rapid && !b.motion && !b.feed);
       if (b.feed) l += " F" + format_number(*b.feed, options.feed_decimals);
-      else if (b.feed_rapid || b.motion == motion_kind::rapid) l += " FMAX";
+      else if (rapid) l += " FMAX";
+      else if (pending_feed) l += " F" + format_number(*pending_feed, options.feed_decimals);
+      if (!rapid) pending_feed.reset();
+      pending_rapid = false;
       lines.push_back(l + m_words);
     } else if (b.tcp && *b.tcp && same && !kept.empty() && b.m_codes.empty() && !b.machine_coordinates) {
       std::string l = "FUNCTION TCPM";
@@ -781,7 +802,20 @@ inline std::string write(const program& p, const write_options& options = {}) {
       for (const std::string& w : kept) k += (k.empty() ? "" : " ") + w;
       comment += (b.comment ? " " : "") + std::string("kept: ") + k;
     }
-    const bool has_comment = b.comment || !kept.empty();
+    bool has_comment = b.comment || !kept.empty();
+    // A block that says something (units, a feed mode, a move without coordinates) with nothing
+    // Heidenhain can write for it — APT `UNITS/MM`, a lone `RAPID` — becomes its source text as a
+    // comment; a translated program's blocks keep their source text, whatever the dialect.
+    const bool unsaid = !same || dropped_move || b.metric || b.feed_mode;
+    if (lines.empty() && !has_comment && unsaid && !b.text.empty()) {
+      std::size_t k = 0;  // without a Heidenhain block number
+      if (same)
+        while (k < b.text.size() && (is_digit(b.text[k]) || is_space(b.text[k]))) ++k;
+      comment = b.text.substr(k);
+      std::replace(comment.begin(), comment.end(), '\n', ' ');
+      std::replace(comment.begin(), comment.end(), '\r', ' ');
+      has_comment = true;
+    }
     if (lines.empty()) lines.emplace_back();
     for (std::size_t k = 0; k < lines.size(); ++k) {
       std::string l = std::to_string(number++);

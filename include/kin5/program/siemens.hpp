@@ -993,6 +993,11 @@ inline std::string write(const program& p, const write_options& options = {}) {
     if (b.comment || !comment.empty()) line += line.empty() ? ";" : " ;";
     if (!comment.empty()) line += " " + comment;
     written.move(b);
+    if (line.empty() && !same && !b.program_begin && !b.text.empty()) {  // nothing Siemens can say: the source text
+      line = "; " + b.text;
+      std::replace(line.begin(), line.end(), '\n', ' ');
+      std::replace(line.begin(), line.end(), '\r', ' ');
+    }
     if (line.empty()) continue;  // nothing to say (a lone header has been written)
     if (b.program_begin && b.number && line == "N" + std::to_string(*b.number)) continue;
     out += detail::checked_line(std::move(line), b, file) + '\n';

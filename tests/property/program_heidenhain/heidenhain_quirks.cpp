@@ -180,3 +180,15 @@ TEST_CASE("heidenhain: blocks from another dialect are written, and what has no 
         "7 L Z+0 FMAX M91\n"
         "8 END PGM O1234_BRACKET MM ;end\n");
 }
+
+TEST_CASE("heidenhain: an L without coordinates is not written; its F goes to the next move") {
+  const auto r = heidenhain::read("0 L X+1 Y+2 Z+3 FMAX\n1 L F800 M3\n2 L X+4\n3 L X+5\n4 L FMAX\n5 L Z+6\n", "t.h");
+  REQUIRE(r.ok());
+  CHECK(heidenhain::write(r.parsed) ==
+        "0 L X+1 Y+2 Z+3 FMAX\n"
+        "1 M3\n"
+        "2 L X+4 F800\n"
+        "3 L X+5\n"
+        "4 ;L FMAX\n"
+        "5 L Z+6\n");
+}

@@ -118,8 +118,9 @@ item draw_item(modal& m) {
     case 2:
     case 3: {  // L
       t = draw_case("L");
+      const int required = *rc::gen::inRange(0, 6);  // an L has an end point: one axis at least
       for (int a = 0; a < 6; ++a) {
-        if (!*rc::gen::arbitrary<bool>()) continue;
+        if (a != required && !*rc::gen::arbitrary<bool>()) continue;
         const double v = a < 3 ? draw_decimal(-2000, 2000, 3) : draw_decimal(-360, 360, 3);
         t += gap() + value_word(letters[a], v, 3);
         if (a < 3) linear(b, a) = v;
