@@ -186,6 +186,15 @@ class reader {
     }
 
     const std::string_view tail = trim(content.substr(rest));
+    // In APT a trailing '$' continues the statement and '$$' starts a comment, so a '$' kept in
+    // free text could not be written back with the same meaning: reject it rather than guess.
+    if (free_text) {
+      const std::size_t dollar = content.find('$', rest);
+      if (dollar != std::string::npos) {
+        error(dollar, "'$' in " + major + " text is ambiguous (continuation or comment in APT)");
+        return b;
+      }
+    }
     const auto args = arguments(content, rest);
     auto no_values = [&] {
       if (!tail.empty()) {
@@ -201,7 +210,9 @@ class reader {
         return false;
       }
       if (n.error != number_error::none || n.length != a.text.size()) {
+        const bool malformed = n.length > 0 && a.text.substr(n.length).find_first_not_of("0123456789.eE+-") == std::string_view::npos;
         if (a.text.empty()) error(a.offset, major + " value is missing");
+        else if (malformed) error(a.offset, "malformed number '" + std::string(a.text) + "'");  // `1.2.3`, `1E5`
         else error(a.offset, "'" + std::string(a.text) + "' is not a number");
         return false;
       }

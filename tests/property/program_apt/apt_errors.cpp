@@ -26,7 +26,8 @@ TEST_CASE("apt: bad input gives one exact diagnostic") {
       {"GOTO\n", "t.cls:1:1: error: GOTO needs 3 or 6 values"},
       {"  goto/1,2,3,0,0\n", "t.cls:1:3: error: GOTO needs 3 or 6 values"},
       {"GOTO/1,X,3\n", "t.cls:1:8: error: 'X' is not a number"},
-      {"GOTO/1,2,1E5\n", "t.cls:1:10: error: '1E5' is not a number"},
+      {"GOTO/1,2,1E5\n", "t.cls:1:10: error: malformed number '1E5'"},
+      {"GOTO/1.2.3,2,3\n", "t.cls:1:6: error: malformed number '1.2.3'"},
       {"GOTO/1, - 2,3\n", "t.cls:1:9: error: '- 2' is not a number"},
       {"GOTO/1,,3\n", "t.cls:1:8: error: GOTO value is missing"},
       {"GOTO/1,2,2000000000\n", "t.cls:1:10: error: value out of range"},
@@ -38,6 +39,10 @@ TEST_CASE("apt: bad input gives one exact diagnostic") {
       {"SPINDL/SMM,200\n", "t.cls:1:8: error: constant surface speed is not supported"},
       {"LOADTL/2.5\n", "t.cls:1:8: error: tool number must be a whole number"},
       {"RAPID/5\n", "t.cls:1:7: error: unexpected '5' after RAPID"},
+      // Found by apt_fuzz: a '$' kept inside free text came back as a continuation.
+      {"PARTNO A$B\n", "t.cls:1:9: error: '$' in PARTNO text is ambiguous (continuation or comment in APT)"},
+      {"PARTNO\f\f$\f\f$\f$ $$ c\n", "t.cls:1:9: error: '$' in PARTNO text is ambiguous (continuation or comment in APT)"},
+      {"PPRINT/cost $5\n", "t.cls:1:13: error: '$' in PPRINT text is ambiguous (continuation or comment in APT)"},
       {"CIRCLE/0,0,0,0,0,1,5\n", "t.cls:1:1: error: circular CL data (CIRCLE) is not supported"},
       {"GOTO/1,$\r\n 2, Q\r\n", "t.cls:2:5: error: 'Q' is not a number"},
   };
