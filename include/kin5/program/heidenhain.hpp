@@ -95,6 +95,7 @@ struct word {
   bool bad = false;               ///< already reported
   bool expression = false;        ///< `X+Q1`, `XQ1`, `X=…`
   number_error error = number_error::none;
+  std::string malformed;          ///< a number with a second point (`+1.2.3`), as written
 };
 
 inline std::string fmt_signed(double v, int decimals) {
@@ -245,6 +246,11 @@ inline read_result read(std::string_view text, std::string file_name) {
               w.error = n.error;
               k = v;
               while (k < s.size() && !is_space(s[k]) && s[k] != ';') ++k;
+            } else if (v + n.length < s.size() && s[v + n.length] == '.') {  // `X+1.2.3`
+              k = v + n.length;
+              while (k < s.size() && (is_digit(s[k]) || s[k] == '.')) ++k;
+              w.malformed = s.substr(v, k - v);
+              w.error = number_error::not_a_number;
             } else {
               w.value = n.value;
               k = v + n.length;
@@ -290,6 +296,8 @@ inline read_result read(std::string_view text, std::string file_name) {
         error(w.pos, "expressions and parameters in axis words are not supported");
       } else if (w.error == number_error::too_large) {
         error(w.pos, "value out of range");
+      } else if (!w.malformed.empty()) {
+        error(w.pos, "malformed number '" + w.malformed + "'");
       } else if (w.error != number_error::none) {
         error(w.pos, "word '" + w.key + "' has a malformed value");
       } else if (!w.value) {

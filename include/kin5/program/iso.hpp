@@ -167,6 +167,11 @@ class reader {
         const parsed_number n = read_number(s.substr(k, end - k));
         if (n.error == number_error::too_large) return error(w.column, "value out of range");
         if (n.error != number_error::none) return error(w.column, std::string("word '") + w.letter + "' has no value");
+        if (k + n.length < end && s[k + n.length] == '.') {  // `1.2.3`
+          std::size_t e = k + n.length;
+          while (e < end && (is_digit(s[e]) || s[e] == '.')) ++e;
+          return error(w.column, "malformed number '" + std::string(s.substr(k, e - k)) + "'");
+        }
         w.value = n.value;
         w.digits = s.substr(k, n.length);
         w.text = s.substr(i, k + n.length - i);

@@ -378,7 +378,13 @@ class line_reader {
       i_ += n.length;
       return n.value;
     }
-    if ((n.length > 0 && exponent) || (n.error == number_error::too_large && !operand_follows)) {
+    if (n.length > 0 && (exponent || next == '.')) {  // `1e5`, `1.2.3`
+      i_ += extent;
+      skip_malformed_number();
+      error(start, "malformed number '" + std::string(s_.substr(value_pos, i_ - value_pos)) + "'");
+      return std::nullopt;
+    }
+    if (n.error == number_error::too_large && !operand_follows) {
       i_ += extent;
       skip_malformed_number();
       error(start, "value out of range");
@@ -421,7 +427,7 @@ class line_reader {
     const char next = peek(i_), after = to_upper(peek(i_ + 1));
     if (next == '.' || ((next == 'e' || next == 'E') && (is_digit(after) || after == '+' || after == '-' || after == 'X'))) {
       skip_malformed_number();
-      error(start, "value out of range");
+      error(start, "malformed number '" + std::string(s_.substr(value_pos, i_ - value_pos)) + "'");
       if (is_axis_letter(letter) || is_centre_letter(letter)) mark_geometry(start);
       return;
     }

@@ -26,7 +26,7 @@ TEST_CASE("heidenhain: bad input gives one exact diagnostic") {
       {"L X+1 Y\n", "t.h:1:7: error: word 'Y' has no value"},
       {"5 L X+1 F\n", "t.h:1:9: error: word 'F' has no value"},
       {"L X+1 +5\n", "t.h:1:7: error: number without an address letter"},
-      {"L X+1.2.3\n", "t.h:1:8: error: number without an address letter"},
+      {"L X+1.2.3\n", "t.h:1:3: error: malformed number '+1.2.3'"},
       {"L X+ 5\n", "t.h:1:3: error: word 'X' has a malformed value"},
       {"L X+2000000000\n", "t.h:1:3: error: value out of range"},
       {"L X+1 Y-2 X+2\n", "t.h:1:11: error: axis 'X' given twice"},

@@ -25,6 +25,7 @@ TEST_CASE("iso: bad input gives one exact diagnostic") {
       {"G1 X- 5\n", "t.nc:1:4: error: word 'X' has no value"},
       {"G1 10\n", "t.nc:1:4: error: number with no address letter"},
       {"G1 X2000000000\n", "t.nc:1:4: error: value out of range"},
+      {"G1 X1.2.3\n", "t.nc:1:4: error: malformed number '1.2.3'"},
       {"G1 X10 U5\n", "t.nc:1:8: error: unknown word 'U5'"},
       {"G1 X1\x01\n", "t.nc:1:6: error: unexpected byte 0x01"},
       {"G1 X1 $\n", "t.nc:1:7: error: unexpected character '$'"},

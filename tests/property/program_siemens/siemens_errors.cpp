@@ -36,12 +36,13 @@ const std::vector<bad_case> cases = {
     {"G1 X10 .5", {"bad.mpf:1:8: error: number '.5' has no address letter"}},
     {"N10 -3", {"bad.mpf:1:5: error: number '-3' has no address letter"}},
     // NaN, infinity, huge and malformed values
-    {"G1 X1e999", {"bad.mpf:1:4: error: value out of range"}},
+    {"G1 X1e999", {"bad.mpf:1:4: error: malformed number '1e999'"}},
     {"G1 X99999999999", {"bad.mpf:1:4: error: value out of range"}},
     {"G1 Y-1000000000.5", {"bad.mpf:1:4: error: value out of range"}},
     {"G1 XNAN", {"bad.mpf:1:4: error: value out of range"}},
     {"G1 X=INF", {"bad.mpf:1:4: error: value out of range"}},
-    {"G1 X1.2.3", {"bad.mpf:1:4: error: value out of range"}},
+    {"G1 X1.2.3", {"bad.mpf:1:4: error: malformed number '1.2.3'"}},
+    {"G1 X=1.2.3", {"bad.mpf:1:4: error: malformed number '1.2.3'"}},
     {"G1 X10 F-5", {"bad.mpf:1:8: error: value out of range"}},
     // unknown words in a block with axis words
     {"G1 X10 U5", {"bad.mpf:1:8: error: unknown word 'U5'"}},
@@ -97,7 +98,7 @@ const std::vector<bad_case> cases = {
     {"G0 X0 Y0 Z0\nG2 X1 CR=", {"bad.mpf:2:7: error: word 'CR' has no value"}},
     {"G1 B3=0 C3=1 A3=", {"bad.mpf:1:14: error: word 'A3' has no value"}},
     {"G0 X0 Y0 Z0\nG2 X1 Y1 I=R1 J0", {"bad.mpf:2:10: error: " + expr}},
-    {"G1 X=1e5 Y2", {"bad.mpf:1:4: error: value out of range"}},
+    {"G1 X=1e5 Y2", {"bad.mpf:1:4: error: malformed number '1e5'"}},
     // unclosed things
     {"G1 X10 (open", {"bad.mpf:1:8: error: comment '(' is not closed"}},
     {"MSG(\"open", {"bad.mpf:1:4: error: missing ')'"}},
