@@ -237,6 +237,13 @@ TEST_CASE("a program end is written once in every dialect") {
   CHECK(iso::write(h.parsed) == "N0 G21 (program P)\nN1 G53 G0 Z0\nN2 M30\nN3 G21\n");
   CHECK(siemens::write(h.parsed) == "%_N_P_MPF\nN0 G71\nN1 SUPA G0 Z0\nN2 M30\nN3 G71\n");
 
+  // A tool change is written once: TOOL CALL and LOADTL are the change, no M6 beside them.
+  const auto tc = siemens::read("T1 M6\nS6000 M3\n", "tool.mpf");
+  REQUIRE(tc.ok());
+  CHECK(heidenhain::write(tc.parsed) == "0 TOOL CALL 1\n1 TOOL CALL S6000\n2 M3\n");
+  CHECK(apt::write(tc.parsed) == "LOADTL/1\nSPINDL/6000,CLW\n");
+  CHECK(iso::write(tc.parsed) == "T1 M6\nS6000 M3\n");
+
   const auto i = iso::read("O1234\nN5 M30\n", "end.nc");
   REQUIRE(i.ok());
   CHECK(heidenhain::write(i.parsed) == "0 BEGIN PGM 1234 MM\n1 END PGM 1234 MM\n");

@@ -369,6 +369,7 @@ inline std::string write(const program& p, const write_options& options = {}) {
       else if (m == 9) lines.push_back("COOLNT/OFF");
       else if (m == 0) lines.push_back("STOP");
       else if (m == 1) lines.push_back("OPSTOP");
+      else if (m == 6 && b.tool) continue;  // LOADTL is the tool change: no M6 beside it
       else foreign_note = true;
     }
     if (!rpm_written) lines.push_back("SPINDL/" + rpm);

@@ -737,7 +737,8 @@ inline std::string write(const program& p, const write_options& options = {}) {
     };
 
     std::string m_words;
-    for (int m : b.m_codes) m_words += " M" + std::to_string(m);
+    for (int m : b.m_codes)
+      if (!(m == 6 && b.tool && !same)) m_words += " M" + std::to_string(m);  // TOOL CALL is the change: no M6 twice
     if (b.machine_coordinates &&
         std::find_if(b.m_codes.begin(), b.m_codes.end(), [](int m) { return m == 91 || m == 92; }) == b.m_codes.end())
       m_words += " M91";

@@ -175,10 +175,9 @@ TEST_CASE("heidenhain: blocks from another dialect are written, and what has no 
         "2 L X+10 ;kept: G17 G40\n"
         "3 CC X+15 Y+0\n"
         "4 C X+20 Y+0 DR+ F250\n"
-        "5 TOOL CALL 4\n"
-        "6 M6\n"
-        "7 L Z+0 FMAX M91\n"
-        "8 END PGM O1234_BRACKET MM ;end\n");
+        "5 TOOL CALL 4\n"  // TOOL CALL is the tool change: the ISO M6 is not written again
+        "6 L Z+0 FMAX M91\n"
+        "7 END PGM O1234_BRACKET MM ;end\n");
 }
 
 TEST_CASE("heidenhain: an L without coordinates is not written; its F goes to the next move") {
