@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Sets up a fresh Debian machine, builds everything and runs every test:
-# unit/property/golden/CLI/consumer tests through CTest, then each libFuzzer target for a
-# bounded time under AddressSanitizer and UndefinedBehaviorSanitizer.
+# Sets up a fresh Debian machine, builds everything and runs every test: each libFuzzer target
+# for a bounded number of inputs under AddressSanitizer and UndefinedBehaviorSanitizer, then the
+# unit, property, golden, CLI and consumer tests through CTest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup-debian.sh
@@ -9,7 +9,6 @@ jobs=$(nproc 2>/dev/null || echo 2)
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$jobs"
-ctest --test-dir build --output-on-failure -j"$jobs"
 
 # Fuzz smoke run: KIN5_FUZZ_RUNS inputs per reader (default 150000, 0 to skip), from a fixed
 # seed so that a CI run is reproducible; fuzz longer, with other seeds, by hand:
@@ -32,3 +31,6 @@ if [ "$runs" -gt 0 ]; then
     rm -rf "$corpus"
   done
 fi
+
+# CTest last, so that its summary closes the output.
+ctest --test-dir build --output-on-failure -j"$jobs"
