@@ -97,12 +97,6 @@ struct two_axis_geometry {
   /// Angle from u to the set of axes reachable with ψq unlimited (G5); 0 inside.
   constexpr radians workspace_gap(const vec3& u) const { return latitude_gap(angle_between(p, u).value); }
 
-  /// ψp of (G4): the signed angle about p from w = R(q, ψq) t to u, between their projections on
-  /// the plane normal to p.
-  constexpr radians azimuth(const vec3& u, radians psi_q) const {
-    const vec3 w = rotate(q, psi_q, t);
-    return signed_angle_about_p(w - dot(p, w) * p, u - dot(p, u) * p);
-  }
 
   /// Every solution of (G1) for the unit tool axis u. A u within `tolerance` of the reachable
   /// cone is treated as on it. At a pole (|p × u| ≤ `pole_radius`) ψp follows `policy`.
