@@ -18,12 +18,16 @@
 /// @endcode
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -64,6 +68,9 @@ struct translation {
   std::vector<program::diagnostic> errors;   ///< any error: the output must not be written
   std::vector<program::diagnostic> warnings; ///< e.g. a branch switch, a passed-through block
   std::size_t blocks_read = 0, blocks_written = 0, passed_through = 0;
+  /// Motion blocks per matchability class, indexed by `matchability` (direct, other branch,
+  /// unreachable): complete even when `reports` keeps only the exceptions.
+  std::array<std::size_t, 3> per_class{};
   bool ok() const { return errors.empty(); }
 };
 
@@ -99,55 +106,6 @@ struct rotary_candidate {
   bool pole = false;
 };
 
-/// The within-travel solutions of machine M for each tool axis (target frame), with the gap of
-/// those that have none. At a pole (S2) the free angle of p is taken from the neighbouring
-/// blocks (the nearest non-pole block before and after), so that staying costs nothing.
-template <machine M>
-std::vector<std::vector<rotary_candidate<M>>> rotary_candidates(std::span<const vec3> tool_axes,
-                                                                std::vector<radians>* gaps = nullptr) {
-  const std::size_t n = tool_axes.size();
-  std::vector<std::vector<rotary_candidate<M>>> out(n);
-  std::vector<bool> at_pole(n, false);
-  if (gaps) gaps->assign(n, radians{0.0});
-  auto add = [](std::vector<rotary_candidate<M>>& list, const inverse_result<M>& r, bool pole) {
-    for (const auto& s : r) {
-      if (!s.within_travel) continue;
-      bool duplicate = false;
-      for (const auto& c : list) {
-        bool same = true;
-        for (std::size_t i = 0; i < rotary_count<M>; ++i)
-          same = same && math::abs(c.angles[i].value - s.angles[i].value) <= 1e-12;
-        duplicate = duplicate || same;
-      }
-      if (!duplicate) list.push_back({s.angles, s.branch, pole});
-    }
-  };
-  for (std::size_t k = 0; k < n; ++k) {
-    const auto r = inverse<M>(tool_axes[k]);
-    if (gaps && !r.reachable()) (*gaps)[k] = r.gap;
-    at_pole[k] = r.status == reach_status::pole;
-    if (!at_pole[k]) add(out[k], r, false);
-  }
-  // The nearest reachable non-pole block before and after each block (n: none), in O(n).
-  std::vector<std::size_t> before(n, n), after(n, n);
-  for (std::size_t k = 1; k < n; ++k) before[k] = (!at_pole[k - 1] && !out[k - 1].empty()) ? k - 1 : before[k - 1];
-  for (std::size_t k = n; k-- > 1;) after[k - 1] = (!at_pole[k] && !out[k].empty()) ? k : after[k];
-  for (std::size_t k = 0; k < n; ++k) {
-    if (!at_pole[k]) continue;
-    std::vector<radians> free_angles;
-    for (std::size_t j : {before[k], after[k]})
-      if (j < n)
-        for (const auto& c : out[j]) free_angles.push_back(c.angles[0]);
-    if (free_angles.empty()) free_angles.push_back(radians{0.0});
-    for (radians p : free_angles) {
-      inverse_options options{};
-      options.pole = pole_policy::keep(p);
-      add(out[k], inverse<M>(tool_axes[k], options), true);
-    }
-  }
-  return out;
-}
-
 /// The chosen path: per tool axis the commanded angles (continuous axes unwrapped next to the
 /// previous block), or nothing when the block is unreachable.
 template <machine M>
@@ -160,78 +118,204 @@ struct rotary_path {
   double travel = 0.0;             ///< total rotary travel, radians
 };
 
-/// Chooses one within-travel solution per tool axis so that the total rotary travel Σ|Δ| over
-/// the program is least, by dynamic programming over the blocks (exact, not greedy); ties go to
-/// fewer blocks off branch 0, then to the solver's order. Unreachable blocks are skipped (the
-/// path joins the blocks either side of them). Continuous axes are unwrapped to the 360°
-/// multiple nearest the previous block; the first block keeps (−180°, 180°].
+/// Whole-program branch choice, fed one tool axis at a time: among all within-travel solutions of
+/// every block, the sequence of least total rotary travel Σ|Δ| over the program, by dynamic
+/// programming over the blocks (exact, not greedy); ties go to fewer blocks off branch 0, then to
+/// the solver's order. Unreachable blocks are skipped (the path joins the blocks either side of
+/// them). At a pole (S2) the free angle of p is taken from the nearest non-pole block before and
+/// after, so that staying costs nothing; pole blocks wait for the next non-pole block.
+///
+/// Memory: the candidates of every block (one or two per block away from poles) and one back
+/// pointer each; the DP itself keeps only the last reachable block's costs.
 template <machine M>
-rotary_path<M> plan_rotary_path(std::span<const vec3> tool_axes) {
-  const std::size_t n = tool_axes.size();
-  rotary_path<M> path;
-  const auto candidates = rotary_candidates<M>(tool_axes, &path.gap);
+class rotary_planner {
+ public:
+  /// Adds the tool axis (target frame, unit) of the next block.
+  void add(const vec3& tool_axis) {
+    const std::size_t k = count_++;
+    if (pending_.empty() && first_.size() != k) throw std::logic_error("rotary_planner: blocks out of order");
+    gap_.push_back(radians{0.0});
+    const auto r = inverse<M>(tool_axis);
+    if (!r.reachable()) gap_[k] = r.gap;
+    if (r.status == reach_status::pole) {
+      pending_.push_back({k, tool_axis, true});
+      return;
+    }
+    if (!pending_.empty()) {  // blocks wait in order behind the pole blocks
+      const bool reachable_here = std::any_of(r.begin(), r.end(), [](const auto& s) { return s.within_travel; });
+      if (!reachable_here) {
+        pending_.push_back({k, tool_axis, false});
+        return;
+      }
+      flush(&r);
+    }
+    begin_block();
+    add_within_travel(r, false);
+    if (candidates_.size() > first_[k]) {
+      step(k);
+      anchor_ = k;
+    }
+  }
+
+  /// The chosen path for every axis added (and clears the planner).
+  rotary_path<M> finish() {
+    flush(nullptr);
+    const std::size_t n = count_;
+    first_.push_back(static_cast<std::uint32_t>(candidates_.size()));  // first_[n]: the end
+    rotary_path<M> path;
+    path.gap = std::move(gap_);
+    path.angles.assign(n, std::nullopt);
+    path.branch.assign(n, -1);
+    path.pole.assign(n, false);
+    path.branches.assign(n, 0u);
+    for (std::size_t k = 0; k < n; ++k)
+      for (std::uint32_t c = first_[k]; c < first_[k + 1]; ++c)
+        path.branches[k] |= candidates_[c].pole ? 3u : (1u << candidates_[c].branch);
+    if (!frontier_.empty()) {
+      // Back pointers from the best last candidate name one candidate per reachable block.
+      std::size_t best = 0;
+      for (std::size_t c = 1; c < frontier_.size(); ++c)
+        if (better(frontier_[c], frontier_[best])) best = c;
+      std::uint32_t chosen = first_[last_] + static_cast<std::uint32_t>(best);
+      std::vector<std::uint32_t> choice(n, none32);
+      for (std::size_t k = n; k-- > 0;) {
+        if (first_[k] == first_[k + 1]) continue;
+        choice[k] = chosen;
+        chosen = candidates_[chosen].previous;
+      }
+      std::optional<rotary_angles<M>> before;
+      for (std::size_t k = 0; k < n; ++k) {
+        if (choice[k] == none32) continue;
+        const stored& c = candidates_[choice[k]];
+        rotary_angles<M> a = before ? unwrap_continuous<M>(c.angles, *before) : c.angles;
+        if (before) path.travel += rotary_travel_between<M>(*before, a)[1];
+        path.angles[k] = a;
+        path.branch[k] = c.branch;
+        path.pole[k] = c.pole;
+        before = a;
+      }
+    }
+    *this = rotary_planner{};
+    return path;
+  }
+
+ private:
+  static constexpr std::size_t none = static_cast<std::size_t>(-1);
+  static constexpr std::uint32_t none32 = static_cast<std::uint32_t>(-1);
+  struct stored {
+    rotary_angles<M> angles{};  ///< continuous axes in (−180°, 180°]
+    std::int8_t branch = 0;     ///< (G3) branch; a pole counts as both
+    bool pole = false;
+    std::uint32_t previous = none32;  ///< the best candidate of the previous reachable block
+  };
   struct cell {
     double travel = 0.0;
     int off_principal = 0;
-    std::size_t previous = 0;
   };
-  constexpr double tie = 1e-9;  // radians of total travel that count as equal
-  auto better = [](const cell& a, const cell& b) {
+  struct waiting {
+    std::size_t block;
+    vec3 axis;
+    bool pole;
+  };
+  static constexpr double tie = 1e-9;  // radians of total travel that count as equal
+  static bool better(const cell& a, const cell& b) {
     if (a.travel < b.travel - tie) return true;
     if (a.travel > b.travel + tie) return false;
     return a.off_principal < b.off_principal;
-  };
-  std::vector<std::vector<cell>> table(n);
-  std::vector<std::size_t> previous_block(n, n);
-  std::size_t last = n;
-  for (std::size_t k = 0; k < n; ++k) {
-    const auto& here = candidates[k];
-    if (here.empty()) continue;
-    table[k].resize(here.size());
-    for (std::size_t c = 0; c < here.size(); ++c) {
-      const int off = here[c].branch != 0 && !here[c].pole ? 1 : 0;
-      if (last == n) {
-        table[k][c] = {0.0, off, 0};
+  }
+
+  std::size_t count_ = 0;                // blocks added
+  std::vector<stored> candidates_;       // every block's candidates, in block order
+  std::vector<std::uint32_t> first_;     // per block: its first candidate in candidates_
+  std::vector<radians> gap_;             // per block
+  std::vector<waiting> pending_;         // blocks from the first pole block not yet resolved
+  std::vector<cell> frontier_;           // DP costs of the last reachable block's candidates
+  std::size_t last_ = none;              // that block
+  std::size_t anchor_ = none;            // the last reachable non-pole block
+
+  /// Starts the candidate list of the next block (blocks are begun in order, each once).
+  void begin_block() {
+    if (candidates_.size() >= none32) throw std::length_error("kin5: program too long for the branch planner");
+    first_.push_back(static_cast<std::uint32_t>(candidates_.size()));
+  }
+
+  /// Appends the within-travel solutions of `r` to the block begun last, without duplicates.
+  void add_within_travel(const inverse_result<M>& r, bool pole) {
+    const std::size_t start = first_.back();
+    for (const auto& s : r) {
+      if (!s.within_travel) continue;
+      bool duplicate = false;
+      for (std::size_t c = start; c < candidates_.size(); ++c) {
+        bool same = true;
+        for (std::size_t i = 0; i < rotary_count<M>; ++i)
+          same = same && math::abs(candidates_[c].angles[i].value - s.angles[i].value) <= 1e-12;
+        duplicate = duplicate || same;
+      }
+      if (!duplicate) candidates_.push_back({s.angles, static_cast<std::int8_t>(s.branch), pole, none32});
+    }
+  }
+
+  /// One DP step: the cheapest way to each candidate of block k from the last reachable block.
+  void step(std::size_t k) {
+    const std::uint32_t begin = first_[k], end = static_cast<std::uint32_t>(candidates_.size());
+    std::vector<cell> next(end - begin);
+    for (std::uint32_t c = begin; c < end; ++c) {
+      const int off = candidates_[c].branch != 0 && !candidates_[c].pole ? 1 : 0;
+      if (last_ == none) {
+        next[c - begin] = {0.0, off};
         continue;
       }
       bool have = false;
-      for (std::size_t s = 0; s < candidates[last].size(); ++s) {
-        const cell option{table[last][s].travel + rotary_step_cost<M>(candidates[last][s].angles, here[c].angles),
-                          table[last][s].off_principal + off, s};
-        if (!have || better(option, table[k][c])) table[k][c] = option, have = true;
+      for (std::size_t s = 0; s < frontier_.size(); ++s) {
+        const std::uint32_t from = first_[last_] + static_cast<std::uint32_t>(s);
+        const cell option{frontier_[s].travel + rotary_step_cost<M>(candidates_[from].angles, candidates_[c].angles),
+                          frontier_[s].off_principal + off};
+        if (!have || better(option, next[c - begin])) {
+          next[c - begin] = option;
+          candidates_[c].previous = from;
+          have = true;
+        }
       }
     }
-    previous_block[k] = last;
-    last = k;
+    frontier_ = std::move(next);
+    last_ = k;
   }
-  path.angles.assign(n, std::nullopt);
-  path.branch.assign(n, -1);
-  path.pole.assign(n, false);
-  path.branches.assign(n, 0u);
-  for (std::size_t k = 0; k < n; ++k)
-    for (const auto& c : candidates[k]) path.branches[k] |= c.pole ? 3u : (1u << c.branch);
-  if (last == n) return path;
-  std::vector<std::size_t> choice(n, 0);
-  std::size_t best = 0;
-  for (std::size_t c = 1; c < table[last].size(); ++c)
-    if (better(table[last][c], table[last][best])) best = c;
-  for (std::size_t k = last;; k = previous_block[k]) {
-    choice[k] = best;
-    best = table[k][best].previous;
-    if (previous_block[k] == n) break;
+
+  /// Resolves the waiting blocks, given the solutions `after` of the next reachable non-pole
+  /// block (none at the end of the program).
+  void flush(const inverse_result<M>* after) {
+    if (pending_.empty()) return;
+    std::vector<radians> free_angles;
+    if (anchor_ != none) {
+      const std::size_t end = anchor_ + 1 < first_.size() ? first_[anchor_ + 1] : candidates_.size();
+      for (std::size_t c = first_[anchor_]; c < end; ++c) free_angles.push_back(candidates_[c].angles[0]);
+    }
+    if (after)
+      for (const auto& s : *after)
+        if (s.within_travel) free_angles.push_back(s.angles[0]);
+    if (free_angles.empty()) free_angles.push_back(radians{0.0});
+    const std::vector<waiting> waiting_blocks = std::move(pending_);
+    pending_.clear();
+    for (const waiting& w : waiting_blocks) {
+      begin_block();
+      if (w.pole) {
+        for (radians p : free_angles) {
+          inverse_options options{};
+          options.pole = pole_policy::keep(p);
+          add_within_travel(inverse<M>(w.axis, options), true);
+        }
+      }
+      if (candidates_.size() > first_[w.block]) step(w.block);
+    }
   }
-  std::optional<rotary_angles<M>> before;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (candidates[k].empty()) continue;
-    const auto& c = candidates[k][choice[k]];
-    rotary_angles<M> a = before ? unwrap_continuous<M>(c.angles, *before) : c.angles;
-    if (before) path.travel += rotary_travel_between<M>(*before, a)[1];
-    path.angles[k] = a;
-    path.branch[k] = c.branch;
-    path.pole[k] = c.pole;
-    before = a;
-  }
-  return path;
+};
+
+/// `rotary_planner` over a whole list of tool axes (target frame).
+template <machine M>
+rotary_path<M> plan_rotary_path(std::span<const vec3> tool_axes) {
+  rotary_planner<M> planner;
+  for (const vec3& u : tool_axes) planner.add(u);
+  return planner.finish();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -268,8 +352,8 @@ struct source_step {
   vec3 axis = unit_z;                 ///< source workpiece frame, unit
   std::array<double, 2> rotary_deg{}; ///< source commanded angles, machine order (K16)
   std::size_t rotary_n = 0;
-  std::string angles_text;
-  bool principal = true;
+  std::array<char, 2> rotary_letters{};  ///< the letters of `rotary_deg`
+  bool principal = true;                 ///< set when classified (the second pass)
   program::motion_kind motion = program::motion_kind::linear;
   bool rapid = false;
   std::optional<double> feed;         ///< F in effect
@@ -280,16 +364,29 @@ struct source_step {
   std::optional<double> radius_mm;
 };
 
+/// The source pose of a motion step as a report shows it: "A=-77.954 B=3.536" (degrees, letters
+/// in alphabetical order), or "I=… J=… K=…" for a tool-axis vector.
+inline std::string angles_text(const source_step& s) {
+  if (s.rotary_n == 0) return "I=" + fixed(s.axis.x, 7) + " J=" + fixed(s.axis.y, 7) + " K=" + fixed(s.axis.z, 7);
+  std::string text;
+  for (char letter : {'A', 'B', 'C'})
+    for (std::size_t i = 0; i < s.rotary_n; ++i)
+      if (s.rotary_letters[i] == letter) {
+        if (!text.empty()) text += ' ';
+        text += std::string(1, letter) + "=" + fixed(s.rotary_deg[i], 3);
+      }
+  return text;
+}
+
 /// Source side of an NC program of machine From: angles → tool axis by (G1).
 template <machine From>
 struct nc_source {
   static constexpr bool needs_tcp = true;
   static constexpr bool has_angles = true;
   static std::optional<std::string> pose(const program::modal_state& m, source_step& s, std::string& warned,
-                                         std::vector<std::string>& notes) {
+                                         std::vector<std::string>& notes, bool classify) {
     if (m.tool_axis) {  // a tool-axis vector written in the program (G43.5 IJK, LN TX TY TZ)
       s.axis = *m.tool_axis;
-      s.angles_text = "I=" + fixed(s.axis.x, 7) + " J=" + fixed(s.axis.y, 7) + " K=" + fixed(s.axis.z, 7);
       s.rotary_n = 0;
       return std::nullopt;
     }
@@ -302,17 +399,12 @@ struct nc_source {
         warned.push_back(letter);
         notes.push_back(std::string("rotary axis ") + letter + " has no value yet; taken as 0 (the zero pose)");
       }
+      s.rotary_letters[i] = letter;
       s.rotary_deg[i] = v.value_or(0.0);
       angles[i] = to_radians(degrees{s.rotary_deg[i]});
     }
-    for (char letter : {'A', 'B', 'C'}) {
-      const std::size_t i = rotary_index<From>(static_cast<axis_letter>(letter));
-      if (i == rotary_count<From>) continue;
-      if (!s.angles_text.empty()) s.angles_text += ' ';
-      s.angles_text += std::string(1, letter) + "=" + fixed(s.rotary_deg[i], 3);
-    }
     s.axis = tool_axis<From>(angles);
-    s.principal = on_principal_branch<From>(angles);
+    if (classify) s.principal = on_principal_branch<From>(angles);
     return std::nullopt;
   }
 };
@@ -322,10 +414,9 @@ struct cl_source {
   static constexpr bool needs_tcp = false;
   static constexpr bool has_angles = false;
   static std::optional<std::string> pose(const program::modal_state& m, source_step& s, std::string&,
-                                         std::vector<std::string>&) {
+                                         std::vector<std::string>&, bool) {
     s.axis = m.tool_axis.value_or(unit_z);
     if (!(norm(s.axis) > 0.5)) return std::string("tool-axis vector of zero length");
-    s.angles_text = "I=" + fixed(s.axis.x, 7) + " J=" + fixed(s.axis.y, 7) + " K=" + fixed(s.axis.z, 7);
     return std::nullopt;
   }
 };
@@ -378,55 +469,61 @@ inline double arc_length(const source_step& s, const vec3& start, const vec3& en
 
 inline program::diagnostic at(const program::block& b, std::string message) { return {b.where, std::move(message)}; }
 
-/// The source side: walks the program with its modal state and turns each block into a step.
+/// The source side: walks the program's blocks in order with their modal state and turns each
+/// into a step. Diagnostics go to `out` when given (the first pass), else nowhere (the second
+/// pass, which sees the same blocks again).
 template <class Source>
-std::vector<source_step> read_source(const program::program& in, translation& out) {
-  std::vector<source_step> steps(in.blocks.size());
-  program::modal_state m;
-  std::string warned;
-  for (std::size_t k = 0; k < in.blocks.size(); ++k) {
-    const program::block& b = in.blocks[k];
+class source_walker {
+ public:
+  /// The step of block `b`; `classify`: whether to set `source_step::principal`.
+  source_step next(const program::block& b, translation* out, bool classify) {
+    auto warn = [&](program::diagnostic d) {
+      if (out) out->warnings.push_back(std::move(d));
+    };
+    auto fail = [&](program::diagnostic d) {
+      if (out) out->errors.push_back(std::move(d));
+    };
     const program::modal_state before = m;
     m.apply(b);
-    source_step& s = steps[k];
+    source_step s;
     if (b.machine_coordinates) {
       s.what = source_step::kind::passthrough;
-      out.warnings.push_back(at(b, "machine-coordinate move passed through unchanged, not through kinematics; "
+      warn(at(b, "machine-coordinate move passed through unchanged, not through kinematics; "
                                    "the tool position after it is unknown"));
-      continue;
+      return s;
     }
     if (b.passthrough) {
       s.what = source_step::kind::passthrough;
-      out.warnings.push_back(at(b, "block not understood: passed through unchanged"));
-      continue;
+      warn(at(b, "block not understood: passed through unchanged"));
+      return s;
     }
-    if (!b.moves()) continue;  // copy
+    if (!b.moves()) return s;  // copy
     s.what = source_step::kind::failed;
     if (Source::needs_tcp && !m.tcp) {
-      out.errors.push_back(at(b, std::string(b.axes.has_rotary() || m.rotary_moved ? rotary_tcp_off_message
+      fail(at(b, std::string(b.axes.has_rotary() || m.rotary_moved ? rotary_tcp_off_message
                                                                                    : tcp_off_message)));
-      continue;
+      return s;
     }
     const auto kind = m.motion_of(b);
-    if (!kind) out.warnings.push_back(at(b, "no motion mode in effect; taken as linear (G1)"));
+    if (!kind) warn(at(b, "no motion mode in effect; taken as linear (G1)"));
     s.motion = kind.value_or(program::motion_kind::linear);
     s.rapid = s.motion == program::motion_kind::rapid || b.feed_rapid;
     std::string missing;
     for (char letter : {'X', 'Y', 'Z'})
       if (!m.value(letter)) missing += letter;
     if (!missing.empty()) {
-      out.errors.push_back(at(b, "the tool tip is not known: no value yet for " + missing +
+      fail(at(b, "the tool tip is not known: no value yet for " + missing +
                                      " (the first motion must give the full position)"));
-      continue;
+      return s;
     }
     s.tip_mm = {*m.x_mm, *m.y_mm, *m.z_mm};
     if (before.x_mm && before.y_mm && before.z_mm) s.start_mm = vec3{*before.x_mm, *before.y_mm, *before.z_mm};
     std::vector<std::string> notes;
-    if (auto error = Source::pose(m, s, warned, notes)) {
-      out.errors.push_back(at(b, *error));
-      continue;
+    if (auto error = Source::pose(m, s, warned, notes, classify)) {
+      fail(at(b, *error));
+      return s;
     }
-    for (auto& note : notes) out.warnings.push_back(at(b, std::move(note)));
+    for (auto& note : notes) warn(at(b, std::move(note)));
     s.feed = m.feed;
     s.feed_mode = m.feed_mode;
     if (program::is_arc(s.motion)) {
@@ -438,23 +535,27 @@ std::vector<source_step> read_source(const program::program& in, translation& ou
                                 (b.axes.b_deg && b.axes.b_deg != before.b_deg) ||
                                 (b.axes.c_deg && b.axes.c_deg != before.c_deg);
       if (rotary_moves) {
-        out.errors.push_back(at(b, "circular move cannot be mapped: the rotary axes move during it"));
-        continue;
+        fail(at(b, "circular move cannot be mapped: the rotary axes move during it"));
+        return s;
       }
       if (!s.start_mm) {
-        out.errors.push_back(at(b, "circular move cannot be mapped: its start point is not known"));
-        continue;
+        fail(at(b, "circular move cannot be mapped: its start point is not known"));
+        return s;
       }
       if (!s.centre_mm && !s.radius_mm) {
-        out.errors.push_back(at(b, "circular move cannot be mapped: no centre or radius"));
-        continue;
+        fail(at(b, "circular move cannot be mapped: no centre or radius"));
+        return s;
       }
       if (s.centre_mm) set_component(*s.centre_mm, s.plane, component(*s.start_mm, s.plane));
     }
     s.what = source_step::kind::motion;
+    return s;
   }
-  return steps;
-}
+
+ private:
+  program::modal_state m;
+  std::string warned;
+};
 
 /// Maps the plane-selection words G17/G18/G19 kept in a block through the setup rotation.
 inline std::optional<std::string> map_plane_words(program::block& b, const mat3& R) {
@@ -492,41 +593,41 @@ inline program::block carried_over(program::block b, program::dialect from, prog
   return b;
 }
 
-/// The target side for an NC machine To: branch choice over the program, feed, output blocks.
+/// The target side for an NC machine To: branch choice over the program (first pass), then feed
+/// and output blocks (second pass).
 template <machine To>
-void write_nc(const program::program& in, const std::vector<source_step>& steps, const rigid_transform& target_T_source,
-              feed_policy policy, program::dialect language, bool switch_tcp_on, translation& out) {
-  const mat3& R = target_T_source.rotation;
-  std::vector<std::size_t> motion_index;
-  std::vector<vec3> axes;
-  for (std::size_t k = 0; k < steps.size(); ++k)
-    if (steps[k].what == source_step::kind::motion) {
-      motion_index.push_back(k);
-      axes.push_back(normalized(target_T_source.map_direction(steps[k].axis)));
-    }
-  const rotary_path<To> path = plan_rotary_path<To>(axes);
+class nc_target {
+ public:
+  nc_target(const rigid_transform& target_T_source, feed_policy feed, program::dialect from, program::dialect to,
+            bool switch_on)
+      : T(target_T_source), policy(feed), source_language(from), language(to), switch_tcp_on(switch_on) {}
 
-  bool output_inverse_time = false, tcp_switched_on = false, inverse_time_error = false;
-  std::optional<std::size_t> previous;  // index into motion_index of the last written motion
-  std::size_t m = 0;
-  for (std::size_t k = 0; k < steps.size(); ++k) {
-    const program::block& b = in.blocks[k];
-    const source_step& s = steps[k];
-    if (s.what == source_step::kind::failed) continue;
+  /// First pass: the step of every block, in order.
+  void plan(const source_step& s) {
+    if (s.what == source_step::kind::motion) planner.add(normalized(T.map_direction(s.axis)));
+  }
+  void finish_plan() { path = planner.finish(); }
+
+  /// Second pass: block `b` (whose step is `s`) → `emit`; reports to `on_report`.
+  template <class Emit, class Report>
+  void write(const program::block& b, const source_step& s, translation& out, Emit&& emit, Report&& on_report) {
+    const mat3& R = T.rotation;
+    const rigid_transform& target_T_source = T;
+    if (s.what == source_step::kind::failed) return;
     if (s.what == source_step::kind::passthrough) {
-      out.output.blocks.push_back(carried_over(b, in.language, language));
+      emit(carried_over(b, source_language, language));
       ++out.passed_through;
-      continue;
+      return;
     }
     program::block o = b;
     if (auto error = map_plane_words(o, R)) {
       out.errors.push_back(at(b, *error));
-      continue;
+      return;
     }
-    o = carried_over(std::move(o), in.language, language);
+    o = carried_over(std::move(o), source_language, language);
     if (b.feed_mode == program::feed_unit::inverse_time && !supports_inverse_time(language)) {
       out.errors.push_back(at(b, "inverse-time feed (G93) cannot be written in " + std::string(program::name(language))));
-      continue;
+      return;
     }
     if (s.what == source_step::kind::copy) {
       if (b.arc && b.arc->centre_mm) {  // an arc centre on its own (Heidenhain CC)
@@ -534,7 +635,7 @@ void write_nc(const program::program& in, const std::vector<source_step>& steps,
         if (!mapped) {
           out.errors.push_back(at(b, "circular move cannot be mapped: plane " + std::string(plane_name(b.arc->plane)) +
                                          " has no principal image on the target"));
-          continue;
+          return;
         }
         o.arc->plane = mapped->first;
         o.arc->centre_mm = target_T_source.map_point(*b.arc->centre_mm);
@@ -549,28 +650,28 @@ void write_nc(const program::program& in, const std::vector<source_step>& steps,
         o.feed_mode.reset();
       }
       if (switch_tcp_on && tcp_switched_on && b.program_end) o.tcp = false;
-      out.output.blocks.push_back(std::move(o));
-      continue;
+      emit(std::move(o));
+      return;
     }
 
     // A motion block.
     const std::size_t j = m++;
-    block_report report{b.where, matchability::direct, {}, s.angles_text, {}};
+    block_report report{b.where, matchability::direct, {}, {}, {}};
     if (!path.angles[j]) {
       report.match = matchability::unreachable;
       report.gap = path.gap[j];
       report.why = "tool axis " + fixed(to_degrees(path.gap[j]).value, 3) + "° outside the reach of " +
                    std::string(To::id);
-      out.errors.push_back(at(b, std::string(To::id) + " cannot reach this block (" + s.angles_text + "): " + report.why));
-      out.reports.push_back(std::move(report));
-      continue;
+      out.errors.push_back(at(b, std::string(To::id) + " cannot reach this block (" + angles_text(s) + "): " + report.why));
+      on_report(std::move(report));
+      return;
     }
     if (!s.principal) {
       report.match = matchability::other_branch;
       report.why = "the source pose is on the second solution branch of the source machine (K3); a closed-form "
                    "translation on the principal branch would turn the table 180° off (spec E6)";
     }
-    out.reports.push_back(report);
+    on_report(block_report(report));
     const rotary_angles<To>& angles = *path.angles[j];
     const vec3 tip = target_T_source.map_point(s.tip_mm);
     std::array<double, 2> target_deg{};
@@ -584,11 +685,11 @@ void write_nc(const program::program& in, const std::vector<source_step>& steps,
       if (!mapped) {
         out.errors.push_back(at(b, "circular move cannot be mapped: plane " + std::string(plane_name(s.plane)) +
                                        " maps to a plane that is not XY, ZX or YZ on the target"));
-        continue;
+        return;
       }
       if (previous && path.angles[*previous] && rotary_step_cost<To>(*path.angles[*previous], angles) > 1e-9) {
         out.errors.push_back(at(b, "circular move cannot be mapped: the target's rotary axes would move during it"));
-        continue;
+        return;
       }
       const auto [plane, flipped] = *mapped;
       const vec3 start = target_T_source.map_point(*s.start_mm);
@@ -616,7 +717,7 @@ void write_nc(const program::program& in, const std::vector<source_step>& steps,
     } else if (policy == feed_policy::block_time && s.feed) {
       double l_s = 0.0, l_d = 0.0;
       if (previous) {
-        const source_step& p = steps[motion_index[*previous]];
+        const source_step& p = previous_step;
         std::array<double, 2> ds{}, dd{};
         for (std::size_t i = 0; i < s.rotary_n && i < p.rotary_n; ++i) ds[i] = s.rotary_deg[i] - p.rotary_deg[i];
         for (std::size_t i = 0; i < rotary_count<To>; ++i)
@@ -634,7 +735,7 @@ void write_nc(const program::program& in, const std::vector<source_step>& steps,
       double length = s.start_mm ? (program::is_arc(s.motion) ? arc_length(s, *s.start_mm, s.tip_mm) : norm(s.tip_mm - *s.start_mm))
                                  : 0.0;
       if (!(length > 0.0) && previous) {  // orientation only: the source's (K16) length in degrees
-        const source_step& p = steps[motion_index[*previous]];
+        const source_step& p = previous_step;
         std::array<double, 2> ds{};
         for (std::size_t i = 0; i < s.rotary_n && i < p.rotary_n; ++i) ds[i] = s.rotary_deg[i] - p.rotary_deg[i];
         length = block_length({}, std::span<const double>(ds.data(), s.rotary_n));
@@ -654,26 +755,44 @@ void write_nc(const program::program& in, const std::vector<source_step>& steps,
                                        std::to_string(path.branch[j]) + " on " + std::string(To::id)));
     }
     previous = j;
-    out.output.blocks.push_back(std::move(o));
+    previous_step = s;
+    emit(std::move(o));
   }
-  out.blocks_written = out.output.blocks.size();
-}
 
-/// The target side for APT CL data: GOTO/x,y,z,i,j,k per motion block.
-inline void write_cl(const program::program& in, const std::vector<source_step>& steps, translation& out) {
-  for (std::size_t k = 0; k < steps.size(); ++k) {
-    const program::block& b = in.blocks[k];
-    const source_step& s = steps[k];
-    if (s.what == source_step::kind::failed) continue;
+ private:
+  rigid_transform T;  // target_T_source
+  feed_policy policy;
+  program::dialect source_language, language;
+  bool switch_tcp_on;
+  rotary_planner<To> planner;
+  rotary_path<To> path;
+  bool output_inverse_time = false, tcp_switched_on = false, inverse_time_error = false;
+  std::optional<std::size_t> previous;  // motion index of the last written motion
+  source_step previous_step;            // its step
+  std::size_t m = 0;                    // motion index of the next motion block
+};
+
+/// The target side for APT CL data: GOTO/x,y,z,i,j,k per motion block (no planning).
+class cl_target {
+ public:
+  explicit cl_target(program::dialect from) : source_language(from) {}
+
+  void plan(const source_step&) {}
+  void finish_plan() {}
+
+  /// Second pass: block `b` (whose step is `s`) → `emit`; reports to `on_report`.
+  template <class Emit, class Report>
+  void write(const program::block& b, const source_step& s, translation& out, Emit&& emit, Report&& on_report) {
+    if (s.what == source_step::kind::failed) return;
     if (s.what == source_step::kind::passthrough) {
-      out.output.blocks.push_back(carried_over(b, in.language, program::dialect::apt));
+      emit(carried_over(b, source_language, program::dialect::apt));
       ++out.passed_through;
-      continue;
+      return;
     }
-    program::block o = carried_over(b, in.language, program::dialect::apt);
+    program::block o = carried_over(b, source_language, program::dialect::apt);
     if (b.feed_mode == program::feed_unit::inverse_time) {
       out.errors.push_back(at(b, "inverse-time feed (G93) cannot be written as APT CL data"));
-      continue;
+      return;
     }
     if (o.tcp) {  // CL data is tool-tip data: tracking is implied
       if (!o.comment) o.comment = *o.tcp ? "tool-tip tracking on" : "tool-tip tracking off";
@@ -681,16 +800,16 @@ inline void write_cl(const program::program& in, const std::vector<source_step>&
     }
     if (s.what == source_step::kind::copy) {
       o.arc.reset();
-      out.output.blocks.push_back(std::move(o));
-      continue;
+      emit(std::move(o));
+      return;
     }
-    block_report report{b.where, s.principal ? matchability::direct : matchability::other_branch, {}, s.angles_text, {}};
+    block_report report{b.where, s.principal ? matchability::direct : matchability::other_branch, {}, {}, {}};
     if (!s.principal)
       report.why = "the source pose is on the second solution branch of the source machine (K3)";
-    out.reports.push_back(report);
+    on_report(block_report(report));
     if (program::is_arc(s.motion)) {
       out.errors.push_back(at(b, "circular move cannot be written as GOTO points; kin5 does not linearise arcs"));
-      continue;
+      return;
     }
     o.text.clear();
     o.axes = {};
@@ -698,47 +817,161 @@ inline void write_cl(const program::program& in, const std::vector<source_step>&
     o.axes.tool_axis = s.axis;
     o.motion = s.rapid ? program::motion_kind::rapid : program::motion_kind::linear;
     if (s.rapid) o.feed.reset();
-    out.output.blocks.push_back(std::move(o));
+    emit(std::move(o));
   }
-  out.blocks_written = out.output.blocks.size();
-}
 
-inline translation start(const program::program& in, program::dialect language) {
-  translation out;
-  out.blocks_read = in.blocks.size();
-  out.output.language = language;
-  out.output.file = in.file;
-  return out;
-}
+ private:
+  program::dialect source_language;
+};
 
-inline program::diagnostic file_error(const program::program& in, std::string message) {
-  return {program::source_location{in.file, 0, 0}, std::move(message)};
+inline program::diagnostic file_error(const std::string& file, std::string message) {
+  return {program::source_location{file, 0, 0}, std::move(message)};
 }
 
 }  // namespace translate_detail
+
+/// Which block reports a translation keeps (`translation::per_class` counts them all anyway).
+enum class report_detail {
+  every_block,      ///< one report per motion block
+  exceptions_only,  ///< only blocks that are not `matchability::direct`: constant memory
+};
+
+/// A translation, reverse or post run in two passes over the blocks of one program, for
+/// programs of any length: call `plan` with every block in file order, then `write` with the
+/// same blocks in the same order. Each output block goes to the sink given to `write` as soon
+/// as it is made; nothing is stored per block but the branch planner's candidates (tens of
+/// bytes per motion block). Make one with `make_translator`, `make_reverse` or `make_post`.
+///
+/// The first pass finds the source's errors and the blocks the target cannot reach; the second
+/// finds what can only be seen while writing (arcs the setup cannot map, feeds the dialect
+/// cannot say). Either way, any error in `result()` means the output must not be used.
+class block_translator {
+ public:
+  virtual ~block_translator() = default;
+  /// First pass: the next block of the program.
+  virtual void plan(const program::block& b) = 0;
+  /// Second pass: the next block of the same program (after every `plan`); output to `emit`.
+  virtual void write(const program::block& b, const program::block_sink& emit) = 0;
+  /// Counts, reports, errors and warnings so far (`output` stays empty: blocks go to `emit`).
+  translation& result() { return result_; }
+
+ protected:
+  translation result_;
+};
+
+namespace translate_detail {
+
+/// `block_translator` for one source side and one target side.
+template <class Source, class Target>
+class two_pass_translator final : public block_translator {
+ public:
+  /// `refusal`: a reason not to run at all (an error for the whole file); blocks are then only
+  /// counted.
+  two_pass_translator(Target target, const std::string& file, program::dialect output_language, report_detail detail,
+                      std::optional<std::string> refusal = std::nullopt)
+      : target_(std::move(target)), detail_(detail), refused_(refusal.has_value()) {
+    result_.output.language = output_language;
+    result_.output.file = file;
+    if (refusal) result_.errors.push_back(file_error(file, std::move(*refusal)));
+  }
+
+  void plan(const program::block& b) override {
+    ++result_.blocks_read;
+    if (!refused_) target_.plan(first_.next(b, &result_, false));
+  }
+
+  void write(const program::block& b, const program::block_sink& emit) override {
+    if (refused_) return;
+    if (!planned_) target_.finish_plan(), planned_ = true;
+    const source_step s = second_.next(b, nullptr, true);
+    target_.write(
+        b, s, result_,
+        [&](program::block&& o) {
+          ++result_.blocks_written;
+          emit(std::move(o));
+        },
+        [&](block_report&& r) {
+          ++result_.per_class[static_cast<std::size_t>(r.match)];
+          if (detail_ == report_detail::every_block || r.match != matchability::direct) {
+            r.source_angles = angles_text(s);
+            result_.reports.push_back(std::move(r));
+          }
+        });
+  }
+
+ private:
+  Target target_;
+  report_detail detail_;
+  bool refused_;
+  bool planned_ = false;
+  source_walker<Source> first_, second_;
+};
+
+/// Why `translate` cannot run on a program in `source_language`, if it cannot.
+inline std::optional<std::string> translate_refusal(program::dialect source_language, const translate_options& options) {
+  if (source_language == program::dialect::apt) return "APT CL data names no machine axes: use post, not translate";
+  if (options.output_dialect == program::dialect::apt) return "translate writes NC; for APT CL data use reverse";
+  if (options.feed == feed_policy::inverse_time && !supports_inverse_time(options.output_dialect))
+    return "inverse-time feed (G93) cannot be written in " + std::string(program::name(options.output_dialect));
+  return std::nullopt;
+}
+
+/// Both passes of `t` over a whole program; the output program collects the emitted blocks.
+inline translation run(block_translator& t, const program::program& in) {
+  for (const program::block& b : in.blocks) t.plan(b);
+  std::vector<program::block> output;
+  const program::block_sink emit = [&](program::block&& o) { output.push_back(std::move(o)); };
+  for (const program::block& b : in.blocks) t.write(b, emit);
+  translation out = std::move(t.result());
+  out.output.blocks = std::move(output);
+  return out;
+}
+
+}  // namespace translate_detail
+
+/// The two passes of `translate<From, To>` (see `block_translator`), for a program read in
+/// `source_language` from `file`.
+template <machine From, machine To>
+std::unique_ptr<block_translator> make_translator(program::dialect source_language, const std::string& file,
+                                                  const translate_options& options = {},
+                                                  report_detail detail = report_detail::every_block) {
+  using namespace translate_detail;
+  return std::make_unique<two_pass_translator<nc_source<From>, nc_target<To>>>(
+      nc_target<To>(options.setup.value_or(default_setup<From, To>()), options.feed, source_language,
+                    options.output_dialect, false),
+      file, options.output_dialect, detail, translate_refusal(source_language, options));
+}
+
+/// The two passes of `reverse<M>` (see `block_translator`).
+template <machine M>
+std::unique_ptr<block_translator> make_reverse(program::dialect source_language, const std::string& file,
+                                               report_detail detail = report_detail::every_block) {
+  using namespace translate_detail;
+  return std::make_unique<two_pass_translator<nc_source<M>, cl_target>>(
+      cl_target(source_language), file, program::dialect::apt, detail,
+      source_language == program::dialect::apt ? std::optional<std::string>("the input is already APT CL data")
+                                               : std::nullopt);
+}
+
+/// The two passes of `post<M>` (see `block_translator`).
+template <machine M>
+std::unique_ptr<block_translator> make_post(program::dialect source_language, program::dialect out_dialect,
+                                            const std::string& file,
+                                            report_detail detail = report_detail::every_block) {
+  using namespace translate_detail;
+  return std::make_unique<two_pass_translator<cl_source, nc_target<M>>>(
+      nc_target<M>(rigid_transform::identity(), feed_policy::tcp, source_language, out_dialect, true), file,
+      out_dialect, detail,
+      out_dialect == program::dialect::apt
+          ? std::optional<std::string>("post writes NC: choose siemens, heidenhain or iso")
+          : std::nullopt);
+}
 
 /// Translates NC program `nc` of machine From into one for machine To (see the file comment).
 /// The source must run with tool-tip tracking; `options.output_dialect` must be an NC dialect.
 template <machine From, machine To>
 translation translate(const program::program& nc, const translate_options& options = {}) {
-  translation out = translate_detail::start(nc, options.output_dialect);
-  if (nc.language == program::dialect::apt) {
-    out.errors.push_back(translate_detail::file_error(nc, "APT CL data names no machine axes: use post, not translate"));
-    return out;
-  }
-  if (options.output_dialect == program::dialect::apt) {
-    out.errors.push_back(translate_detail::file_error(nc, "translate writes NC; for APT CL data use reverse"));
-    return out;
-  }
-  if (options.feed == feed_policy::inverse_time && !supports_inverse_time(options.output_dialect)) {
-    out.errors.push_back(translate_detail::file_error(nc, "inverse-time feed (G93) cannot be written in " +
-                                                    std::string(program::name(options.output_dialect))));
-    return out;
-  }
-  const auto steps = translate_detail::read_source<translate_detail::nc_source<From>>(nc, out);
-  translate_detail::write_nc<To>(nc, steps, options.setup.value_or(default_setup<From, To>()), options.feed,
-                                                options.output_dialect, false, out);
-  return out;
+  return translate_detail::run(*make_translator<From, To>(nc.language, nc.file, options), nc);
 }
 
 /// The inverse post: NC program `nc` of machine M → APT CL data, each motion block a
@@ -746,14 +979,7 @@ translation translate(const program::program& nc, const translate_options& optio
 /// Circular moves are errors (CL data here is GOTO points only).
 template <machine M>
 translation reverse(const program::program& nc) {
-  translation out = translate_detail::start(nc, program::dialect::apt);
-  if (nc.language == program::dialect::apt) {
-    out.errors.push_back(translate_detail::file_error(nc, "the input is already APT CL data"));
-    return out;
-  }
-  const auto steps = translate_detail::read_source<translate_detail::nc_source<M>>(nc, out);
-  translate_detail::write_cl(nc, steps, out);
-  return out;
+  return translate_detail::run(*make_reverse<M>(nc.language, nc.file), nc);
 }
 
 /// The post: APT CL data `cl` → NC for machine M in dialect `out_dialect`: `inverse<M>` of every
@@ -762,14 +988,7 @@ translation reverse(const program::program& nc) {
 /// spells it) and off again in the program-end block.
 template <machine M>
 translation post(const program::program& cl, program::dialect out_dialect) {
-  translation out = translate_detail::start(cl, out_dialect);
-  if (out_dialect == program::dialect::apt) {
-    out.errors.push_back(translate_detail::file_error(cl, "post writes NC: choose siemens, heidenhain or iso"));
-    return out;
-  }
-  const auto steps = translate_detail::read_source<translate_detail::cl_source>(cl, out);
-  translate_detail::write_nc<M>(cl, steps, rigid_transform::identity(), feed_policy::tcp, out_dialect, true, out);
-  return out;
+  return translate_detail::run(*make_post<M>(cl.language, out_dialect, cl.file), cl);
 }
 
 namespace translate_detail {
@@ -778,47 +997,73 @@ inline std::string catalog_ids() {
   machines::for_each_machine([&]<class M>() { ids += (ids.empty() ? "" : ", ") + std::string(M::id); });
   return ids;
 }
-inline translation unknown_machine(const program::program& in, program::dialect language, std::string_view id) {
-  translation out = start(in, language);
-  out.errors.push_back(file_error(in, "unknown machine '" + std::string(id) + "'; known: " + catalog_ids()));
-  return out;
+
+/// A `block_translator` that only counts blocks: for a machine id not in the catalog.
+inline std::unique_ptr<block_translator> unknown_machine(const std::string& file, program::dialect language,
+                                                         std::string_view id) {
+  return std::make_unique<two_pass_translator<cl_source, cl_target>>(
+      cl_target(language), file, language, report_detail::every_block,
+      "unknown machine '" + std::string(id) + "'; known: " + catalog_ids());
 }
 }  // namespace translate_detail
 
-/// `translate<From, To>` for catalog ids; an error for an unknown id.
-inline translation translate(std::string_view from_id, std::string_view to_id, const program::program& nc,
-                             const translate_options& options) {
-  std::optional<translation> out;
+/// `make_translator<From, To>` for catalog ids; for an unknown id, a translator whose result
+/// holds that error.
+inline std::unique_ptr<block_translator> make_translator(std::string_view from_id, std::string_view to_id,
+                                                         program::dialect source_language, const std::string& file,
+                                                         const translate_options& options,
+                                                         report_detail detail = report_detail::every_block) {
+  std::unique_ptr<block_translator> out;
   bool from_known = false;
   machines::for_each_machine([&]<class From>() {
     if (From::id != from_id) return;
     from_known = true;
     machines::for_each_machine([&]<class To>() {
-      if (To::id == to_id) out = translate<From, To>(nc, options);
+      if (To::id == to_id) out = make_translator<From, To>(source_language, file, options, detail);
     });
   });
-  if (out) return std::move(*out);
-  return translate_detail::unknown_machine(nc, options.output_dialect, from_known ? to_id : from_id);
+  if (out) return out;
+  return translate_detail::unknown_machine(file, options.output_dialect, from_known ? to_id : from_id);
+}
+
+/// `make_reverse<M>` for a catalog id; for an unknown id, a translator whose result holds that error.
+inline std::unique_ptr<block_translator> make_reverse(std::string_view machine_id, program::dialect source_language,
+                                                      const std::string& file,
+                                                      report_detail detail = report_detail::every_block) {
+  std::unique_ptr<block_translator> out;
+  machines::for_each_machine([&]<class M>() {
+    if (M::id == machine_id) out = make_reverse<M>(source_language, file, detail);
+  });
+  if (out) return out;
+  return translate_detail::unknown_machine(file, program::dialect::apt, machine_id);
+}
+
+/// `make_post<M>` for a catalog id; for an unknown id, a translator whose result holds that error.
+inline std::unique_ptr<block_translator> make_post(std::string_view machine_id, program::dialect source_language,
+                                                   program::dialect out_dialect, const std::string& file,
+                                                   report_detail detail = report_detail::every_block) {
+  std::unique_ptr<block_translator> out;
+  machines::for_each_machine([&]<class M>() {
+    if (M::id == machine_id) out = make_post<M>(source_language, out_dialect, file, detail);
+  });
+  if (out) return out;
+  return translate_detail::unknown_machine(file, out_dialect, machine_id);
+}
+
+/// `translate<From, To>` for catalog ids; an error for an unknown id.
+inline translation translate(std::string_view from_id, std::string_view to_id, const program::program& nc,
+                             const translate_options& options) {
+  return translate_detail::run(*make_translator(from_id, to_id, nc.language, nc.file, options), nc);
 }
 
 /// `reverse<M>` for a catalog id; an error for an unknown id.
 inline translation reverse(std::string_view machine_id, const program::program& nc) {
-  std::optional<translation> out;
-  machines::for_each_machine([&]<class M>() {
-    if (M::id == machine_id) out = reverse<M>(nc);
-  });
-  if (out) return std::move(*out);
-  return translate_detail::unknown_machine(nc, program::dialect::apt, machine_id);
+  return translate_detail::run(*make_reverse(machine_id, nc.language, nc.file), nc);
 }
 
 /// `post<M>` for a catalog id; an error for an unknown id.
 inline translation post(std::string_view machine_id, const program::program& cl, program::dialect out_dialect) {
-  std::optional<translation> out;
-  machines::for_each_machine([&]<class M>() {
-    if (M::id == machine_id) out = post<M>(cl, out_dialect);
-  });
-  if (out) return std::move(*out);
-  return translate_detail::unknown_machine(cl, out_dialect, machine_id);
+  return translate_detail::run(*make_post(machine_id, cl.language, out_dialect, cl.file), cl);
 }
 
 }  // namespace kin5

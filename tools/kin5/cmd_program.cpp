@@ -4,9 +4,11 @@
 //   kin5 reverse   --machine ID [--dialect D] [-o OUT] IN       NC program -> APT CL data
 //   kin5 post      --machine ID [--dialect D] [-o OUT] IN       APT CL data -> NC program
 //
-// Each one reads IN (a path, or '-' for stdin) as bytes, parses it with program/io.hpp, hands
-// it to kin5::translate / reverse / post (translate.hpp), and writes the result to OUT (a path,
-// or '-' / nothing for stdout). Everything else goes to stderr:
+// Each one reads IN (a path, or '-' for stdin) as bytes and runs a `block_translator`
+// (translate.hpp: make_translator / make_reverse / make_post) in two passes over them, reading
+// the blocks with program/io.hpp's read_blocks each time; the second pass writes each output
+// block as it is made to OUT (a path, or '-' / nothing for stdout). Everything else goes to
+// stderr:
 //   * every diagnostic as `FILE:LINE:COL: error: ...` or `... warning: ...`, all of them;
 //   * every block the target cannot reach, as an error at the block, with its source angles
 //     and the angular gap;
@@ -100,58 +102,107 @@ bool write_all(int fd, std::string_view bytes) {
   return true;
 }
 
-/// Replaces (or creates) `path` with `bytes` so that `path` is never seen partly written:
-/// a temporary file next to it is written, flushed to disk and renamed over it. An existing
-/// file keeps its permission bits; a new one gets 0666 less the umask, as any created file.
-bool write_file_atomically(const std::string& path, std::string_view bytes, std::string& error) {
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  fs::path dir = target.parent_path();
-  if (dir.empty()) dir = ".";
-  std::string temp = (dir / ("." + target.filename().string() + ".kin5-XXXXXX")).string();
-  const int fd = ::mkstemp(temp.data());
-  if (fd < 0) {
-    error = std::string("cannot create a temporary file in '") + dir.string() + "': " + std::strerror(errno);
-    return false;
-  }
-  struct stat existing {};
-  mode_t mode = 0;
-  if (::stat(path.c_str(), &existing) == 0) {
-    mode = existing.st_mode & 07777;
-  } else {
-    const mode_t mask = ::umask(0);
-    ::umask(mask);
-    mode = 0666 & ~mask;
-  }
-  bool ok = ::fchmod(fd, mode) == 0 && write_all(fd, bytes) && ::fsync(fd) == 0;
-  int saved = errno;
-  if (::close(fd) != 0 && ok) {
-    ok = false;
-    saved = errno;
-  }
-  if (ok && std::rename(temp.c_str(), path.c_str()) != 0) {
-    ok = false;
-    saved = errno;
-  }
-  if (!ok) {
-    std::remove(temp.c_str());
-    error = std::strerror(saved);
-  }
-  return ok;
-}
+/// The output program, written as it is made but never seen partly written: blocks go to a
+/// temporary file next to OUT, which is flushed to disk and renamed over OUT by `commit`; without
+/// a commit the temporary file is removed. An existing OUT keeps its permission bits; a new one
+/// gets 0666 less the umask, as any created file. For stdout ('-') the text is held until
+/// `commit`, so nothing reaches stdout from a failed run.
+class output_file {
+ public:
+  explicit output_file(std::string path) : path_(std::move(path)) {}
+  output_file(const output_file&) = delete;
+  output_file& operator=(const output_file&) = delete;
+  ~output_file() { abandon(); }
 
-/// Writes `bytes` to stdout ('-') or atomically to `path`.
-bool write_output(const std::string& path, std::string_view bytes, std::string& error) {
-  if (path == "-") {
-    std::cout.flush();
-    if (!write_all(STDOUT_FILENO, bytes)) {
-      error = std::strerror(errno);
-      return false;
+  /// The buffer to append text to; `flush_if_full` writes it out once it is large.
+  std::string& buffer() { return buffer_; }
+
+  /// Writes the buffer to the temporary file once it holds 1 MiB or more (never for stdout).
+  /// False, with `error()` set, once anything has failed.
+  bool flush_if_full() {
+    if (failed_) return false;
+    if (path_ == "-" || buffer_.size() < (std::size_t{1} << 20)) return true;
+    return flush();
+  }
+
+  /// Finishes OUT: the rest of the text, fsync, rename (or all of it to stdout).
+  bool commit() {
+    if (failed_) return false;
+    if (path_ == "-") {
+      std::cout.flush();
+      if (!write_all(STDOUT_FILENO, buffer_)) return fail(errno);
+      buffer_.clear();
+      return true;
     }
+    if (!flush()) return false;
+    if (::fsync(fd_) != 0) return fail(errno);
+    const int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0) return fail(errno);
+    if (std::rename(temp_.c_str(), path_.c_str()) != 0) return fail(errno);
+    temp_.clear();
     return true;
   }
-  return write_file_atomically(path, bytes, error);
-}
+
+  /// Drops the text and removes the temporary file (OUT is untouched).
+  void abandon() {
+    if (fd_ >= 0) ::close(fd_), fd_ = -1;
+    if (!temp_.empty()) std::remove(temp_.c_str()), temp_.clear();
+    buffer_.clear();
+    buffer_.shrink_to_fit();
+  }
+
+  const std::string& error() const { return error_; }
+
+ private:
+  std::string path_;
+  std::string buffer_;
+  std::string temp_;  // the temporary file's path, once created
+  int fd_ = -1;
+  bool failed_ = false;
+  std::string error_;
+
+  bool fail(int err) {
+    error_ = std::strerror(err);
+    failed_ = true;
+    abandon();
+    return false;
+  }
+
+  bool open() {
+    namespace fs = std::filesystem;
+    const fs::path target(path_);
+    fs::path dir = target.parent_path();
+    if (dir.empty()) dir = ".";
+    std::string temp = (dir / ("." + target.filename().string() + ".kin5-XXXXXX")).string();
+    fd_ = ::mkstemp(temp.data());
+    if (fd_ < 0) {
+      const int err = errno;
+      fail(err);
+      error_ = std::string("cannot create a temporary file in '") + dir.string() + "': " + std::strerror(err);
+      return false;
+    }
+    temp_ = temp;
+    struct stat existing {};
+    mode_t mode = 0;
+    if (::stat(path_.c_str(), &existing) == 0) {
+      mode = existing.st_mode & 07777;
+    } else {
+      const mode_t mask = ::umask(0);
+      ::umask(mask);
+      mode = 0666 & ~mask;
+    }
+    if (::fchmod(fd_, mode) != 0) return fail(errno);
+    return true;
+  }
+
+  bool flush() {
+    if (fd_ < 0 && !open()) return false;
+    if (!write_all(fd_, buffer_)) return fail(errno);
+    buffer_.clear();
+    return true;
+  }
+};
 
 // ---- reporting ----------------------------------------------------------------------------
 
@@ -204,13 +255,16 @@ struct job {
   prog::dialect output_dialect = prog::dialect::heidenhain;
   std::string target;       ///< what the output is for, named when blocks are unreachable
   bool verbose = false;
-  std::function<translation(const prog::program&)> run;
+  /// The translator for a program read in this dialect from this file.
+  std::function<std::unique_ptr<block_translator>(prog::dialect, const std::string&)> make;
 };
 
+/// Reads IN, translates it in two passes over its bytes (`block_translator`), and writes OUT
+/// block by block: nothing is held per block but the branch planner's candidates.
 int execute(const job& j) {
   const std::string prefix = "kin5 " + j.command + ": ";
   std::string error;
-  auto bytes = read_bytes(j.input_path, error);
+  const auto bytes = read_bytes(j.input_path, error);
   if (!bytes) {
     std::cerr << prefix << "cannot read '" << j.input_path << "': " << error << '\n';
     return exit_codes::input_error;
@@ -225,8 +279,12 @@ int execute(const job& j) {
       dialect = *guessed;
     }
   }
-  auto input = prog::read(dialect, *bytes, display_name(j.input_path));
-  bytes.reset();  // blocks keep their own text; the file's bytes are no longer needed
+  const std::string file = display_name(j.input_path);
+  const std::unique_ptr<block_translator> translator = j.make(dialect, file);
+
+  // Pass 1: read every block, and plan.
+  prog::read_result input;
+  prog::read_blocks(dialect, *bytes, file, input, [&](prog::block&& b) { translator->plan(b); });
   {
     std::vector<message> messages;
     collect(messages, input.errors, "error");
@@ -235,48 +293,59 @@ int execute(const job& j) {
   }
   if (!input.ok()) {
     std::cerr << prefix << input.errors.size() << (input.errors.size() == 1 ? " error" : " errors") << " in "
-              << display_name(j.input_path) << " (read as " << prog::name(dialect)
-              << "); nothing written\n";
+              << file << " (read as " << prog::name(dialect) << "); nothing written\n";
     return exit_codes::input_error;
   }
 
-  const translation result = j.run(input.parsed);
-  input = {};  // the output program is all that is left to write
+  // Pass 2: read the blocks again, translate and write each one while the run is clean. The
+  // rest is still translated after an error, so that one run lists every error.
+  output_file out(j.output_path);
+  prog::block_writer writer(j.output_dialect, dialect, file);
+  std::optional<std::string> writer_error;  // a block the output dialect cannot express
+  bool file_failed = false;                 // the output file: `out.error()` says why
+  const prog::block_sink emit = [&](prog::block&& o) {
+    if (writer_error || file_failed || !translator->result().ok()) return;
+    try {
+      writer.write(out.buffer(), o);
+    } catch (const std::invalid_argument& e) {
+      writer_error = e.what();
+      return;
+    }
+    file_failed = !out.flush_if_full();
+  };
+  prog::read_result again;  // the same diagnostics as pass 1's
+  prog::read_blocks(dialect, *bytes, file, again, [&](prog::block&& b) { translator->write(b, emit); });
+
+  const translation& result = translator->result();
   // Unreachable blocks come as errors too (with their source angles and gap), one per report.
-  std::size_t count[3] = {0, 0, 0};
   {
     std::vector<message> messages;
     collect(messages, result.errors, "error");
     collect(messages, result.warnings, "warning");
-    for (const auto& r : result.reports) {
-      ++count[static_cast<int>(r.match)];
-      if (r.match == matchability::other_branch && j.verbose) messages.push_back({"note", other_branch_note(r)});
-    }
+    if (j.verbose)
+      for (const auto& r : result.reports)
+        if (r.match == matchability::other_branch) messages.push_back({"note", other_branch_note(r)});
     print_in_source_order(std::move(messages));
   }
-  const std::size_t unreachable = count[static_cast<int>(matchability::unreachable)];
+  const auto count = [&](matchability m) { return result.per_class[static_cast<std::size_t>(m)]; };
+  const std::size_t unreachable = count(matchability::unreachable);
 
   int code = exit_codes::ok;
-  std::string text;
   if (result.errors.size() > unreachable) {
     code = exit_codes::input_error;
   } else if (unreachable > 0) {
     code = exit_codes::unreachable;
-  } else {
-    try {
-      text = prog::write(j.output_dialect, result.output);
-    } catch (const std::invalid_argument& e) {
-      std::cerr << prefix << "cannot write the program as " << prog::name(j.output_dialect) << ": " << e.what()
-                << '\n';
-      code = exit_codes::input_error;
-    }
+  } else if (writer_error) {
+    std::cerr << prefix << "cannot write the program as " << prog::name(j.output_dialect) << ": " << *writer_error
+              << '\n';
+    code = exit_codes::input_error;
   }
 
   std::cerr << prefix << result.blocks_read << " blocks read, "
             << (code == exit_codes::ok ? result.blocks_written : 0) << " written, " << result.passed_through
             << " passed through; ";
   for (matchability m : {matchability::direct, matchability::other_branch, matchability::unreachable})
-    std::cerr << count[static_cast<int>(m)] << ' ' << name(m) << (m == matchability::unreachable ? "\n" : ", ");
+    std::cerr << count(m) << ' ' << name(m) << (m == matchability::unreachable ? "\n" : ", ");
 
   if (code == exit_codes::input_error && !result.errors.empty()) {
     const std::size_t n = result.errors.size();
@@ -287,8 +356,8 @@ int execute(const job& j) {
   }
   if (code != exit_codes::ok) return code;
 
-  if (!write_output(j.output_path, text, error)) {
-    std::cerr << prefix << "cannot write '" << j.output_path << "': " << error << '\n';
+  if (file_failed || !out.commit()) {
+    std::cerr << prefix << "cannot write '" << j.output_path << "': " << out.error() << '\n';
     return exit_codes::input_error;
   }
   return exit_codes::ok;
@@ -405,7 +474,9 @@ int run_translate(const translate_arguments& a) {
     return exit_codes::usage;
   }
   options.output_dialect = j.output_dialect;
-  j.run = [&a, options](const prog::program& p) { return kin5::translate(a.from, a.to, p, options); };
+  j.make = [&a, options](prog::dialect d, const std::string& file) {
+    return kin5::make_translator(a.from, a.to, d, file, options, report_detail::exceptions_only);
+  };
   return execute(j);
 }
 
@@ -420,7 +491,9 @@ int run_reverse(const machine_arguments& a) {
   j.output_dialect = prog::dialect::apt;
   j.target = "APT CL data";
   j.verbose = a.verbose;
-  j.run = [&a](const prog::program& p) { return kin5::reverse(a.machine, p); };
+  j.make = [&a](prog::dialect d, const std::string& file) {
+    return kin5::make_reverse(a.machine, d, file, report_detail::exceptions_only);
+  };
   return execute(j);
 }
 
@@ -436,7 +509,9 @@ int run_post(const machine_arguments& a) {
   j.target = a.machine;
   j.verbose = a.verbose;
   const prog::dialect out = j.output_dialect;
-  j.run = [&a, out](const prog::program& p) { return kin5::post(a.machine, p, out); };
+  j.make = [&a, out](prog::dialect d, const std::string& file) {
+    return kin5::make_post(a.machine, d, out, file, report_detail::exceptions_only);
+  };
   return execute(j);
 }
 

@@ -69,10 +69,11 @@ inline std::string upper(std::string_view s) {
   return u;
 }
 
-/// Groups physical lines into statements; blank lines are skipped.
-inline std::vector<statement> statements(std::string_view text) {
+/// Groups physical lines into statements and calls `f(statement&&)` for each, in order; blank
+/// lines are skipped.
+template <class F>
+void for_each_statement(std::string_view text, F&& f) {
   const auto lines = split_lines(text);
-  std::vector<statement> out;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     std::string_view first = lines[i].text;
     std::size_t lead = 0;
@@ -108,8 +109,14 @@ inline std::vector<statement> statements(std::string_view text) {
     }
     while (!st.text.empty() && is_space(st.text.back())) st.text.pop_back();
     st.content.resize(st.text.size());
-    out.push_back(std::move(st));
+    f(std::move(st));
   }
+}
+
+/// The statements of `text`, in order; blank lines are skipped.
+inline std::vector<statement> statements(std::string_view text) {
+  std::vector<statement> out;
+  for_each_statement(text, [&](statement&& st) { out.push_back(std::move(st)); });
   return out;
 }
 
@@ -138,12 +145,8 @@ class reader {
  public:
   reader(std::string file) : file_(std::move(file)) {}
 
-  read_result run(std::string_view text) {
-    read_result r;
-    r.parsed.language = dialect::apt;
-    r.parsed.file = file_;
-    for (const statement& st : statements(text)) r.parsed.blocks.push_back(read_statement(st, r.errors));
-    return r;
+  void run(std::string_view text, read_result& diagnostics, const block_sink& on_block) {
+    for_each_statement(text, [&](statement&& st) { on_block(read_statement(st, diagnostics.errors)); });
   }
 
  private:
@@ -319,19 +322,35 @@ class reader {
 
 }  // namespace detail
 
-/// Reads APT CL data. Never throws on bad input: problems are in `errors`.
-inline read_result read(std::string_view text, std::string file_name) {
-  return detail::reader(std::move(file_name)).run(text);
+/// Reads APT CL data statement by statement: `on_block` receives each block in file order as soon
+/// as it is read; errors go to `diagnostics` (its `parsed` is not touched).
+inline void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
+                        const block_sink& on_block) {
+  detail::reader(file_name).run(text, diagnostics, on_block);
 }
 
-/// Writes `p` as APT CL data, one statement per line. Throws std::invalid_argument naming the
-/// block's `file:line` when a block has rotary axis words, an arc, inch units, a move missing
-/// one of x, y, z, a linear move right after a rapid-only block, or a line break in a text field.
-inline std::string write(const program& p, const write_options& options = {}) {
-  const bool same = p.language == dialect::apt;
-  std::string out;
-  bool rapid_pending = false;
-  for (const block& b : p.blocks) {
+/// Reads APT CL data. Never throws on bad input: problems are in `errors`.
+inline read_result read(std::string_view text, std::string file_name) {
+  read_result result;
+  result.parsed.language = dialect::apt;
+  result.parsed.file = file_name;
+  read_blocks(text, file_name, result, [&](block&& b) { result.parsed.blocks.push_back(std::move(b)); });
+  return result;
+}
+
+/// Writes blocks as APT CL data one at a time, remembering whether a RAPID is pending, so a
+/// program of any length is written in constant memory. `write(program)` below is this writer
+/// applied to every block.
+class writer {
+ public:
+  /// A writer for blocks read from `source` (another dialect's blocks keep their text in `$$`
+  /// comments).
+  explicit writer(dialect source, const write_options& chosen = {})
+      : same(source == dialect::apt), options(chosen) {}
+
+  /// Appends the statements of block `b` to `out`. Throws `std::invalid_argument` naming the
+  /// block's `file:line` when it cannot be written in APT.
+  void write(std::string& out, const block& b) {
     auto fail = [&](const std::string& why) {
       throw std::invalid_argument(b.where.file + ":" + std::to_string(b.where.line) +
                                   ": block cannot be written in APT: " + why);
@@ -344,7 +363,7 @@ inline std::string write(const program& p, const write_options& options = {}) {
       if (same) out += b.text + '\n';
       else out += "$$ " + one_line(b.text) + '\n';
       if (b.comment && !same) out += "$$ " + one_line(*b.comment) + '\n';
-      continue;
+      return;
     }
     std::vector<std::string> lines;
     bool foreign_note = false;  // something without an APT form: carry the block's text
@@ -414,6 +433,20 @@ inline std::string write(const program& p, const write_options& options = {}) {
     if (lines.empty() && !b.text.empty() && !same) lines.push_back("$$ " + one_line(b.text));
     for (const std::string& l : lines) out += l + '\n';
   }
+
+ private:
+  bool same;  // the blocks were read as APT
+  write_options options;
+  bool rapid_pending = false;
+};
+
+/// Writes `p` as APT CL data, one statement per line. Throws std::invalid_argument naming the
+/// block's `file:line` when a block has rotary axis words, an arc, inch units, a move missing
+/// one of x, y, z, a linear move right after a rapid-only block, or a line break in a text field.
+inline std::string write(const program& p, const write_options& options = {}) {
+  writer w(p.language, options);
+  std::string out;
+  for (const block& b : p.blocks) w.write(out, b);
   return out;
 }
 

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -135,6 +136,9 @@ struct program {
   std::string file;
   std::vector<block> blocks;
 };
+
+/// Where a streaming reader (`read_blocks`) puts each block it has read, in file order.
+using block_sink = std::function<void(block&&)>;
 
 /// A problem found in the input, tied to the place it was found.
 struct diagnostic {

@@ -105,13 +105,12 @@ inline std::string fmt_signed(double v, int decimals) {
 
 }  // namespace detail
 
-/// Reads a Heidenhain conversational program. Never throws on bad input: problems are in
-/// `errors` (and `warnings`), each at the offending word's line and column.
-inline read_result read(std::string_view text, std::string file_name) {
+/// Reads a Heidenhain conversational program block by block: `on_block` receives each block in
+/// file order as soon as it is read; errors and warnings go to `out` (its `parsed` is not
+/// touched).
+inline void read_blocks(std::string_view text, const std::string& file_name, read_result& out,
+                        const block_sink& on_block) {
   using namespace detail;
-  read_result out;
-  out.parsed.language = dialect::heidenhain;
-  out.parsed.file = file_name;
 
   // Modal state the reader needs: last position (CC's missing axes), working plane, last CC.
   std::optional<double> last[3];
@@ -624,30 +623,40 @@ inline read_result read(std::string_view text, std::string file_name) {
       if (b.axes.y_mm) last[1] = b.axes.y_mm;
       if (b.axes.z_mm) last[2] = b.axes.z_mm;
     }
-    out.parsed.blocks.push_back(std::move(b));
+    on_block(std::move(b));
   }
-  return out;
 }
 
-/// Writes `p` as a Heidenhain conversational program, blocks numbered from 0.
-/// Throws std::invalid_argument naming the block (`file:line`) when a block cannot be written.
-inline std::string write(const program& p, const write_options& options = {}) {
-  using namespace detail;
-  const bool same = p.language == dialect::heidenhain;
-  std::string out;
-  long long number = 0;
-  arc_plane plane = arc_plane::xy;
-  std::optional<vec3> centre;
-  std::optional<std::string> begin_name;
-  // From a coordinate-less block of another dialect, for the next move that has no F of its own.
-  std::optional<double> pending_feed;
-  bool pending_rapid = false;
+/// Reads a Heidenhain conversational program. Never throws on bad input: problems are in
+/// `errors` (and `warnings`), each at the offending word's line and column.
+inline read_result read(std::string_view text, std::string file_name) {
+  read_result result;
+  result.parsed.language = dialect::heidenhain;
+  result.parsed.file = file_name;
+  read_blocks(text, file_name, result, [&](block&& b) { result.parsed.blocks.push_back(std::move(b)); });
+  return result;
+}
 
-  for (std::size_t bi = 0; bi < p.blocks.size(); ++bi) {
-    const block& b = p.blocks[bi];
+/// Writes blocks as Heidenhain conversational text one at a time, numbering them from 0 and
+/// remembering the working plane, the last circle centre and the program name, so a program of
+/// any length is written in constant memory. `write(program)` below is this writer applied to
+/// every block.
+class writer {
+ public:
+  /// A writer for blocks read from `source` (another dialect's passthrough text and kept words
+  /// go into comments); `file` names the program in messages for blocks without a location.
+  explicit writer(dialect source, std::string file = {}, const write_options& chosen = {})
+      : same(source == dialect::heidenhain), program_file(std::move(file)), options(chosen) {}
+
+  /// Appends the lines of block `b` to `out`. Throws `std::invalid_argument` naming the block
+  /// (`file:line`) when it cannot be written in Heidenhain.
+  void write(std::string& out, const block& b) {
+    using namespace detail;
+    const std::size_t bi = index++;
     auto fail = [&](const std::string& what) {
       const std::string at = b.where.line ? b.where.file + ":" + std::to_string(b.where.line)
-                                          : (p.file.empty() ? "block " : p.file + ": block ") + std::to_string(bi);
+                                          : (program_file.empty() ? "block " : program_file + ": block ") +
+                                                std::to_string(bi);
       throw std::invalid_argument(at + ": block cannot be written in heidenhain: " + what);
     };
     std::vector<std::string> lines;
@@ -670,7 +679,7 @@ inline std::string write(const program& p, const write_options& options = {}) {
         body = ";" + body;
       }
       out += std::to_string(number++) + " " + body + "\n";
-      continue;
+      return;
     }
 
     if (b.metric && !*b.metric) fail("inch units");
@@ -833,6 +842,27 @@ inline std::string write(const program& p, const write_options& options = {}) {
       out += l + "\n";
     }
   }
+
+ private:
+  bool same;  // the blocks were read as Heidenhain
+  std::string program_file;
+  write_options options;
+  std::size_t index = 0;  // of the next block, for messages about blocks without a location
+  long long number = 0;   // the next block number written
+  arc_plane plane = arc_plane::xy;
+  std::optional<vec3> centre;
+  std::optional<std::string> begin_name;
+  // From a coordinate-less block of another dialect, for the next move that has no F of its own.
+  std::optional<double> pending_feed;
+  bool pending_rapid = false;
+};
+
+/// Writes `p` as a Heidenhain conversational program, blocks numbered from 0.
+/// Throws std::invalid_argument naming the block (`file:line`) when a block cannot be written.
+inline std::string write(const program& p, const write_options& options = {}) {
+  writer w(p.language, p.file, options);
+  std::string out;
+  for (const block& b : p.blocks) w.write(out, b);
   return out;
 }
 

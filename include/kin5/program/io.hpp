@@ -38,6 +38,19 @@ inline read_result read(dialect d, std::string_view text, std::string file_name)
   return {};
 }
 
+/// Reads `text` in dialect `d` block by block: `on_block` receives each block in file order as soon
+/// as it is read, and errors and warnings go to `diagnostics` (its `parsed` is not touched). This
+/// is `read` without the program: memory stays constant, however long the text.
+inline void read_blocks(dialect d, std::string_view text, const std::string& file_name, read_result& diagnostics,
+                        const block_sink& on_block) {
+  switch (d) {
+    case dialect::siemens: return siemens::read_blocks(text, file_name, diagnostics, on_block);
+    case dialect::heidenhain: return heidenhain::read_blocks(text, file_name, diagnostics, on_block);
+    case dialect::iso: return iso::read_blocks(text, file_name, diagnostics, on_block);
+    case dialect::apt: return apt::read_blocks(text, file_name, diagnostics, on_block);
+  }
+}
+
 /// Writer settings for `write`, one member per dialect; only the one for the dialect written
 /// is used. Each member defaults to that writer's own defaults.
 struct write_settings {
@@ -59,6 +72,36 @@ inline std::string write(dialect d, const program& p, const write_settings& sett
   }
   return {};
 }
+
+/// The writer of one dialect, block by block: `write(program)` without the program. The ISO
+/// writer is told no tool-axis vectors follow a TCP switch (G43.4, not G43.5): a streaming
+/// writer cannot look ahead, and a tool-axis vector then fails with a clear error.
+class block_writer {
+ public:
+  block_writer(dialect d, dialect source, std::string file, const write_settings& settings = {})
+      : language_(d),
+        siemens_(source, file, settings.siemens_options),
+        heidenhain_(source, file, settings.heidenhain_options),
+        iso_(source, settings.iso_options),
+        apt_(source, settings.apt_options) {}
+
+  /// Appends block `b`'s text to `out`; throws `std::invalid_argument` as `write` does.
+  void write(std::string& out, const block& b) {
+    switch (language_) {
+      case dialect::siemens: return siemens_.write(out, b);
+      case dialect::heidenhain: return heidenhain_.write(out, b);
+      case dialect::iso: return iso_.write(out, b);
+      case dialect::apt: return apt_.write(out, b);
+    }
+  }
+
+ private:
+  dialect language_;
+  siemens::writer siemens_;
+  heidenhain::writer heidenhain_;
+  iso::writer iso_;
+  apt::writer apt_;
+};
 
 /// The dialect the controller of catalog machine `machine_id` reads, or nothing for an id
 /// that is not in the catalog. The table (the controllers the source papers name, or the usual

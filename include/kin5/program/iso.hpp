@@ -80,18 +80,17 @@ inline bool kept_g(int g) {
 
 class reader {
  public:
-  explicit reader(std::string file) : file_(std::move(file)) {}
+  reader(const std::string& file, read_result& result, const block_sink& on_block)
+      : file_(file), result_(result), on_block_(on_block) {}
 
-  read_result run(std::string_view text) {
-    result_.parsed.language = dialect::iso;
-    result_.parsed.file = file_;
-    for (const text_line& line : split_lines(text)) read_line(line);
-    return std::move(result_);
+  void run(std::string_view text) {
+    for_each_line(text, [&](const text_line& line) { read_line(line); });
   }
 
  private:
-  std::string file_;
-  read_result result_;
+  const std::string& file_;
+  read_result& result_;
+  const block_sink& on_block_;
   // The reader's own record, needed to read I J K: motion mode, plane, G43.5, last point.
   std::optional<motion_kind> motion_;
   arc_plane plane_ = arc_plane::xy;
@@ -122,13 +121,13 @@ class reader {
     b.text = std::string(s.substr(first, end - first));
     if (s[first] == '%') {
       b.passthrough = true;
-      result_.parsed.blocks.push_back(std::move(b));
+      on_block_(std::move(b));
       return;
     }
     std::vector<word> words;
     lex(s, first, end, b, words);
     if (!failed_) interpret(b, words);
-    result_.parsed.blocks.push_back(std::move(b));
+    on_block_(std::move(b));
   }
 
   void add_comment(block& b, std::string_view c) {
@@ -464,31 +463,44 @@ inline std::string as_comment(std::string text) {
 
 }  // namespace detail
 
-/// Reads ISO / Fanuc G code. Never throws on bad input: problems are in `errors`.
-inline read_result read(std::string_view text, std::string file_name) {
-  return detail::reader(std::move(file_name)).run(text);
+/// Reads ISO / Fanuc G code block by block: `on_block` receives each block in file order as soon
+/// as it is read; errors and warnings go to `diagnostics` (its `parsed` is not touched).
+inline void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
+                        const block_sink& on_block) {
+  detail::reader(file_name, diagnostics, on_block).run(text);
 }
 
-/// Writes `p` as ISO / Fanuc G code, one block per line, words in the order
-/// `N  kept G  G0-G3  G43.4/G43.5/G49  G93/G94  G21  X Y Z A B C  I J K  R  F S T M  kept  (comment)`.
-/// Throws std::invalid_argument naming the block's `file:line` for inch units, or a tool-axis
-/// vector outside G43.5 together with an arc.
-inline std::string write(const program& p, const write_options& options = {}) {
-  const bool same = p.language == dialect::iso;
-  std::string out;
-  bool vector_tcp = false;
-  arc_plane plane = arc_plane::xy;
-  std::optional<double> last[3];
-  bool ended = false;  // the last block written had an M2 / M30 M function
-  for (std::size_t index = 0; index < p.blocks.size(); ++index) {
-    const block& b = p.blocks[index];
+/// Reads ISO / Fanuc G code. Never throws on bad input: problems are in `errors`.
+inline read_result read(std::string_view text, std::string file_name) {
+  read_result result;
+  result.parsed.language = dialect::iso;
+  result.parsed.file = file_name;
+  read_blocks(text, file_name, result, [&](block&& b) { result.parsed.blocks.push_back(std::move(b)); });
+  return result;
+}
+
+/// Writes blocks as ISO / Fanuc G code one at a time, remembering the plane, the last point and
+/// whether G43.5 is on, so a program of any length is written in constant memory.
+/// `write(program)` below is this writer applied to every block.
+class writer {
+ public:
+  /// A writer for blocks read from `source` (another dialect's passthrough text and kept words
+  /// go into comments).
+  explicit writer(dialect source, const write_options& chosen = {})
+      : same(source == dialect::iso), options(chosen) {}
+
+  /// Appends the line of block `b` to `out`. A block that switches tool-tip tracking on is
+  /// written G43.5 when `vector_tcp_ahead` (a block before the next switch carries a tool-axis
+  /// vector), else G43.4; a tool-axis vector outside G43.5 is an error. Throws
+  /// `std::invalid_argument` naming the block's `file:line` when it cannot be written.
+  void write(std::string& out, const block& b, bool vector_tcp_ahead = false) {
     auto fail = [&](const std::string& why) {
       throw std::invalid_argument(b.where.file + ":" + std::to_string(b.where.line) +
                                   ": block cannot be written in ISO: " + why);
     };
     if (b.passthrough) {
       out += (same ? b.text : detail::as_comment(b.text)) + '\n';
-      continue;
+      return;
     }
     std::vector<std::string> words;
     std::vector<std::string> tail;  // non-G kept words
@@ -532,7 +544,7 @@ inline std::string write(const program& p, const write_options& options = {}) {
       words.push_back(m == motion_kind::rapid ? "G0" : m == motion_kind::linear ? "G1" : m == motion_kind::arc_cw ? "G2" : "G3");
     }
     if (b.tcp) {
-      vector_tcp = *b.tcp && detail::vector_tcp_from(p.blocks, index);
+      vector_tcp = *b.tcp && vector_tcp_ahead;
       words.push_back(!*b.tcp ? "G49" : vector_tcp ? "G43.5" : "G43.4");
     }
     if (b.feed_mode) words.push_back(*b.feed_mode == feed_unit::inverse_time ? "G93" : "G94");
@@ -594,6 +606,27 @@ inline std::string write(const program& p, const write_options& options = {}) {
     std::string line;
     for (const std::string& w : words) line += (line.empty() ? "" : " ") + w;
     out += line + '\n';
+  }
+
+ private:
+  bool same;  // the blocks were read as ISO
+  write_options options;
+  bool vector_tcp = false;
+  arc_plane plane = arc_plane::xy;
+  std::optional<double> last[3];
+  bool ended = false;  // the last block written had an M2 / M30 M function
+};
+
+/// Writes `p` as ISO / Fanuc G code, one block per line, words in the order
+/// `N  kept G  G0-G3  G43.4/G43.5/G49  G93/G94  G21  X Y Z A B C  I J K  R  F S T M  kept  (comment)`.
+/// Throws std::invalid_argument naming the block's `file:line` for inch units, or a tool-axis
+/// vector outside G43.5 together with an arc.
+inline std::string write(const program& p, const write_options& options = {}) {
+  writer w(p.language, options);
+  std::string out;
+  for (std::size_t k = 0; k < p.blocks.size(); ++k) {
+    const block& b = p.blocks[k];
+    w.write(out, b, b.tcp && *b.tcp && detail::vector_tcp_from(p.blocks, k));
   }
   return out;
 }

@@ -43,11 +43,9 @@ inline parsed_number read_number(std::string_view s) {
     out.error = i == 0 ? number_error::empty : number_error::not_a_number;  // "", or only "+", "-", "."
     return out;
   }
-  std::string buffer(s.substr(digits_start, i - digits_start));
-  if (buffer.back() == '.') buffer.push_back('0');
-  if (buffer.front() == '.') buffer.insert(buffer.begin(), '0');
+  // Only digits and one point lie in [digits_start, i): `5.` and `.5` read as strtod reads them.
   double v = 0.0;
-  const auto r = std::from_chars(buffer.data(), buffer.data() + buffer.size(), v);
+  const auto r = std::from_chars(s.data() + digits_start, s.data() + i, v, std::chars_format::fixed);
   if (r.ec != std::errc{} || !std::isfinite(v) || v > max_magnitude) {
     out.error = number_error::too_large;
     return out;

@@ -512,14 +512,13 @@ class line_reader {
 
   void numbered(char letter, double v, std::string_view number_text, std::size_t start) {
     block& b = out_.b;
-    const std::string canonical = std::string(1, letter) + std::string(number_text);
     switch (letter) {
       case 'N':
         if (!is_whole(v)) return error(start, "word 'N' needs a whole number");
         if (duplicate(b.number.has_value(), start, "N")) return;
         b.number = static_cast<long long>(v);
         return;
-      case 'G': return g_word(v, canonical, start);
+      case 'G': return g_word(v, std::string(1, letter) + std::string(number_text), start);
       case 'X': return set_axis(b.axes.x_mm, letter, v, start);
       case 'Y': return set_axis(b.axes.y_mm, letter, v, start);
       case 'Z': return set_axis(b.axes.z_mm, letter, v, start);
@@ -562,7 +561,7 @@ class line_reader {
         if (!is_whole(v)) return error(start, std::string("word '") + letter + "' needs a whole number");
         b.kept_words.push_back(letter + std::to_string(static_cast<long long>(v)));
         return;
-      default: unknown(start, "unknown word '" + canonical + "'");
+      default: unknown(start, "unknown word '" + std::string(1, letter) + std::string(number_text) + "'");
     }
   }
 
@@ -803,14 +802,14 @@ inline void finish(line_parse& p, modal_state& state, read_result& result) {
 
 }  // namespace detail
 
-/// Reads a Siemens 840D program. Never throws on bad input: problems are in `errors`.
-inline read_result read(std::string_view text, std::string file_name) {
-  read_result result;
-  result.parsed.language = dialect::siemens;
-  result.parsed.file = file_name;
+/// Reads a Siemens 840D program block by block: `on_block` receives each block in file order as
+/// soon as it is read; errors and warnings go to `diagnostics` (its `parsed` is not touched).
+/// Nothing but the current line is held, so a program of any length reads in constant memory.
+inline void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
+                        const block_sink& on_block) {
   detail::modal_state state;
-  for (const text_line& line : split_lines(text)) {
-    if (line.text.empty()) continue;
+  for_each_line(text, [&](const text_line& line) {
+    if (line.text.empty()) return;
     detail::line_parse p;
     block& b = p.b;
     std::size_t first = 0;
@@ -819,20 +818,28 @@ inline read_result read(std::string_view text, std::string file_name) {
     b.text = std::string(line.text);
     if (first == line.text.size()) {  // spaces only
       b.passthrough = true;
-      result.parsed.blocks.push_back(std::move(b));
-      continue;
+      on_block(std::move(b));
+      return;
     }
     if (auto name = detail::program_header(line.text)) {
       b.program_begin = *name;
       state = detail::modal_state{};
       state.program_name = *name;
-      result.parsed.blocks.push_back(std::move(b));
-      continue;
+      on_block(std::move(b));
+      return;
     }
     detail::line_reader(line.text, line.number, file_name, p).run();
-    detail::finish(p, state, result);
-    result.parsed.blocks.push_back(std::move(p.b));
-  }
+    detail::finish(p, state, diagnostics);
+    on_block(std::move(p.b));
+  });
+}
+
+/// Reads a Siemens 840D program. Never throws on bad input: problems are in `errors`.
+inline read_result read(std::string_view text, std::string file_name) {
+  read_result result;
+  result.parsed.language = dialect::siemens;
+  result.parsed.file = file_name;
+  read_blocks(text, file_name, result, [&](block&& b) { result.parsed.blocks.push_back(std::move(b)); });
   return result;
 }
 
@@ -883,25 +890,26 @@ constexpr std::string_view plane_word(arc_plane p) {
 
 }  // namespace detail
 
-/// Writes `p` as a Siemens 840D program, one line per block, in the order
-/// `N  TRAORI/TRAFOOF  G71  G93/G94  kept words  SUPA  G17-G19  G0-G3  X Y Z A B C  A3= B3= C3=
-/// I J K / CR=  F  S  T  D H T="name"  M  ;comment`. Blocks read from another dialect keep their passthrough
-/// text and kept words in a comment. Throws `std::invalid_argument` ("file:line: reason") for a
-/// block Siemens cannot express (inch units, a rapid arc, an arc without a known start point).
-inline std::string write(const program& p, const write_options& options = {}) {
-  std::string out;
-  const bool same = p.language == dialect::siemens;
-  detail::modal_state written;                   // what the written text leaves the controller in
-  std::optional<motion_kind> model_motion;       // the program's own modal motion
-  bool ended = false;                            // the last block written had an M2 / M30 M function
-  for (const block& b : p.blocks) {
-    const std::string& file = b.where.file.empty() ? p.file : b.where.file;
+/// Writes blocks as Siemens 840D text one at a time, remembering what the text written so far
+/// leaves modal (motion word, plane, position), so a program of any length is written in
+/// constant memory. `write(program)` below is this writer applied to every block.
+class writer {
+ public:
+  /// A writer for blocks read from `source` (another dialect's passthrough text and kept words
+  /// go into comments); `file` names the program in messages.
+  explicit writer(dialect source, std::string file = {}, const write_options& chosen = {})
+      : same(source == dialect::siemens), program_file(std::move(file)), options(chosen) {}
+
+  /// Appends the text of block `b` to `out` (nothing for a block with nothing to say). Throws
+  /// `std::invalid_argument` ("file:line: reason") for a block Siemens cannot express.
+  void write(std::string& out, const block& b) {
+    const std::string& file = b.where.file.empty() ? program_file : b.where.file;
     const auto fail = [&](const std::string& why) {
       throw std::invalid_argument(file + ":" + std::to_string(b.where.line) + ": " + why);
     };
     if (b.passthrough) {
       out += detail::checked_line(same ? b.text : "; " + b.text, b, file) + '\n';
-      continue;
+      return;
     }
     if (b.program_begin) {
       out += detail::checked_line(detail::program_file_name(*b.program_begin), b, file) + '\n';
@@ -1004,10 +1012,29 @@ inline std::string write(const program& p, const write_options& options = {}) {
       std::replace(line.begin(), line.end(), '\n', ' ');
       std::replace(line.begin(), line.end(), '\r', ' ');
     }
-    if (line.empty()) continue;  // nothing to say (a lone header has been written)
-    if (b.program_begin && b.number && line == "N" + std::to_string(*b.number)) continue;
+    if (line.empty()) return;  // nothing to say (a lone header has been written)
+    if (b.program_begin && b.number && line == "N" + std::to_string(*b.number)) return;
     out += detail::checked_line(std::move(line), b, file) + '\n';
   }
+
+ private:
+  bool same;                                // the blocks were read as Siemens
+  std::string program_file;
+  write_options options;
+  detail::modal_state written;              // what the written text leaves the controller in
+  std::optional<motion_kind> model_motion;  // the program's own modal motion
+  bool ended = false;                       // the last block written had an M2 / M30 M function
+};
+
+/// Writes `p` as a Siemens 840D program, one line per block, in the order
+/// `N  TRAORI/TRAFOOF  G71  G93/G94  kept words  SUPA  G17-G19  G0-G3  X Y Z A B C  A3= B3= C3=
+/// I J K / CR=  F  S  T  D H T="name"  M  ;comment`. Blocks read from another dialect keep their passthrough
+/// text and kept words in a comment. Throws `std::invalid_argument` ("file:line: reason") for a
+/// block Siemens cannot express (inch units, a rapid arc, an arc without a known start point).
+inline std::string write(const program& p, const write_options& options = {}) {
+  writer w(p.language, p.file, options);
+  std::string out;
+  for (const block& b : p.blocks) w.write(out, b);
   return out;
 }
 

@@ -17,18 +17,25 @@ struct text_line {
   std::size_t number = 0;  ///< 1-based
 };
 
-/// The lines of `text`. A final line ending does not start an empty last line.
-inline std::vector<text_line> split_lines(std::string_view text) {
-  std::vector<text_line> lines;
+/// Calls `f(text_line)` for each line of `text`, in order, without storing them. A final line
+/// ending does not start an empty last line.
+template <class F>
+void for_each_line(std::string_view text, F&& f) {
   std::size_t start = 0, number = 1;
   for (std::size_t i = 0; i < text.size(); ++i) {
     if (text[i] == '\n' || text[i] == '\r') {
-      lines.push_back({text.substr(start, i - start), number++});
+      f(text_line{text.substr(start, i - start), number++});
       if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
       start = i + 1;
     }
   }
-  if (start < text.size()) lines.push_back({text.substr(start), number});
+  if (start < text.size()) f(text_line{text.substr(start), number});
+}
+
+/// The lines of `text`. A final line ending does not start an empty last line.
+inline std::vector<text_line> split_lines(std::string_view text) {
+  std::vector<text_line> lines;
+  for_each_line(text, [&](const text_line& line) { lines.push_back(line); });
   return lines;
 }
 
