@@ -383,8 +383,9 @@ template <machine From>
 struct nc_source {
   static constexpr bool needs_tcp = true;
   static constexpr bool has_angles = true;
+  /// `kinematics`: whether to compute the tool axis and the branch (else only the angles).
   static std::optional<std::string> pose(const program::modal_state& m, source_step& s, std::string& warned,
-                                         std::vector<std::string>& notes, bool classify) {
+                                         std::vector<std::string>& notes, bool kinematics) {
     if (m.tool_axis) {  // a tool-axis vector written in the program (G43.5 IJK, LN TX TY TZ)
       s.axis = *m.tool_axis;
       s.rotary_n = 0;
@@ -403,8 +404,9 @@ struct nc_source {
       s.rotary_deg[i] = v.value_or(0.0);
       angles[i] = to_radians(degrees{s.rotary_deg[i]});
     }
+    if (!kinematics) return std::nullopt;
     s.axis = tool_axis<From>(angles);
-    if (classify) s.principal = on_principal_branch<From>(angles);
+    s.principal = on_principal_branch<From>(angles);
     return std::nullopt;
   }
 };
@@ -475,8 +477,9 @@ inline program::diagnostic at(const program::block& b, std::string message) { re
 template <class Source>
 class source_walker {
  public:
-  /// The step of block `b`; `classify`: whether to set `source_step::principal`.
-  source_step next(const program::block& b, translation* out, bool classify) {
+  /// The step of block `b`; `kinematics`: whether to compute the tool axis and
+  /// `source_step::principal` of a motion step (else only its angles).
+  source_step next(const program::block& b, translation* out, bool kinematics) {
     auto warn = [&](program::diagnostic d) {
       if (out) out->warnings.push_back(std::move(d));
     };
@@ -519,7 +522,7 @@ class source_walker {
     s.tip_mm = {*m.x_mm, *m.y_mm, *m.z_mm};
     if (before.x_mm && before.y_mm && before.z_mm) s.start_mm = vec3{*before.x_mm, *before.y_mm, *before.z_mm};
     std::vector<std::string> notes;
-    if (auto error = Source::pose(m, s, warned, notes, classify)) {
+    if (auto error = Source::pose(m, s, warned, notes, kinematics)) {
       fail(at(b, *error));
       return s;
     }
@@ -598,6 +601,7 @@ inline program::block carried_over(program::block b, program::dialect from, prog
 template <machine To>
 class nc_target {
  public:
+  static constexpr bool needs_tool_axis = false;  // `write` uses the planned angles
   nc_target(const rigid_transform& target_T_source, feed_policy feed, program::dialect from, program::dialect to,
             bool switch_on)
       : T(target_T_source), policy(feed), source_language(from), language(to), switch_tcp_on(switch_on) {}
@@ -775,6 +779,7 @@ class nc_target {
 /// The target side for APT CL data: GOTO/x,y,z,i,j,k per motion block (no planning).
 class cl_target {
  public:
+  static constexpr bool needs_tool_axis = true;  // `write` writes it
   explicit cl_target(program::dialect from) : source_language(from) {}
 
   void plan(const source_step&) {}
@@ -859,6 +864,12 @@ class block_translator {
   translation result_;
 };
 
+/// Whether a `block_translator`'s second pass reads the source text of `b`: not for a block it
+/// moves, whose text it replaces; so a `program::block_store` kept for that pass may drop it.
+inline bool second_pass_reads_text(const program::block& b) {
+  return !b.moves() || b.passthrough || b.machine_coordinates;
+}
+
 namespace translate_detail {
 
 /// `block_translator` for one source side and one target side.
@@ -877,13 +888,17 @@ class two_pass_translator final : public block_translator {
 
   void plan(const program::block& b) override {
     ++result_.blocks_read;
-    if (!refused_) target_.plan(first_.next(b, &result_, false));
+    if (refused_) return;
+    const source_step s = first_.next(b, &result_, true);
+    if (s.what == source_step::kind::motion) principal_.push_back(s.principal);
+    target_.plan(s);
   }
 
   void write(const program::block& b, const program::block_sink& emit) override {
     if (refused_) return;
     if (!planned_) target_.finish_plan(), planned_ = true;
-    const source_step s = second_.next(b, nullptr, true);
+    source_step s = second_.next(b, nullptr, Target::needs_tool_axis);
+    if (s.what == source_step::kind::motion) s.principal = principal_[motion_++];
     target_.write(
         b, s, result_,
         [&](program::block&& o) {
@@ -905,6 +920,8 @@ class two_pass_translator final : public block_translator {
   bool refused_;
   bool planned_ = false;
   source_walker<Source> first_, second_;
+  std::vector<bool> principal_;  // per motion block, from the first pass: on the source's branch 0
+  std::size_t motion_ = 0;       // motion blocks written so far
 };
 
 /// Why `translate` cannot run on a program in `source_language`, if it cannot.

@@ -5,10 +5,10 @@
 //   kin5 post      --machine ID [--dialect D] [-o OUT] IN       APT CL data -> NC program
 //
 // Each one reads IN (a path, or '-' for stdin) as bytes and runs a `block_translator`
-// (translate.hpp: make_translator / make_reverse / make_post) in two passes over them, reading
-// the blocks with program/io.hpp's read_blocks each time; the second pass writes each output
-// block as it is made to OUT (a path, or '-' / nothing for stdout). Everything else goes to
-// stderr:
+// (translate.hpp: make_translator / make_reverse / make_post) in two passes: the first over the
+// blocks program/io.hpp's read_blocks reads, which it also keeps as compact records
+// (program/block_store.hpp); the second over those records, writing each output block as it is
+// made to OUT (a path, or '-' / nothing for stdout). Everything else goes to stderr:
 //   * every diagnostic as `FILE:LINE:COL: error: ...` or `... warning: ...`, all of them;
 //   * every block the target cannot reach, as an error at the block, with its source angles
 //     and the angular gap;
@@ -36,6 +36,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <kin5/program/block_store.hpp>
 #include <kin5/program/io.hpp>
 #include <kin5/translate.hpp>
 
@@ -259,12 +260,12 @@ struct job {
   std::function<std::unique_ptr<block_translator>(prog::dialect, const std::string&)> make;
 };
 
-/// Reads IN, translates it in two passes over its bytes (`block_translator`), and writes OUT
-/// block by block: nothing is held per block but the branch planner's candidates.
+/// Reads IN, translates it in two passes (`block_translator`): the first over the text, the
+/// second over the blocks kept as compact records (`block_store`); writes OUT block by block.
 int execute(const job& j) {
   const std::string prefix = "kin5 " + j.command + ": ";
   std::string error;
-  const auto bytes = read_bytes(j.input_path, error);
+  auto bytes = read_bytes(j.input_path, error);
   if (!bytes) {
     std::cerr << prefix << "cannot read '" << j.input_path << "': " << error << '\n';
     return exit_codes::input_error;
@@ -282,9 +283,14 @@ int execute(const job& j) {
   const std::string file = display_name(j.input_path);
   const std::unique_ptr<block_translator> translator = j.make(dialect, file);
 
-  // Pass 1: read every block, and plan.
+  // Pass 1: read every block, plan, and keep the block as a compact record for pass 2.
   prog::read_result input;
-  prog::read_blocks(dialect, *bytes, file, input, [&](prog::block&& b) { translator->plan(b); });
+  prog::block_store blocks(file);
+  prog::read_blocks(dialect, *bytes, file, input, [&](prog::block&& b) {
+    translator->plan(b);
+    blocks.push(b, second_pass_reads_text(b));
+  });
+  bytes.reset();  // the records are all pass 2 needs
   {
     std::vector<message> messages;
     collect(messages, input.errors, "error");
@@ -297,8 +303,8 @@ int execute(const job& j) {
     return exit_codes::input_error;
   }
 
-  // Pass 2: read the blocks again, translate and write each one while the run is clean. The
-  // rest is still translated after an error, so that one run lists every error.
+  // Pass 2: translate each block and write it while the run is clean. The rest is still
+  // translated after an error, so that one run lists every error.
   output_file out(j.output_path);
   prog::block_writer writer(j.output_dialect, dialect, file);
   std::optional<std::string> writer_error;  // a block the output dialect cannot express
@@ -313,8 +319,7 @@ int execute(const job& j) {
     }
     file_failed = !out.flush_if_full();
   };
-  prog::read_result again;  // the same diagnostics as pass 1's
-  prog::read_blocks(dialect, *bytes, file, again, [&](prog::block&& b) { translator->write(b, emit); });
+  blocks.replay([&](const prog::block& b) { translator->write(b, emit); });
 
   const translation& result = translator->result();
   // Unreachable blocks come as errors too (with their source angles and gap), one per report.

@@ -76,6 +76,8 @@ struct axis_words {
   /// Heidenhain `LN … TX TY TZ`), as written (not necessarily unit).
   std::optional<vec3> tool_axis;
 
+  friend bool operator==(const axis_words&, const axis_words&) = default;
+
   bool has_linear() const { return x_mm || y_mm || z_mm; }
   bool has_rotary() const { return a_deg || b_deg || c_deg; }
   bool empty() const { return !has_linear() && !has_rotary() && !tool_axis; }
@@ -86,6 +88,7 @@ struct arc_words {
   arc_plane plane = arc_plane::xy;
   std::optional<vec3> centre_mm;     ///< absolute centre, when the dialect gives one
   std::optional<double> radius_mm;   ///< signed radius (CR / R), when given instead
+  friend bool operator==(const arc_words&, const arc_words&) = default;
 };
 
 /// One block of an NC program (one line; an APT statement with its `$` continuations).
@@ -128,6 +131,8 @@ struct block {
 
   /// Whether the block moves any axis.
   bool moves() const { return !axes.empty(); }
+
+  friend bool operator==(const block&, const block&) = default;
 };
 
 /// A program as read: its blocks in file order.

@@ -659,7 +659,8 @@ class writer {
                                                 std::to_string(bi);
       throw std::invalid_argument(at + ": block cannot be written in heidenhain: " + what);
     };
-    std::vector<std::string> lines;
+    std::vector<std::string>& lines = lines_;  // reused: its capacity outlives the block
+    lines.clear();
 
     if (b.passthrough) {
       std::string body = b.text;
@@ -733,7 +734,17 @@ class writer {
       lines.push_back(std::move(l));
     }
 
-    auto coord = [&](const char* letter, double v, int decimals) { return std::string(" ") + letter + fmt_signed(v, decimals); };
+    // Appends ` X+1.5` to a line.
+    auto put = [](std::string& l, std::string_view letter, double v, int decimals) {
+      l += ' ';
+      l += letter;
+      append_number(l, v, decimals, true);
+    };
+    auto coord = [&](const char* letter, double v, int decimals) {
+      std::string w;
+      put(w, letter, v, decimals);
+      return w;
+    };
     auto cc_line = [&](const arc_words& a) {
       const vec3& c = *a.centre_mm;
       std::string l = "CC";
@@ -773,12 +784,12 @@ class writer {
         l = b.axes.tool_axis || normal ? "LN" : "L";
       }
       const axis_words& a = b.axes;
-      if (a.x_mm) l += coord("X", *a.x_mm, options.linear_decimals);
-      if (a.y_mm) l += coord("Y", *a.y_mm, options.linear_decimals);
-      if (a.z_mm) l += coord("Z", *a.z_mm, options.linear_decimals);
-      if (a.a_deg) l += coord("A", *a.a_deg, options.angle_decimals);
-      if (a.b_deg) l += coord("B", *a.b_deg, options.angle_decimals);
-      if (a.c_deg) l += coord("C", *a.c_deg, options.angle_decimals);
+      if (a.x_mm) put(l, "X", *a.x_mm, options.linear_decimals);
+      if (a.y_mm) put(l, "Y", *a.y_mm, options.linear_decimals);
+      if (a.z_mm) put(l, "Z", *a.z_mm, options.linear_decimals);
+      if (a.a_deg) put(l, "A", *a.a_deg, options.angle_decimals);
+      if (a.b_deg) put(l, "B", *a.b_deg, options.angle_decimals);
+      if (a.c_deg) put(l, "C", *a.c_deg, options.angle_decimals);
       for (const std::string& w : kept)
         if (!w.empty() && to_upper(w[0]) == 'N') l += " " + w;
       if (a.tool_axis) {
@@ -793,12 +804,13 @@ class writer {
       kept.clear();
       if (b.feed && (b.feed_rapid || b.motion == motion_kind::rapid)) fail("block has both a feed and rapid traverse");
       const bool rapid = b.feed_rapid || b.motion == motion_kind::rapid || (pending_rapid && !b.motion && !b.feed);
-      if (b.feed) l += " F" + format_number(*b.feed, options.feed_decimals);
+      if (b.feed) l += " F", append_number(l, *b.feed, options.feed_decimals);
       else if (rapid) l += " FMAX";
-      else if (pending_feed) l += " F" + format_number(*pending_feed, options.feed_decimals);
+      else if (pending_feed) l += " F", append_number(l, *pending_feed, options.feed_decimals);
       if (!rapid) pending_feed.reset();
       pending_rapid = false;
-      lines.push_back(l + m_words);
+      l += m_words;
+      lines.push_back(std::move(l));
     } else if (b.tcp && *b.tcp && same && !kept.empty() && b.m_codes.empty() && !b.machine_coordinates) {
       std::string l = "FUNCTION TCPM";
       for (const std::string& w : kept) l += " " + w;
@@ -836,10 +848,11 @@ class writer {
     }
     if (lines.empty()) lines.emplace_back();
     for (std::size_t k = 0; k < lines.size(); ++k) {
-      std::string l = std::to_string(number++);
-      if (!lines[k].empty()) l += " " + lines[k];
-      if (k + 1 == lines.size() && has_comment) l += (lines[k].empty() ? " ;" : " ;") + comment;
-      out += l + "\n";
+      char digits[24];
+      out.append(digits, std::to_chars(digits, digits + sizeof digits, number++).ptr);
+      if (!lines[k].empty()) out += ' ', out += lines[k];
+      if (k + 1 == lines.size() && has_comment) out += " ;", out += comment;
+      out += '\n';
     }
   }
 
@@ -855,6 +868,7 @@ class writer {
   // From a coordinate-less block of another dialect, for the next move that has no F of its own.
   std::optional<double> pending_feed;
   bool pending_rapid = false;
+  std::vector<std::string> lines_;
 };
 
 /// Writes `p` as a Heidenhain conversational program, blocks numbered from 0.

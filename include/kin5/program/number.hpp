@@ -5,6 +5,7 @@
 /// with a given number of decimals and no trailing zeros beyond them.
 #pragma once
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <optional>
@@ -55,17 +56,29 @@ inline parsed_number read_number(std::string_view s) {
   return out;
 }
 
+/// Appends `value` to `out` in fixed notation with at most `decimals` decimals (0 to 12),
+/// trailing zeros and a trailing point removed, `-0` written as `0`; with `plus`, a `+` before
+/// a value that is not negative (Heidenhain's `X+34.983`). No allocation beyond `out`'s growth.
+inline void append_number(std::string& out, double value, int decimals, bool plus = false) {
+  char buf[64];
+  char* const first = buf + 1;  // room for a leading '+'
+  const auto r = std::to_chars(first, buf + sizeof buf, value, std::chars_format::fixed, decimals);
+  char* end = r.ptr;
+  if (std::find(first, end, '.') != end) {
+    while (end > first && end[-1] == '0') --end;
+    if (end > first && end[-1] == '.') --end;
+  }
+  char* begin = first;
+  if (end - begin == 2 && begin[0] == '-' && begin[1] == '0') ++begin;  // "-0" → "0"
+  if (plus && *begin != '-') *--begin = '+';
+  out.append(begin, end);
+}
+
 /// `value` in fixed notation with at most `decimals` decimals, trailing zeros and a trailing
 /// point removed, `-0` written as `0`.
 inline std::string format_number(double value, int decimals) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, decimals);
-  std::string s(buf, r.ptr);
-  if (s.find('.') != std::string::npos) {
-    while (!s.empty() && s.back() == '0') s.pop_back();
-    if (!s.empty() && s.back() == '.') s.pop_back();
-  }
-  if (s == "-0") s = "0";
+  std::string s;
+  append_number(s, value, decimals);
   return s;
 }
 

@@ -405,6 +405,22 @@ class line_reader {
       return;
     }
     const std::size_t value_pos = i_;
+    {  // The common case, `X-34.983` followed by a blank, `;`, `(`, the end or the next address
+      // letter: one scan. Anything else takes the careful path below.
+      const parsed_number n = read_number(s_.substr(i_));
+      if (n.error == number_error::none) {
+        std::size_t k = i_ + n.length;
+        const char next = peek(k);
+        while (k < s_.size() && is_space(s_[k])) ++k;
+        const bool ends = k == s_.size() || next == ';' || next == '(' ||
+                          (is_letter(next) && next != 'e' && next != 'E') || (is_space(next) && peek(k) != '=');
+        if (ends && peek(k) != '=') {
+          i_ += n.length;
+          numbered(letter, n.value, s_.substr(value_pos, n.length), start);
+          return;
+        }
+      }
+    }
     const std::size_t extent = number_extent(s_.substr(i_));
     const bool has_digit = std::any_of(s_.begin() + static_cast<std::ptrdiff_t>(value_pos),
                                        s_.begin() + static_cast<std::ptrdiff_t>(value_pos + extent), is_digit);
