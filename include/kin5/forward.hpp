@@ -48,9 +48,11 @@ constexpr one_axis_geometry geometry() {
 template <machine M>
 constexpr vec3 tool_axis(const rotary_angles<M>& commanded) {
   if constexpr (rotary_count<M> == 2) {
-    return geometry<M>().tool_axis(M::rotary[0].psi(commanded[0]), M::rotary[1].psi(commanded[1]));
+    constexpr auto g = geometry<M>();  // a constant of M: never rebuilt at run time
+    return g.tool_axis(M::rotary[0].psi(commanded[0]), M::rotary[1].psi(commanded[1]));
   } else {
-    return geometry<M>().tool_axis(M::rotary[0].psi(commanded[0]));
+    constexpr auto g = geometry<M>();
+    return g.tool_axis(M::rotary[0].psi(commanded[0]));
   }
 }
 

@@ -28,27 +28,33 @@ constexpr std::string_view name(matchability m) {
   return "?";
 }
 
-/// Whether commanded angles `source` of machine M lie on its principal branch: branch 0 of
-/// `inverse<M>` for their own tool axis gives them back, modulo 360°, to `tolerance`. At a pole
-/// the free angle is kept, so a pole pose is principal when its carried angle is. A one-rotary
-/// machine has a single branch.
+/// Whether commanded angles `source` of machine M, whose tool axis is `u` (= `tool_axis<M>(source)`),
+/// lie on its principal branch: branch 0 of the solution (G3)/(G4) for `u` gives them back,
+/// modulo 360°, to `tolerance` (travel plays no part). At a pole the free angle is kept, so a
+/// pole pose is principal when its carried angle is. A one-rotary machine has a single branch.
 template <machine M>
-constexpr bool on_principal_branch(const rotary_angles<M>& source, radians tolerance = {1e-7}) {
+constexpr bool on_principal_branch(const rotary_angles<M>& source, const vec3& u, radians tolerance = {1e-7}) {
   if constexpr (rotary_count<M> == 1) {
     return true;
   } else {
-    inverse_options options{};
-    options.pole = pole_policy::keep(source[0]);
-    const auto solutions = inverse<M>(tool_axis<M>(source), options);
-    for (const auto& s : solutions) {
-      if (s.branch != 0) continue;
-      bool same = true;
-      for (std::size_t i = 0; i < rotary_count<M>; ++i)
-        same = same && math::abs(math::wrap_pi(s.angles[i].value - source[i].value)) <= tolerance.value;
-      if (same) return true;
-    }
-    return false;
+    constexpr auto g = geometry<M>();
+    pole_policy policy = pole_policy::keep(source[0]);
+    policy.psi_p = M::rotary[0].psi(policy.psi_p);  // as `inverse` reads it
+    const two_axis_solution raw = g.solve(u, policy, inverse_options{}.reach_tolerance);
+    if (raw.count == 0) return false;
+    const rotary_angles<M> branch0{M::rotary[0].commanded(raw.branch[0].psi_p),
+                                   M::rotary[1].commanded(raw.branch[0].psi_q)};
+    bool same = true;
+    for (std::size_t i = 0; i < rotary_count<M>; ++i)
+      same = same && math::abs(math::wrap_pi(branch0[i].value - source[i].value)) <= tolerance.value;
+    return same;
   }
+}
+
+/// `on_principal_branch` for angles whose tool axis is not at hand.
+template <machine M>
+constexpr bool on_principal_branch(const rotary_angles<M>& source, radians tolerance = {1e-7}) {
+  return on_principal_branch<M>(source, tool_axis<M>(source), tolerance);
 }
 
 /// The class of one block: `source_principal` from `on_principal_branch`, `target_reachable`

@@ -406,7 +406,7 @@ struct nc_source {
     }
     if (!kinematics) return std::nullopt;
     s.axis = tool_axis<From>(angles);
-    s.principal = on_principal_branch<From>(angles);
+    s.principal = on_principal_branch<From>(angles, s.axis);
     return std::nullopt;
   }
 };
@@ -577,11 +577,11 @@ inline std::optional<std::string> map_plane_words(program::block& b, const mat3&
   return std::nullopt;
 }
 
-/// A block as it goes into a program of another dialect: text kin5 did not interpret
-/// (`passthrough`) and words it kept without interpreting (`kept_words`) mean something only in
-/// the source dialect, so they travel as a comment instead of being written as code.
-inline program::block carried_over(program::block b, program::dialect from, program::dialect to) {
-  if (from == to) return b;
+/// Makes `b` a block of dialect `to`: text kin5 did not interpret (`passthrough`) and words it
+/// kept without interpreting (`kept_words`) mean something only in the source dialect `from`, so
+/// they travel as a comment instead of being written as code.
+inline void carry_over(program::block& b, program::dialect from, program::dialect to) {
+  if (from == to) return;
   std::string note;
   if (b.passthrough) {
     note = b.text;  // the whole line, its own comment included
@@ -593,6 +593,11 @@ inline program::block carried_over(program::block b, program::dialect from, prog
   }
   b.kept_words.clear();
   if (!note.empty()) b.comment = b.comment ? *b.comment + " | " + note : note;
+}
+
+/// `b` as it goes into a program of another dialect (see `carry_over`).
+inline program::block carried_over(program::block b, program::dialect from, program::dialect to) {
+  carry_over(b, from, to);
   return b;
 }
 
@@ -628,7 +633,7 @@ class nc_target {
       out.errors.push_back(at(b, *error));
       return;
     }
-    o = carried_over(std::move(o), source_language, language);
+    carry_over(o, source_language, language);
     if (b.feed_mode == program::feed_unit::inverse_time && !supports_inverse_time(language)) {
       out.errors.push_back(at(b, "inverse-time feed (G93) cannot be written in " + std::string(program::name(language))));
       return;
@@ -794,7 +799,8 @@ class cl_target {
       ++out.passed_through;
       return;
     }
-    program::block o = carried_over(b, source_language, program::dialect::apt);
+    program::block o = b;
+    carry_over(o, source_language, program::dialect::apt);
     if (b.feed_mode == program::feed_unit::inverse_time) {
       out.errors.push_back(at(b, "inverse-time feed (G93) cannot be written as APT CL data"));
       return;

@@ -34,8 +34,8 @@ class block_store {
 
   /// Appends `b` (without its text unless `keep_text`).
   void push(const block& b, bool keep_text = true) {
-    record_.clear();
     encode(b, keep_text);
+    record_.resize(static_cast<std::size_t>(write_ - record_.data()));
     if (chunks_.empty() || chunk_size - used_ < record_.size()) {
       chunks_.push_back(std::make_unique<unsigned char[]>(std::max(chunk_size, record_.size())));
       sizes_.push_back(0);
@@ -90,22 +90,26 @@ class block_store {
   std::vector<std::size_t> sizes_;
   std::size_t used_ = 0, count_ = 0;
   std::vector<unsigned char> record_;  // the record being built
+  unsigned char* write_ = nullptr;     // where `put` writes in it
 
+  void put_bytes(const void* bytes, std::size_t n) {
+    std::memcpy(write_, bytes, n);
+    write_ += n;
+  }
   template <class T>
   void put(const T& v) {
-    const auto* bytes = reinterpret_cast<const unsigned char*>(&v);
-    record_.insert(record_.end(), bytes, bytes + sizeof v);
+    put_bytes(&v, sizeof v);
   }
   void put_size(std::uint64_t v) {  // LEB128
     do {
       const auto low = static_cast<unsigned char>(v & 0x7f);
       v >>= 7;
-      record_.push_back(v ? static_cast<unsigned char>(low | 0x80) : low);
+      *write_++ = v ? static_cast<unsigned char>(low | 0x80) : low;
     } while (v);
   }
   void put_string(std::string_view s) {
     put_size(s.size());
-    record_.insert(record_.end(), s.begin(), s.end());
+    put_bytes(s.data(), s.size());
   }
 
   template <class T>
@@ -171,6 +175,15 @@ class block_store {
     set(b.machine_coordinates, machine_coordinates);
     set(!b.kept_words.empty(), has_kept);
     set(b.passthrough, passthrough);
+    // An upper bound of the record's size: the fixed part, then the strings and lists.
+    std::size_t size = 4 + 10 + 10 + 8 + 8 + 8 + 8 * 6 + 24 + 4 + 24 + 8 + 8 + 3 * 10;
+    if (flags & has_text) size += 10 + b.text.size();
+    for (const auto* s : {&b.program_begin, &b.program_end, &b.comment})
+      if (*s) size += 10 + (*s)->size();
+    size += 10 + 4 * b.m_codes.size();
+    for (const auto& w : b.kept_words) size += 10 + w.size();
+    record_.resize(size);
+    write_ = record_.data();
     put(flags);
     put_size(b.where.line);
     put_size(b.where.column);

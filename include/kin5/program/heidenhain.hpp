@@ -659,8 +659,12 @@ class writer {
                                                 std::to_string(bi);
       throw std::invalid_argument(at + ": block cannot be written in heidenhain: " + what);
     };
-    std::vector<std::string>& lines = lines_;  // reused: its capacity outlives the block
-    lines.clear();
+    // The block's lines, in strings reused from block to block so that their capacity stays.
+    std::size_t line_count = 0;
+    auto add = [&](std::string_view text) {
+      if (line_count == lines_.size()) lines_.emplace_back();
+      lines_[line_count++].assign(text);
+    };
 
     if (b.passthrough) {
       std::string body = b.text;
@@ -696,7 +700,7 @@ class writer {
     };
     if (b.program_begin) {
       begin_name = pgm_name(b.program_begin);
-      lines.push_back("BEGIN PGM " + *begin_name + " MM");
+      add("BEGIN PGM " + *begin_name + " MM");
     }
 
     // An L needs end-point coordinates: a feed-only or rapid-only block (APT `FEDRAT/…`, `RAPID`;
@@ -731,7 +735,7 @@ class writer {
       }
       if (b.spindle_rpm) l += " S" + format_number(*b.spindle_rpm, options.feed_decimals);
       if (b.feed && !moves) l += " F" + format_number(*b.feed, options.feed_decimals);
-      lines.push_back(std::move(l));
+      add(l);
     }
 
     // Appends ` X+1.5` to a line.
@@ -766,9 +770,10 @@ class writer {
 
     const bool arc = b.motion == motion_kind::arc_cw || b.motion == motion_kind::arc_ccw;
     if (b.arc && b.arc->centre_mm && !b.motion && b.axes.empty()) {
-      lines.push_back(cc_line(*b.arc));
+      add(cc_line(*b.arc));
     } else if (moves) {
-      std::string l;
+      std::string& l = line_;
+      l.clear();
       if (arc) {
         if (!b.arc || (!b.arc->centre_mm && !b.arc->radius_mm)) fail("arc has neither a centre nor a radius");
         if (b.axes.tool_axis) fail("an arc cannot carry a tool-axis vector");
@@ -776,7 +781,7 @@ class writer {
           if (b.arc->plane != plane) fail("radius arc outside the working plane");
           l = "CR";
         } else {
-          if (!centre || !(*centre == *b.arc->centre_mm) || plane != b.arc->plane) lines.push_back(cc_line(*b.arc));
+          if (!centre || !(*centre == *b.arc->centre_mm) || plane != b.arc->plane) add(cc_line(*b.arc));
           l = "C";
         }
       } else {
@@ -810,18 +815,18 @@ class writer {
       if (!rapid) pending_feed.reset();
       pending_rapid = false;
       l += m_words;
-      lines.push_back(std::move(l));
+      add(l);
     } else if (b.tcp && *b.tcp && same && !kept.empty() && b.m_codes.empty() && !b.machine_coordinates) {
       std::string l = "FUNCTION TCPM";
       for (const std::string& w : kept) l += " " + w;
       kept.clear();
-      lines.push_back(std::move(l));
+      add(l);
     } else if (!m_words.empty()) {
-      lines.push_back(m_words.substr(1));
+      add(m_words.substr(1));
     }
     if (b.arc && b.arc->centre_mm && !arc && (b.motion || !b.axes.empty())) fail("circle centre on a block that is not an arc");
 
-    if (b.program_end) lines.push_back("END PGM " + pgm_name(b.program_end) + " MM");
+    if (b.program_end) add("END PGM " + pgm_name(b.program_end) + " MM");
 
     std::string comment = b.comment.value_or("");
     std::replace(comment.begin(), comment.end(), '\n', ' ');
@@ -837,7 +842,7 @@ class writer {
     // Heidenhain can write for it — APT `UNITS/MM`, a lone `RAPID` — becomes its source text as a
     // comment; a translated program's blocks keep their source text, whatever the dialect.
     const bool unsaid = !same || dropped_move || b.metric || b.feed_mode;
-    if (lines.empty() && !has_comment && unsaid && !b.text.empty()) {
+    if (line_count == 0 && !has_comment && unsaid && !b.text.empty()) {
       std::size_t k = 0;  // without a Heidenhain block number
       if (same)
         while (k < b.text.size() && (is_digit(b.text[k]) || is_space(b.text[k]))) ++k;
@@ -846,12 +851,12 @@ class writer {
       std::replace(comment.begin(), comment.end(), '\r', ' ');
       has_comment = true;
     }
-    if (lines.empty()) lines.emplace_back();
-    for (std::size_t k = 0; k < lines.size(); ++k) {
+    if (line_count == 0) add("");
+    for (std::size_t k = 0; k < line_count; ++k) {
       char digits[24];
       out.append(digits, std::to_chars(digits, digits + sizeof digits, number++).ptr);
-      if (!lines[k].empty()) out += ' ', out += lines[k];
-      if (k + 1 == lines.size() && has_comment) out += " ;", out += comment;
+      if (!lines_[k].empty()) out += ' ', out += lines_[k];
+      if (k + 1 == line_count && has_comment) out += " ;", out += comment;
       out += '\n';
     }
   }
@@ -868,7 +873,8 @@ class writer {
   // From a coordinate-less block of another dialect, for the next move that has no F of its own.
   std::optional<double> pending_feed;
   bool pending_rapid = false;
-  std::vector<std::string> lines_;
+  std::vector<std::string> lines_;  // see `add`
+  std::string line_;                // the motion line being built
 };
 
 /// Writes `p` as a Heidenhain conversational program, blocks numbered from 0.

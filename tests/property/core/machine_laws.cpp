@@ -382,3 +382,33 @@ TEMPLATE_LIST_TEST_CASE("unwrap_continuous and nearest_within_travel", "[core][b
       if (M::rotary[i].travel.continuous) RC_ASSERT(std::abs((*chosen)[i].value - prev[i].value) <= pi + 1e-12);
   });
 }
+
+TEMPLATE_LIST_TEST_CASE("principal branch: branch 0 of the full inverse gives the angles back", "[core][branch]",
+                        kin5::machines::catalog) {
+  using M = TestType;
+  // The definition, through every solution `inverse` returns (all branches, all 360° shifts).
+  const auto by_inverse = [](const rotary_angles<M>& a) {
+    inverse_options options{};
+    options.pole = pole_policy::keep(a[0]);
+    for (const auto& s : inverse<M>(tool_axis<M>(a), options)) {
+      if (s.branch != 0) continue;
+      bool same = true;
+      for (std::size_t i = 0; i < rotary_count<M>; ++i)
+        same = same && std::abs(math::wrap_pi(s.angles[i].value - a[i].value)) <= 1e-7;
+      if (same) return true;
+    }
+    return rotary_count<M> == 1;
+  };
+  rc::prop("random angles, in and out of travel, and poses at a pole (S2)", [&] {
+    rotary_angles<M> a = *rc::gen::oneOf(test::angles_within<M>(), test::angles_anywhere<M>());
+    if (*rc::gen::inRange(0, 3) == 0) {  // the pole: the tool along ± the fixed axis, free angle kept
+      inverse_options options{};
+      options.pole = pole_policy::keep(a[0]);
+      const vec3 pole = *rc::gen::arbitrary<bool>() ? M::rotary[0].direction : -1.0 * M::rotary[0].direction;
+      const auto r = inverse<M>(pole, options);
+      RC_CLASSIFY(r.size() > 0, "at a pole");
+      if (r.size() > 0) a = r[*rc::gen::inRange<std::size_t>(0, r.size())].angles;  // else: out of reach
+    }
+    RC_ASSERT(on_principal_branch<M>(a) == by_inverse(a));
+  });
+}
