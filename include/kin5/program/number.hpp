@@ -13,6 +13,8 @@
 #include <string_view>
 #include <system_error>
 
+#include "text.hpp"
+
 namespace kin5::program {
 
 /// Largest magnitude accepted in an NC number (1e9 mm is a kilometre of travel and then some).
@@ -33,26 +35,31 @@ inline parsed_number read_number(std::string_view s) {
   std::size_t i = 0;
   bool negative = false;
   if (i < s.size() && (s[i] == '+' || s[i] == '-')) negative = s[i++] == '-';
-  const std::size_t digits_start = i;
-  std::size_t digits = 0;
-  while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i, ++digits;
-  if (i < s.size() && s[i] == '.') {
-    ++i;
-    while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i, ++digits;
-  }
-  if (digits == 0) {
-    out.error = i == 0 ? number_error::empty : number_error::not_a_number;  // "", or only "+", "-", "."
+  const char* const first = s.data() + i;
+  const char* const last = s.data() + s.size();
+  // A digit or a point followed by a digit starts a number; `from_chars` then reads exactly the
+  // grammar above (digits, one optional point, digits) since `fixed` takes no exponent, and
+  // neither `inf` nor `nan` can start with a digit or a point.
+  const bool starts = first < last && (is_digit(*first) || (*first == '.' && first + 1 < last && is_digit(first[1])));
+  if (!starts) {
+    out.error = i == 0 && (first == last || *first != '.') ? number_error::empty : number_error::not_a_number;
     return out;
   }
-  // Only digits and one point lie in [digits_start, i): `5.` and `.5` read as strtod reads them.
   double v = 0.0;
-  const auto r = std::from_chars(s.data() + digits_start, s.data() + i, v, std::chars_format::fixed);
+  const auto r = std::from_chars(first, last, v, std::chars_format::fixed);
+  std::size_t end = static_cast<std::size_t>(r.ptr - s.data());
+  if (r.ec == std::errc{} && end < s.size() && s[end] == '.') {
+    // `5.`: should from_chars stop before a final point, the NC grammar still takes it
+    bool seen_point = false;
+    for (std::size_t k = i; k < end; ++k) seen_point = seen_point || s[k] == '.';
+    if (!seen_point) ++end;
+  }
   if (r.ec != std::errc{} || !std::isfinite(v) || v > max_magnitude) {
     out.error = number_error::too_large;
     return out;
   }
   out.value = negative ? -v : v;
-  out.length = i;
+  out.length = end;
   return out;
 }
 
@@ -71,7 +78,7 @@ inline void append_number(std::string& out, double value, int decimals, bool plu
   char* begin = first;
   if (end - begin == 2 && begin[0] == '-' && begin[1] == '0') ++begin;  // "-0" → "0"
   if (plus && *begin != '-') *--begin = '+';
-  out.append(begin, end);
+  out.append(begin, static_cast<std::size_t>(end - begin));
 }
 
 /// `value` in fixed notation with at most `decimals` decimals, trailing zeros and a trailing

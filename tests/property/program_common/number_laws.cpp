@@ -1,0 +1,93 @@
+// NC numbers: `read_number` reads the longest `[+-]digits[.digits]` (at least one digit) at the
+// start of any text, with the value strtod gives for it; `append_number` writes what
+// `std::to_chars` writes, trimmed, and reads back to the value rounded to its decimals.
+#include <clocale>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <kin5/program/number.hpp>
+
+namespace {
+
+using namespace kin5::program;
+
+/// The reference reader: scan the grammar by hand, then let strtod convert.
+parsed_number reference(std::string_view s) {
+  parsed_number out{};
+  std::size_t i = 0;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+  std::size_t digits = 0;
+  while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i, ++digits;
+  if (i < s.size() && s[i] == '.') {
+    ++i;
+    while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i, ++digits;
+  }
+  if (digits == 0) {
+    out.error = i == 0 ? number_error::empty : number_error::not_a_number;
+    return out;
+  }
+  const std::string text(s.substr(0, i));
+  const double v = std::strtod(text.c_str(), nullptr);
+  if (std::abs(v) > max_magnitude) {
+    out.error = number_error::too_large;
+    return out;
+  }
+  out.value = v;
+  out.length = i;
+  return out;
+}
+
+rc::Gen<std::string> nc_text() {
+  return rc::gen::container<std::string>(rc::gen::element('0', '1', '5', '9', '.', '+', '-', 'e', 'E', 'X', ' ', ';'));
+}
+
+}  // namespace
+
+TEST_CASE("read_number reads the NC number grammar with strtod's value") {
+  std::setlocale(LC_NUMERIC, "C");
+  rc::prop("any text over digits, points, signs and neighbours", [] {
+    const std::string s = *nc_text();
+    const parsed_number got = read_number(s), want = reference(s);
+    RC_ASSERT(got.error == want.error);
+    RC_ASSERT(got.length == want.length);
+    if (got.error == number_error::none) RC_ASSERT(got.value == want.value);
+  });
+  rc::prop("numbers as CAM writes them, with trailing and leading points", [] {
+    const long long whole = *rc::gen::inRange<long long>(0, 1000000000);
+    const int decimals = *rc::gen::inRange(0, 10);
+    std::string s = (*rc::gen::arbitrary<bool>() ? "-" : "") + std::to_string(whole) + ".";
+    for (int k = 0; k < decimals; ++k) s += static_cast<char>('0' + *rc::gen::inRange(0, 10));
+    const parsed_number got = read_number(s), want = reference(s);
+    RC_ASSERT(got.error == want.error);
+    RC_ASSERT(got.length == want.length);
+    RC_ASSERT(got.value == want.value);
+  });
+}
+
+TEST_CASE("append_number writes to_chars' digits, trimmed, and reads back") {
+  rc::prop("finite values up to 1e9, 0 to 6 decimals", [] {
+    const double v = *rc::gen::map(rc::gen::arbitrary<double>(), [](double x) { return std::isfinite(x) ? std::fmod(x, 1e9) : 0.0; });
+    const int decimals = *rc::gen::inRange(0, 7);
+    std::string got;
+    append_number(got, v, decimals);
+    char buf[64];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
+    std::string want(buf, r.ptr);
+    if (want.find('.') != std::string::npos) {
+      while (want.back() == '0') want.pop_back();
+      if (want.back() == '.') want.pop_back();
+    }
+    if (want == "-0") want = "0";
+    RC_ASSERT(got == want);
+    const parsed_number back = read_number(got);
+    RC_ASSERT(back.length == got.size());
+    RC_ASSERT(std::abs(back.value - v) <= 0.5 * std::pow(10.0, -decimals) * (1 + 1e-9) + 1e-9 * std::abs(v));
+    std::string plus;
+    append_number(plus, v, decimals, true);
+    RC_ASSERT(plus == (want.front() == '-' ? want : "+" + want));
+  });
+}
