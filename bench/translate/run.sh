@@ -14,7 +14,10 @@
 # (goal <= 200 bytes/block).
 #
 # Environment: KIN5_BENCH_BUILD_DIR (default: build-bench-translate in the source tree),
-#              RUNS (default 3), CPU (default 0).
+#              RUNS (default 3), CPU (default 0),
+#              INSTRUCTIONS=1: also count the instructions both programs execute on the first
+#              20,000 lines, under valgrind's callgrind: a figure that, unlike time, does not
+#              move with the load of a shared machine.
 set -eu
 
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -78,3 +81,14 @@ awk -v blocks="$blocks" '
     printf "ratio translate/baseline: %.2f elapsed, %.2f user+sys (goal <= 1.5, never > 3)\n",
            me["translate"] / me["baseline"], mc["translate"] / mc["baseline"]
   }' "$data/results.txt"
+
+if [ "${INSTRUCTIONS:-0}" = 1 ] && command -v valgrind >/dev/null 2>&1; then
+  head -n 20000 "$input" >"$data/prefix.mpf"
+  ti=$(valgrind --tool=callgrind --callgrind-out-file="$data/callgrind.translate" \
+         "$kin5" translate --from sajo-12000p --to dmu-80p -o "$data/prefix.h" "$data/prefix.mpf" 2>&1 >/dev/null |
+       awk '/Collected/ { print $NF }')
+  bi=$(valgrind --tool=callgrind --callgrind-out-file="$data/callgrind.baseline" \
+         "$baseline" "$data/prefix.mpf" "$data/prefix.out" 2>&1 >/dev/null | awk '/Collected/ { print $NF }')
+  awk -v t="$ti" -v b="$bi" 'BEGIN {
+    printf "instructions on the first 20000 lines: translate %d, baseline %d, ratio %.2f\n", t, b, t / b }'
+fi

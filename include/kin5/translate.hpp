@@ -230,6 +230,7 @@ class rotary_planner {
   std::vector<radians> gap_;             // per block
   std::vector<waiting> pending_;         // blocks from the first pole block not yet resolved
   std::vector<cell> frontier_;           // DP costs of the last reachable block's candidates
+  std::vector<cell> next_;               // the step being computed
   std::size_t last_ = none;              // that block
   std::size_t anchor_ = none;            // the last reachable non-pole block
 
@@ -258,7 +259,8 @@ class rotary_planner {
   /// One DP step: the cheapest way to each candidate of block k from the last reachable block.
   void step(std::size_t k) {
     const std::uint32_t begin = first_[k], end = static_cast<std::uint32_t>(candidates_.size());
-    std::vector<cell> next(end - begin);
+    std::vector<cell>& next = next_;  // reused: no allocation per block
+    next.assign(end - begin, cell{});
     for (std::uint32_t c = begin; c < end; ++c) {
       const int off = candidates_[c].branch != 0 && !candidates_[c].pole ? 1 : 0;
       if (last_ == none) {
@@ -277,7 +279,7 @@ class rotary_planner {
         }
       }
     }
-    frontier_ = std::move(next);
+    frontier_.swap(next);
     last_ = k;
   }
 

@@ -230,7 +230,7 @@ void print_in_source_order(std::vector<message> messages) {
   for (const auto& m : messages) {
     const auto& where = m.diagnostic.where;
     if (where.line == 0)  // about the whole file
-      std::cerr << where.file << ": " << m.severity << ": " << m.diagnostic.message << '\n';
+      std::cerr << where.file.str() << ": " << m.severity << ": " << m.diagnostic.message << '\n';
     else
       std::cerr << m.diagnostic.to_string(m.severity) << '\n';
   }

@@ -50,7 +50,7 @@ struct statement {
   struct segment { std::size_t offset, line, column; };
   std::vector<segment> segments;  ///< where each physical line starts in `text`
 
-  source_location at(const std::string& file, std::size_t offset) const {
+  source_location at(const file_name& file, std::size_t offset) const {
     std::size_t k = 0;
     while (k + 1 < segments.size() && segments[k + 1].offset <= offset) ++k;
     return {file, segments[k].line, segments[k].column + (offset - segments[k].offset)};
@@ -150,7 +150,7 @@ class reader {
   }
 
  private:
-  std::string file_;
+  file_name file_;  // one string for every location in the file
   bool rapid_pending_ = false;
 
   block read_statement(const statement& st, std::vector<diagnostic>& errors) {

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -43,9 +44,33 @@ constexpr std::optional<dialect> parse_dialect(std::string_view s) {
   return std::nullopt;
 }
 
+/// The name of a program's file, shared by every location in it: copying one copies a pointer,
+/// so the blocks of a long program hold one string, not one each. Reads as a `const std::string&`.
+class file_name {
+ public:
+  file_name() = default;
+  file_name(std::string name) : name_(std::make_shared<const std::string>(std::move(name))) {}
+  file_name(const char* name) : file_name(std::string(name)) {}
+
+  const std::string& str() const noexcept { return name_ ? *name_ : none(); }
+  operator const std::string&() const noexcept { return str(); }
+  bool empty() const noexcept { return str().empty(); }
+
+  friend bool operator==(const file_name& a, const file_name& b) noexcept { return a.str() == b.str(); }
+  friend std::string operator+(const file_name& a, std::string_view b) { return a.str() + std::string(b); }
+  friend std::string operator+(const file_name& a, const char* b) { return a.str() + b; }
+
+ private:
+  static const std::string& none() noexcept {
+    static const std::string empty_name;
+    return empty_name;
+  }
+  std::shared_ptr<const std::string> name_;
+};
+
 /// Where a block or a word starts: 1-based line and column (columns count bytes).
 struct source_location {
-  std::string file;
+  file_name file;
   std::size_t line = 0;
   std::size_t column = 0;
   friend bool operator==(const source_location&, const source_location&) = default;
@@ -152,7 +177,7 @@ struct diagnostic {
 
   /// `FILE:LINE:COL: error: message`, the format compilers use, so editors can jump to it.
   std::string to_string(std::string_view severity = "error") const {
-    return where.file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) + ": " +
+    return where.file.str() + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) + ": " +
            std::string(severity) + ": " + message;
   }
 };

@@ -108,9 +108,10 @@ inline std::string fmt_signed(double v, int decimals) {
 /// Reads a Heidenhain conversational program block by block: `on_block` receives each block in
 /// file order as soon as it is read; errors and warnings go to `out` (its `parsed` is not
 /// touched).
-inline void read_blocks(std::string_view text, const std::string& file_name, read_result& out,
+inline void read_blocks(std::string_view text, const std::string& file_path, read_result& out,
                         const block_sink& on_block) {
   using namespace detail;
+  const file_name file(file_path);  // one string for every location in the file
 
   // Modal state the reader needs: last position (CC's missing axes), working plane, last CC.
   std::optional<double> last[3];
@@ -149,11 +150,11 @@ inline void read_blocks(std::string_view text, const std::string& file_name, rea
     while (i < s.size() && is_space(s[i])) ++i;
     {
       auto [l, c] = src.locate(i);
-      b.where = {file_name, l, c};
+      b.where = {file, l, c};
     }
     auto where = [&](std::size_t pos) {
       auto [l, c] = src.locate(pos);
-      return source_location{file_name, l, c};
+      return source_location{file, l, c};
     };
     auto error = [&](std::size_t pos, std::string message) { out.errors.push_back({where(pos), std::move(message)}); };
     auto warning = [&](std::size_t pos, std::string message) { out.warnings.push_back({where(pos), std::move(message)}); };

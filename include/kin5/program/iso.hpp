@@ -88,7 +88,7 @@ class reader {
   }
 
  private:
-  const std::string& file_;
+  file_name file_;  // one string for every location in the file
   read_result& result_;
   const block_sink& on_block_;
   // The reader's own record, needed to read I J K: motion mode, plane, G43.5, last point.

@@ -195,7 +195,7 @@ struct line_parse {
 /// Splits one line into words and records them in a `line_parse`.
 class line_reader {
  public:
-  line_reader(std::string_view s, std::size_t line, const std::string& file, line_parse& out)
+  line_reader(std::string_view s, std::size_t line, const file_name& file, line_parse& out)
       : s_(s), line_(line), file_(file), out_(out) {}
 
   void run() {
@@ -237,7 +237,7 @@ class line_reader {
  private:
   std::string_view s_;
   std::size_t line_;
-  const std::string& file_;
+  const file_name& file_;
   line_parse& out_;
   std::size_t i_ = 0, first_ = 0;  // the next byte; the block's first non-blank byte
   bool named_tool_ = false;         // T="name" seen
@@ -821,8 +821,9 @@ inline void finish(line_parse& p, modal_state& state, read_result& result) {
 /// Reads a Siemens 840D program block by block: `on_block` receives each block in file order as
 /// soon as it is read; errors and warnings go to `diagnostics` (its `parsed` is not touched).
 /// Nothing but the current line is held, so a program of any length reads in constant memory.
-inline void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
+inline void read_blocks(std::string_view text, const std::string& file_path, read_result& diagnostics,
                         const block_sink& on_block) {
+  const file_name file(file_path);  // one string for every location in the file
   detail::modal_state state;
   for_each_line(text, [&](const text_line& line) {
     if (line.text.empty()) return;
@@ -830,7 +831,7 @@ inline void read_blocks(std::string_view text, const std::string& file_name, rea
     block& b = p.b;
     std::size_t first = 0;
     while (first < line.text.size() && is_space(line.text[first])) ++first;
-    b.where = {file_name, line.number, (first < line.text.size() ? first : 0) + 1};
+    b.where = {file, line.number, (first < line.text.size() ? first : 0) + 1};
     b.text = std::string(line.text);
     if (first == line.text.size()) {  // spaces only
       b.passthrough = true;
@@ -844,7 +845,7 @@ inline void read_blocks(std::string_view text, const std::string& file_name, rea
       on_block(std::move(b));
       return;
     }
-    detail::line_reader(line.text, line.number, file_name, p).run();
+    detail::line_reader(line.text, line.number, file, p).run();
     detail::finish(p, state, diagnostics);
     on_block(std::move(p.b));
   });
@@ -919,7 +920,7 @@ class writer {
   /// Appends the text of block `b` to `out` (nothing for a block with nothing to say). Throws
   /// `std::invalid_argument` ("file:line: reason") for a block Siemens cannot express.
   void write(std::string& out, const block& b) {
-    const std::string& file = b.where.file.empty() ? program_file : b.where.file;
+    const std::string& file = b.where.file.empty() ? program_file : b.where.file.str();
     const auto fail = [&](const std::string& why) {
       throw std::invalid_argument(file + ":" + std::to_string(b.where.line) + ": " + why);
     };
