@@ -750,6 +750,62 @@ inline std::optional<std::string> program_header(std::string_view line) {
   return name;
 }
 
+/// The line most of a long program is made of: `N… G0|G1 X… Y… Z… A… B… C… F…`, any of those
+/// words at most once each, in any order, upper case, blanks between them and nothing else. Such
+/// a line is read into `b` in one scan, with the modal state moved on as `finish` would, and the
+/// result is true; for any other line (or an arc in effect) nothing changes and the result is
+/// false: the full reader then reads it. A law checks that both readers agree on such lines.
+inline bool read_plain_motion(std::string_view line, block& b, modal_state& state) {
+  std::optional<long long> number;
+  std::optional<motion_kind> motion;
+  axis_words axes;
+  std::optional<double> feed;
+  std::size_t i = 0;
+  for (;;) {
+    while (i < line.size() && is_space(line[i])) ++i;
+    if (i == line.size()) break;
+    const char letter = line[i++];
+    const parsed_number n = read_number(line.substr(i));
+    if (n.error != number_error::none) return false;
+    i += n.length;
+    if (i < line.size() && !is_space(line[i])) return false;
+    const double v = n.value;
+    auto set = [v](std::optional<double>& field) {
+      if (field) return false;
+      field = v;
+      return true;
+    };
+    switch (letter) {
+      case 'N':
+        if (number || !is_whole(v)) return false;
+        number = static_cast<long long>(v);
+        break;
+      case 'G':
+        if (motion || !(v == 0.0 || v == 1.0)) return false;
+        motion = v == 0.0 ? motion_kind::rapid : motion_kind::linear;
+        break;
+      case 'X': if (!set(axes.x_mm)) return false; break;
+      case 'Y': if (!set(axes.y_mm)) return false; break;
+      case 'Z': if (!set(axes.z_mm)) return false; break;
+      case 'A': if (!set(axes.a_deg)) return false; break;
+      case 'B': if (!set(axes.b_deg)) return false; break;
+      case 'C': if (!set(axes.c_deg)) return false; break;
+      case 'F':
+        if (v < 0 || !set(feed)) return false;
+        break;
+      default: return false;
+    }
+  }
+  if (is_arc(motion ? motion : state.motion) && axes.has_linear()) return false;  // an arc needs its centre
+  b.number = number;
+  b.motion = motion;
+  b.axes = axes;
+  b.feed = feed;
+  if (motion) state.motion = motion;
+  state.move(b);
+  return true;
+}
+
 /// Applies the modal state to a parsed line and decides passthrough.
 inline void finish(line_parse& p, modal_state& state, read_result& result) {
   block& b = p.b;
@@ -827,8 +883,7 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
   detail::modal_state state;
   for_each_line(text, [&](const text_line& line) {
     if (line.text.empty()) return;
-    detail::line_parse p;
-    block& b = p.b;
+    block b;
     std::size_t first = 0;
     while (first < line.text.size() && is_space(line.text[first])) ++first;
     b.where = {file, line.number, (first < line.text.size() ? first : 0) + 1};
@@ -845,6 +900,12 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
       on_block(std::move(b));
       return;
     }
+    if (detail::read_plain_motion(line.text, b, state)) {
+      on_block(std::move(b));
+      return;
+    }
+    detail::line_parse p;
+    p.b = std::move(b);
     detail::line_reader(line.text, line.number, file, p).run();
     detail::finish(p, state, diagnostics);
     on_block(std::move(p.b));
