@@ -98,14 +98,6 @@ constexpr double total_rotary_travel(std::span<const rotary_angles<M>> path) {
   return sum;
 }
 
-/// One within-travel solution offered to the path planner.
-template <machine M>
-struct rotary_candidate {
-  rotary_angles<M> angles{};  ///< continuous axes in (−180°, 180°]
-  int branch = 0;             ///< (G3) branch; a pole counts as both
-  bool pole = false;
-};
-
 /// The chosen path: per tool axis the commanded angles (continuous axes unwrapped next to the
 /// previous block), or nothing when the block is unreachable.
 template <machine M>

@@ -24,6 +24,14 @@ using namespace kin5;
 
 // ---- the reference: every block's candidates first, then the dynamic programme over them ----
 
+/// One within-travel solution offered to the path planner.
+template <machine M>
+struct rotary_candidate {
+  rotary_angles<M> angles{};  ///< continuous axes in (−180°, 180°]
+  int branch = 0;             ///< (G3) branch; a pole counts as both
+  bool pole = false;
+};
+
 /// The within-travel solutions of machine M for each tool axis (target frame), with the gap of
 /// those that have none. At a pole (S2) the free angle of p is taken from the neighbouring
 /// blocks (the nearest non-pole block before and after), so that staying costs nothing.
