@@ -331,11 +331,7 @@ inline void read_blocks(std::string_view text, const std::string& file_name, rea
 
 /// Reads APT CL data. Never throws on bad input: problems are in `errors`.
 inline read_result read(std::string_view text, std::string file_name) {
-  read_result result;
-  result.parsed.language = dialect::apt;
-  result.parsed.file = file_name;
-  read_blocks(text, file_name, result, [&](block&& b) { result.parsed.blocks.push_back(std::move(b)); });
-  return result;
+  return read_whole(dialect::apt, text, std::move(file_name), &read_blocks);
 }
 
 /// Writes blocks as APT CL data one at a time, remembering whether a RAPID is pending, so a

@@ -191,4 +191,20 @@ struct read_result {
   bool ok() const { return errors.empty(); }
 };
 
+/// A dialect's streaming reader: calls the sink with each block of `text` in file order, and
+/// puts errors and warnings in the `read_result` (whose `parsed` it leaves alone).
+using block_reader = void (*)(std::string_view text, const std::string& file_name, read_result& diagnostics,
+                              const block_sink& on_block);
+
+/// The whole program `read_blocks` reads from `text`, blocks in file order, with its diagnostics:
+/// each dialect's `read` is this.
+inline read_result read_whole(dialect language, std::string_view text, std::string file_name,
+                              block_reader read_blocks) {
+  read_result result;
+  result.parsed.language = language;
+  result.parsed.file = std::move(file_name);
+  read_blocks(text, result.parsed.file, result, [&](block&& b) { result.parsed.blocks.push_back(std::move(b)); });
+  return result;
+}
+
 }  // namespace kin5::program

@@ -631,11 +631,7 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
 /// Reads a Heidenhain conversational program. Never throws on bad input: problems are in
 /// `errors` (and `warnings`), each at the offending word's line and column.
 inline read_result read(std::string_view text, std::string file_name) {
-  read_result result;
-  result.parsed.language = dialect::heidenhain;
-  result.parsed.file = file_name;
-  read_blocks(text, file_name, result, [&](block&& b) { result.parsed.blocks.push_back(std::move(b)); });
-  return result;
+  return read_whole(dialect::heidenhain, text, std::move(file_name), &read_blocks);
 }
 
 /// Writes blocks as Heidenhain conversational text one at a time, numbering them from 0 and

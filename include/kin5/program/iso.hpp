@@ -472,11 +472,7 @@ inline void read_blocks(std::string_view text, const std::string& file_name, rea
 
 /// Reads ISO / Fanuc G code. Never throws on bad input: problems are in `errors`.
 inline read_result read(std::string_view text, std::string file_name) {
-  read_result result;
-  result.parsed.language = dialect::iso;
-  result.parsed.file = file_name;
-  read_blocks(text, file_name, result, [&](block&& b) { result.parsed.blocks.push_back(std::move(b)); });
-  return result;
+  return read_whole(dialect::iso, text, std::move(file_name), &read_blocks);
 }
 
 /// Writes blocks as ISO / Fanuc G code one at a time, remembering the plane, the last point and

@@ -914,11 +914,7 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
 
 /// Reads a Siemens 840D program. Never throws on bad input: problems are in `errors`.
 inline read_result read(std::string_view text, std::string file_name) {
-  read_result result;
-  result.parsed.language = dialect::siemens;
-  result.parsed.file = file_name;
-  read_blocks(text, file_name, result, [&](block&& b) { result.parsed.blocks.push_back(std::move(b)); });
-  return result;
+  return read_whole(dialect::siemens, text, std::move(file_name), &read_blocks);
 }
 
 namespace detail {
