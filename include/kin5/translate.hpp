@@ -600,7 +600,7 @@ inline program::block carried_over(program::block b, program::dialect from, prog
 template <machine To>
 class nc_target {
  public:
-  static constexpr bool needs_tool_axis = false;  // `write` uses the planned angles
+  static constexpr bool plans_with_tool_axis = true;  // `plan` needs it; `write` uses the planned angles
   nc_target(const rigid_transform& target_T_source, feed_policy feed, program::dialect from, program::dialect to,
             bool switch_on)
       : T(target_T_source), policy(feed), source_language(from), language(to), switch_tcp_on(switch_on) {}
@@ -778,7 +778,7 @@ class nc_target {
 /// The target side for APT CL data: GOTO/x,y,z,i,j,k per motion block (no planning).
 class cl_target {
  public:
-  static constexpr bool needs_tool_axis = true;  // `write` writes it
+  static constexpr bool plans_with_tool_axis = false;  // `plan` is empty; `write` writes the axis
   explicit cl_target(program::dialect from) : source_language(from) {}
 
   void plan(const source_step&) {}
@@ -889,16 +889,17 @@ class two_pass_translator final : public block_translator {
   void plan(const program::block& b) override {
     ++result_.blocks_read;
     if (refused_) return;
-    const source_step s = first_.next(b, &result_, true);
-    if (s.what == source_step::kind::motion) principal_.push_back(s.principal);
+    // The source kinematics (tool axis, branch) run once per block: in the pass that uses them.
+    const source_step s = first_.next(b, &result_, Target::plans_with_tool_axis);
+    if (Target::plans_with_tool_axis && s.what == source_step::kind::motion) principal_.push_back(s.principal);
     target_.plan(s);
   }
 
   void write(const program::block& b, const program::block_sink& emit) override {
     if (refused_) return;
     if (!planned_) target_.finish_plan(), planned_ = true;
-    source_step s = second_.next(b, nullptr, Target::needs_tool_axis);
-    if (s.what == source_step::kind::motion) s.principal = principal_[motion_++];
+    source_step s = second_.next(b, nullptr, !Target::plans_with_tool_axis);
+    if (Target::plans_with_tool_axis && s.what == source_step::kind::motion) s.principal = principal_[motion_++];
     target_.write(
         b, s, result_,
         [&](program::block&& o) {
@@ -920,7 +921,7 @@ class two_pass_translator final : public block_translator {
   bool refused_;
   bool planned_ = false;
   source_walker<Source> first_, second_;
-  std::vector<bool> principal_;  // per motion block, from the first pass: on the source's branch 0
+  std::vector<bool> principal_;  // per motion block when the first pass classified it: on branch 0
   std::size_t motion_ = 0;       // motion blocks written so far
 };
 

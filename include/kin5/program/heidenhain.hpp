@@ -736,15 +736,14 @@ class writer {
     }
 
     // Appends ` X+1.5` to a line.
-    auto put = [](std::string& l, char letter, double v, int decimals) {
+    auto put = [](std::string& l, std::string_view letters, double v, int decimals) {
       l += ' ';
-      l += letter;
+      l.append(letters.data(), letters.size());
       append_number(l, v, decimals, true);
     };
     auto coord = [&](std::string_view letters, double v, int decimals) {
-      std::string w(" ");
-      w += letters;
-      append_number(w, v, decimals, true);
+      std::string w;
+      put(w, letters, v, decimals);
       return w;
     };
     auto cc_line = [&](const arc_words& a) {
@@ -787,12 +786,12 @@ class writer {
         l = b.axes.tool_axis || normal ? "LN" : "L";
       }
       const axis_words& a = b.axes;
-      if (a.x_mm) put(l, 'X', *a.x_mm, options.linear_decimals);
-      if (a.y_mm) put(l, 'Y', *a.y_mm, options.linear_decimals);
-      if (a.z_mm) put(l, 'Z', *a.z_mm, options.linear_decimals);
-      if (a.a_deg) put(l, 'A', *a.a_deg, options.angle_decimals);
-      if (a.b_deg) put(l, 'B', *a.b_deg, options.angle_decimals);
-      if (a.c_deg) put(l, 'C', *a.c_deg, options.angle_decimals);
+      if (a.x_mm) put(l, "X", *a.x_mm, options.linear_decimals);
+      if (a.y_mm) put(l, "Y", *a.y_mm, options.linear_decimals);
+      if (a.z_mm) put(l, "Z", *a.z_mm, options.linear_decimals);
+      if (a.a_deg) put(l, "A", *a.a_deg, options.angle_decimals);
+      if (a.b_deg) put(l, "B", *a.b_deg, options.angle_decimals);
+      if (a.c_deg) put(l, "C", *a.c_deg, options.angle_decimals);
       for (const std::string& w : kept)
         if (!w.empty() && to_upper(w[0]) == 'N') l += " " + w;
       if (a.tool_axis) {
