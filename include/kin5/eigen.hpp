@@ -21,10 +21,10 @@
 
 #include <Eigen/Geometry>
 
-#include "forward.hpp"
-#include "machine.hpp"
-#include "rigid.hpp"
-#include "vec.hpp"
+#include "kinematics/forward.hpp"
+#include "kinematics/machine.hpp"
+#include "core/rigid.hpp"
+#include "core/vec.hpp"
 
 namespace kin5::eigen {
 

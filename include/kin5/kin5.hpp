@@ -1,21 +1,12 @@
 /// @file kin5.hpp
-/// The core of kin5: units, constexpr maths, axes and machines, forward and inverse kinematics,
-/// branch choice, and the machine catalog. Needs the C++20 standard library only.
+/// Everything in kin5 that needs only the C++20 standard library: the kinematics core
+/// (`kinematics.hpp`), NC and CL programs (readers, writers, modal state) and the translation
+/// between machines. Eigen interop (`eigen.hpp`) and the Ipopt reach analysis (`reach.hpp`)
+/// have targets of their own.
 #pragma once
 
-#include "axis.hpp"
-#include "branch.hpp"
-#include "feed.hpp"
-#include "forward.hpp"
-#include "inverse.hpp"
-#include "machine.hpp"
-#include "machines.hpp"
-#include "matchability.hpp"
-#include "math.hpp"
-#include "rigid.hpp"
-#include "setup.hpp"
-#include "solver.hpp"
-#include "translate.hpp"
-#include "units.hpp"
-#include "vec.hpp"
-#include "version.hpp"
+#include "kinematics.hpp"
+#include "program/io.hpp"
+#include "translate/feed.hpp"
+#include "translate/setup.hpp"
+#include "translate/translate.hpp"

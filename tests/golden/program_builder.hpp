@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include <kin5/translate.hpp>
+#include <kin5/translate/translate.hpp>
 
 namespace kin5::test {
 

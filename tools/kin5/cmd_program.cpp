@@ -38,7 +38,7 @@
 
 #include <kin5/program/block_store.hpp>
 #include <kin5/program/io.hpp>
-#include <kin5/translate.hpp>
+#include <kin5/translate/translate.hpp>
 
 #include "commands.hpp"
 #include "format.hpp"

@@ -15,7 +15,7 @@
 #include <system_error>
 #include <vector>
 
-#include <kin5/machines.hpp>
+#include <kin5/machines/catalog.hpp>
 
 namespace kin5::tool {
 

@@ -1,7 +1,7 @@
 // kin5: command-line front end. Thin: every subcommand is a few calls into the headers.
 #include <iostream>
 
-#include <kin5/version.hpp>
+#include <kin5/core/version.hpp>
 
 #include "commands.hpp"
 

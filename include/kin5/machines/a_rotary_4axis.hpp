@@ -7,7 +7,7 @@
 /// Only tool axes with u·X = 0 are reachable; others are reported with their gap |u_x| in angle.
 #pragma once
 
-#include "../machine.hpp"
+#include "../kinematics/machine.hpp"
 
 namespace kin5::machines {
 

@@ -8,7 +8,7 @@
 /// values of C, and `inverse` lists each.
 #pragma once
 
-#include "../machine.hpp"
+#include "../kinematics/machine.hpp"
 
 namespace kin5::machines {
 

@@ -6,7 +6,7 @@
 ///     u = R(Z, −C) · R(X, −A) · ẑ = (sin A sin C, sin A cos C, cos A)        (spec K18)
 #pragma once
 
-#include "../machine.hpp"
+#include "../kinematics/machine.hpp"
 
 namespace kin5::machines {
 

@@ -8,7 +8,7 @@
 /// the latitude p·w = sin(B − 45°) stays in [−1, sin 75°], so axes within 15° of p are not.
 #pragma once
 
-#include "../machine.hpp"
+#include "../kinematics/machine.hpp"
 
 namespace kin5::machines {
 

@@ -8,7 +8,7 @@
 /// B ∈ [0°, 180°]: the tool reaches the closed upper hemisphere; at B = 180° it is −Y.
 #pragma once
 
-#include "../machine.hpp"
+#include "../kinematics/machine.hpp"
 
 namespace kin5::machines {
 

@@ -7,7 +7,7 @@
 /// B ∈ [0°, 180°]: the tool reaches the closed upper hemisphere k ≥ 0 (spec K6).
 #pragma once
 
-#include "../machine.hpp"
+#include "../kinematics/machine.hpp"
 
 namespace kin5::machines {
 

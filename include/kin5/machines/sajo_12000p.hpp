@@ -7,7 +7,7 @@
 /// The paper gives no A limits, only A₁ < −90° and A₂ > 0°; kin5 uses A ∈ [−120°, 30°].
 #pragma once
 
-#include "../machine.hpp"
+#include "../kinematics/machine.hpp"
 
 namespace kin5::machines {
 

@@ -17,7 +17,7 @@
 #include <cstdio>
 #include <string>
 
-#include "../vec.hpp"
+#include "../core/vec.hpp"
 #include "degree_trig.hpp"
 
 namespace kin5::paper::cn1624613 {

@@ -8,7 +8,7 @@
 /// is the quadrant-correct form the spec uses for corrections.
 #pragma once
 
-#include "../math.hpp"
+#include "../core/math.hpp"
 
 namespace kin5::paper {
 

@@ -13,7 +13,7 @@
 
 #include <array>
 
-#include "../vec.hpp"
+#include "../core/vec.hpp"
 #include "degree_trig.hpp"
 
 namespace kin5::paper::ji_ac_table {

@@ -13,7 +13,7 @@
 /// @endcode
 #pragma once
 
-#include "../vec.hpp"
+#include "../core/vec.hpp"
 #include "case_table.hpp"
 #include "degree_trig.hpp"
 

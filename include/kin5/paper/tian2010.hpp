@@ -16,7 +16,7 @@
 
 #include <optional>
 
-#include "../vec.hpp"
+#include "../core/vec.hpp"
 #include "case_table.hpp"
 #include "degree_trig.hpp"
 

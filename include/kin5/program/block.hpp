@@ -16,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-#include "../vec.hpp"
+#include "../core/vec.hpp"
 
 namespace kin5::program {
 

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <vector>
 
-#include "../forward.hpp"
+#include "../kinematics/forward.hpp"
 #include "box_minimizer.hpp"
 
 namespace kin5::reach {

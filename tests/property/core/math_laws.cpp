@@ -6,7 +6,7 @@
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
-#include <kin5/math.hpp>
+#include <kin5/core/math.hpp>
 
 #include "generators.hpp"
 

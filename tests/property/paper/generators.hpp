@@ -10,7 +10,7 @@
 #include <Eigen/Geometry>
 #include <rapidcheck.h>
 
-#include <kin5/vec.hpp>
+#include <kin5/core/vec.hpp>
 
 namespace kin5 {
 // Lets RapidCheck print a failing vector (found by argument-dependent lookup).

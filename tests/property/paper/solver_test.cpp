@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include <kin5/inverse.hpp>
-#include <kin5/machines.hpp>
+#include <kin5/kinematics/inverse.hpp>
+#include <kin5/machines/catalog.hpp>
 #include <kin5/paper/cn1624613.hpp>
 #include <kin5/paper/ji_ac_table.hpp>
 #include <kin5/paper/liu_dmu50v.hpp>

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include <kin5/inverse.hpp>
-#include <kin5/machines.hpp>
+#include <kin5/kinematics/inverse.hpp>
+#include <kin5/machines/catalog.hpp>
 #include <kin5/paper/tian2010.hpp>
 
 #include "generators.hpp"

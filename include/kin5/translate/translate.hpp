@@ -32,14 +32,14 @@
 #include <string_view>
 #include <vector>
 
-#include "branch.hpp"
+#include "../kinematics/branch.hpp"
 #include "feed.hpp"
-#include "inverse.hpp"
-#include "machines.hpp"
-#include "matchability.hpp"
-#include "program/block.hpp"
-#include "program/modal.hpp"
-#include "program/text.hpp"
+#include "../kinematics/inverse.hpp"
+#include "../machines/catalog.hpp"
+#include "../kinematics/matchability.hpp"
+#include "../program/block.hpp"
+#include "../program/modal.hpp"
+#include "../program/text.hpp"
 #include "setup.hpp"
 
 namespace kin5 {

@@ -18,8 +18,8 @@
 #include <span>
 #include <string_view>
 
-#include "program/block.hpp"
-#include "vec.hpp"
+#include "../program/block.hpp"
+#include "../core/vec.hpp"
 
 namespace kin5 {
 

@@ -15,8 +15,8 @@
 #include <array>
 #include <cstddef>
 
-#include "units.hpp"
-#include "vec.hpp"
+#include "../core/units.hpp"
+#include "../core/vec.hpp"
 
 namespace kin5 {
 

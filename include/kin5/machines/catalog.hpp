@@ -5,13 +5,13 @@
 
 #include <tuple>
 
-#include "machines/a_rotary_4axis.hpp"
-#include "machines/ac_head.hpp"
-#include "machines/ac_trunnion.hpp"
-#include "machines/b_head_a_tilted_table.hpp"
-#include "machines/dmu_50v.hpp"
-#include "machines/dmu_80p.hpp"
-#include "machines/sajo_12000p.hpp"
+#include "a_rotary_4axis.hpp"
+#include "ac_head.hpp"
+#include "ac_trunnion.hpp"
+#include "b_head_a_tilted_table.hpp"
+#include "dmu_50v.hpp"
+#include "dmu_80p.hpp"
+#include "sajo_12000p.hpp"
 
 namespace kin5::machines {
 

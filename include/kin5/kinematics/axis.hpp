@@ -11,8 +11,8 @@
 
 #include <string_view>
 
-#include "units.hpp"
-#include "vec.hpp"
+#include "../core/units.hpp"
+#include "../core/vec.hpp"
 
 namespace kin5 {
 

@@ -18,10 +18,10 @@
 
 #include <string_view>
 
-#include "machine.hpp"
-#include "machines/dmu_80p.hpp"
-#include "machines/sajo_12000p.hpp"
-#include "rigid.hpp"
+#include "../kinematics/machine.hpp"
+#include "../machines/dmu_80p.hpp"
+#include "../machines/sajo_12000p.hpp"
+#include "../core/rigid.hpp"
 
 namespace kin5 {
 
