@@ -16,8 +16,8 @@
 //
 // Exit codes (commands.hpp): 0 written; 1 bad arguments; 2 the input cannot be read or
 // translated, or the output cannot be written; 3 blocks unreachable on the target. On any
-// non-zero exit OUT is neither created nor changed: the program is written to a temporary
-// file in OUT's directory and renamed over OUT only when complete.
+// non-zero exit OUT is neither created nor changed (output_file.hpp: a temporary file linked or
+// renamed into place when complete; FIFOs, devices and stdout get the text only then).
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -32,9 +32,6 @@
 #include <string_view>
 #include <vector>
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <kin5/program/block_store.hpp>
 #include <kin5/program/io.hpp>
@@ -42,6 +39,7 @@
 
 #include "commands.hpp"
 #include "format.hpp"
+#include "output_file.hpp"
 
 namespace kin5::tool {
 namespace {
@@ -89,121 +87,6 @@ std::optional<std::string> read_bytes(const std::string& path, std::string& erro
   }
   return bytes;
 }
-
-/// Writes all of `bytes` to `fd`; false with errno set on failure.
-bool write_all(int fd, std::string_view bytes) {
-  while (!bytes.empty()) {
-    const ssize_t n = ::write(fd, bytes.data(), bytes.size());
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return false;
-    }
-    bytes.remove_prefix(static_cast<std::size_t>(n));
-  }
-  return true;
-}
-
-/// The output program, written as it is made but never seen partly written: blocks go to a
-/// temporary file next to OUT, which is flushed to disk and renamed over OUT by `commit`; without
-/// a commit the temporary file is removed. An existing OUT keeps its permission bits; a new one
-/// gets 0666 less the umask, as any created file. For stdout ('-') the text is held until
-/// `commit`, so nothing reaches stdout from a failed run.
-class output_file {
- public:
-  explicit output_file(std::string path) : path_(std::move(path)) {}
-  output_file(const output_file&) = delete;
-  output_file& operator=(const output_file&) = delete;
-  ~output_file() { abandon(); }
-
-  /// The buffer to append text to; `flush_if_full` writes it out once it is large.
-  std::string& buffer() { return buffer_; }
-
-  /// Writes the buffer to the temporary file once it holds 1 MiB or more (never for stdout).
-  /// False, with `error()` set, once anything has failed.
-  bool flush_if_full() {
-    if (failed_) return false;
-    if (path_ == "-" || buffer_.size() < (std::size_t{1} << 20)) return true;
-    return flush();
-  }
-
-  /// Finishes OUT: the rest of the text, fsync, rename (or all of it to stdout).
-  bool commit() {
-    if (failed_) return false;
-    if (path_ == "-") {
-      std::cout.flush();
-      if (!write_all(STDOUT_FILENO, buffer_)) return fail(errno);
-      buffer_.clear();
-      return true;
-    }
-    if (!flush()) return false;
-    if (::fsync(fd_) != 0) return fail(errno);
-    const int fd = fd_;
-    fd_ = -1;
-    if (::close(fd) != 0) return fail(errno);
-    if (std::rename(temp_.c_str(), path_.c_str()) != 0) return fail(errno);
-    temp_.clear();
-    return true;
-  }
-
-  /// Drops the text and removes the temporary file (OUT is untouched).
-  void abandon() {
-    if (fd_ >= 0) ::close(fd_), fd_ = -1;
-    if (!temp_.empty()) std::remove(temp_.c_str()), temp_.clear();
-    buffer_.clear();
-    buffer_.shrink_to_fit();
-  }
-
-  const std::string& error() const { return error_; }
-
- private:
-  std::string path_;
-  std::string buffer_;
-  std::string temp_;  // the temporary file's path, once created
-  int fd_ = -1;
-  bool failed_ = false;
-  std::string error_;
-
-  bool fail(int err) {
-    error_ = std::strerror(err);
-    failed_ = true;
-    abandon();
-    return false;
-  }
-
-  bool open() {
-    namespace fs = std::filesystem;
-    const fs::path target(path_);
-    fs::path dir = target.parent_path();
-    if (dir.empty()) dir = ".";
-    std::string temp = (dir / ("." + target.filename().string() + ".kin5-XXXXXX")).string();
-    fd_ = ::mkstemp(temp.data());
-    if (fd_ < 0) {
-      const int err = errno;
-      fail(err);
-      error_ = std::string("cannot create a temporary file in '") + dir.string() + "': " + std::strerror(err);
-      return false;
-    }
-    temp_ = temp;
-    struct stat existing {};
-    mode_t mode = 0;
-    if (::stat(path_.c_str(), &existing) == 0) {
-      mode = existing.st_mode & 07777;
-    } else {
-      const mode_t mask = ::umask(0);
-      ::umask(mask);
-      mode = 0666 & ~mask;
-    }
-    if (::fchmod(fd_, mode) != 0) return fail(errno);
-    return true;
-  }
-
-  bool flush() {
-    if (fd_ < 0 && !open()) return false;
-    if (!write_all(fd_, buffer_)) return fail(errno);
-    buffer_.clear();
-    return true;
-  }
-};
 
 // ---- reporting ----------------------------------------------------------------------------
 
@@ -264,6 +147,11 @@ struct job {
 /// second over the blocks kept as compact records (`block_store`); writes OUT block by block.
 int execute(const job& j) {
   const std::string prefix = "kin5 " + j.command + ": ";
+  output_file out(j.output_path);  // what OUT is, checked before the input is read
+  if (!out.ok()) {
+    std::cerr << prefix << "cannot write '" << j.output_path << "': " << out.error() << '\n';
+    return exit_codes::input_error;
+  }
   std::string error;
   auto bytes = read_bytes(j.input_path, error);
   if (!bytes) {
@@ -305,7 +193,6 @@ int execute(const job& j) {
 
   // Pass 2: translate each block and write it while the run is clean. The rest is still
   // translated after an error, so that one run lists every error.
-  output_file out(j.output_path);
   prog::block_writer writer(j.output_dialect, dialect, file);
   std::optional<std::string> writer_error;  // a block the output dialect cannot express
   bool file_failed = false;                 // the output file: `out.error()` says why

@@ -4,8 +4,10 @@
 #include <kin5/core/version.hpp>
 
 #include "commands.hpp"
+#include "output_file.hpp"
 
 int main(int argc, char** argv) {
+  kin5::tool::ignore_write_signals();  // a closed pipe or a file-size limit: exit 2, not a death
   CLI::App app{"kin5: 5-axis CNC kinematics and NC program translation between machines"};
   app.set_version_flag("--version", std::string("kin5 ") + kin5::version_string);
   app.require_subcommand(1);
@@ -19,6 +21,10 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);  // prints help/version (code 0) or the error message
     return code == 0 ? 0 : kin5::tool::exit_codes::usage;
+  }
+  if (!(std::cout << std::flush)) {
+    std::cerr << "kin5: cannot write to stdout\n";
+    return kin5::tool::exit_codes::input_error;
   }
   return exit_code;
 }
