@@ -6,14 +6,14 @@
 /// The oracle reads only the machine's data (axis side, direction, sense, order) and never calls
 /// kin5's rotate, solver or tool_axis. Each rotary axis turns physically by φ: a head axis by its
 /// commanded angle; a table axis by its commanded angle when `sense == physical`, by minus it
-/// when `sense == tool_relative` (ISO tool-relative, spec §1). The head chain ram → outer head →
+/// when `sense == tool_relative` (ISO tool-relative, docs/theory.md). The head chain ram → outer head →
 /// inner head gives the tool direction in the machine frame; the table chain bed → outer table →
 /// inner table gives `machine_T_part`; the tool axis in the workpiece frame is
-/// `(machine_T_part)⁻¹ · machine tool direction`. It must agree with (G1) (spec P2).
+/// `(machine_T_part)⁻¹ · machine tool direction`. It must agree with (G1) (law P2).
 /// @code
 ///   using kin5::machines::dmu_80p;
 ///   Eigen::Vector3d u = kin5::eigen::chain_tool_axis<dmu_80p>({kin5::to_radians(kin5::degrees{90}), kin5::radians{0}});
-///   // u ≈ (1/√2, 1/2, 1/2)   (spec §9.5)
+///   // u ≈ (1/√2, 1/2, 1/2)   (docs/golden.md)
 /// @endcode
 #pragma once
 
@@ -56,7 +56,7 @@ inline rigid_transform to_kin5(const Eigen::Isometry3d& a_T_b) {
 }
 
 /// φ, the physical right-handed rotation of rotary axis `i` of M about its direction, radians,
-/// for the commanded value `commanded` (spec §1: a table turned by φ turns the tool by −φ
+/// for the commanded value `commanded` (docs/theory.md: a table turned by φ turns the tool by −φ
 /// relative to the part).
 template <machine M>
 double physical_angle(std::size_t i, radians commanded) {
@@ -91,7 +91,7 @@ Eigen::Isometry3d machine_T_spindle(const rotary_angles<M>& commanded) {
 }
 
 /// The unit tool axis in the workpiece frame from the physical chain:
-/// `(machine_T_part)⁻¹ · machine_T_spindle · t`. Oracle for `kin5::tool_axis<M>` (spec P2).
+/// `(machine_T_part)⁻¹ · machine_T_spindle · t`. Oracle for `kin5::tool_axis<M>` (law P2).
 template <machine M>
 Eigen::Vector3d chain_tool_axis(const rotary_angles<M>& commanded) {
   const Eigen::Vector3d machine_tool = machine_T_spindle<M>(commanded).linear() * to_eigen(M::tool_reference);

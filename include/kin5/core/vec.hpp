@@ -1,7 +1,7 @@
 /// @file vec.hpp
 /// `vec3` and `mat3`: literal aggregates with public members, usable in constant expressions.
 ///
-/// Column-vector convention throughout (spec §1): `m * v` rotates `v`. A matrix printed in a
+/// Column-vector convention throughout (docs/theory.md, conventions): `m * v` rotates `v`. A matrix printed in a
 /// paper for row vectors is the transpose of the one used here.
 #pragma once
 
@@ -74,7 +74,7 @@ struct mat3 {
 constexpr double determinant(const mat3& m) { return dot(m.row[0], cross(m.row[1], m.row[2])); }
 
 /// Rodrigues' formula: the right-handed rotation of `v` by `angle` about the unit vector `n`
-/// (spec §1): `v cosθ + (n×v) sinθ + n (n·v)(1−cosθ)`.
+/// (docs/theory.md, conventions): `v cosθ + (n×v) sinθ + n (n·v)(1−cosθ)`.
 constexpr vec3 rotate(const vec3& n, radians angle, const vec3& v) {
   const double c = math::cos(angle.value), s = math::sin(angle.value);
   return c * v + s * cross(n, v) + ((1.0 - c) * dot(n, v)) * n;

@@ -2,7 +2,7 @@
 /// One machine axis as data: its NC letter, where it is mounted, its direction, how a commanded
 /// angle relates to the rotation of the tool relative to the workpiece, and its travel.
 ///
-/// Sign convention (spec §1): ψ is the right-handed rotation *of the tool relative to the
+/// Sign convention (docs/theory.md, "Commanded angles"): ψ is the right-handed rotation *of the tool relative to the
 /// workpiece* about `direction`. For a head axis ψ is the physical rotation. For a table axis
 /// ψ = −φ, φ being the physical right-handed rotation of the table. A controller that programs
 /// ISO tool-relative angles writes ψ itself (`angle_sense::tool_relative`); one that programs

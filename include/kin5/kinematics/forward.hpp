@@ -8,7 +8,7 @@
 /// @code
 ///   using namespace kin5::literals;
 ///   kin5::vec3 u = kin5::tool_axis<kin5::machines::dmu_80p>({kin5::to_radians(90_deg), kin5::radians{0}});
-///   // u == (1/√2, 1/2, 1/2)   (spec §9.5)
+///   // u == (1/√2, 1/2, 1/2)   (docs/golden.md)
 /// @endcode
 #pragma once
 
@@ -44,7 +44,7 @@ constexpr one_axis_geometry geometry() {
   return one_axis_geometry::make(M::rotary[0].direction, M::tool_reference);
 }
 
-/// The unit tool axis u in the workpiece frame for commanded rotary angles (spec G1).
+/// The unit tool axis u in the workpiece frame for commanded rotary angles, (G1).
 template <machine M>
 constexpr vec3 tool_axis(const rotary_angles<M>& commanded) {
   if constexpr (rotary_count<M> == 2) {

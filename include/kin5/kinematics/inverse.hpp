@@ -124,7 +124,7 @@ constexpr double distance_to_travel(const rotary_travel& travel, radians command
   return best;
 }
 
-// Range of ∠(p, R(q, ψq) t) for ψq over the carried axis' travel (spec §4.3).
+// Range of ∠(p, R(q, ψq) t) for ψq over the carried axis' travel ((G5) with a bounded q).
 constexpr std::array<double, 2> latitude_image(const two_axis_geometry& g, const rotary_axis& axis_q) {
   if (axis_q.travel.continuous) return {g.theta_min.value, g.theta_max.value};
   const double a = axis_q.psi(to_radians(axis_q.travel.lower)).value;
@@ -147,7 +147,7 @@ constexpr std::array<double, 2> latitude_image(const two_axis_geometry& g, const
 }  // namespace detail
 
 /// All commanded angle sets of machine M whose tool axis is `u` (unit, workpiece frame).
-/// Spec §4 (G1–G5) with each ψ turned into the commanded angle by its axis' sense.
+/// (G1)–(G5) with each ψ turned into the commanded angle by its axis' sense.
 template <machine M>
 constexpr inverse_result<M> inverse(const vec3& u, const inverse_options& options = {}) {
   inverse_result<M> out{};

@@ -3,15 +3,15 @@
 /// time with one `static_assert` message per rule.
 ///
 /// A machine lists its rotary axes in chain order *from the workpiece to the tool*:
-/// `rotary[0]` is the axis that does not move in the workpiece frame (p of spec §4.1: the table
+/// `rotary[0]` is the axis that does not move in the workpiece frame (p of (G1): the table
 /// axis that carries the part, or the outer head axis on a head-head machine), `rotary[1]` the
-/// one it carries (q). The tool axis is then (spec G1)
+/// one it carries (q). The tool axis is then (G1)
 ///
 ///     u = R(p, ψp) · R(q, ψq) · t
 ///
 /// with `t = tool_reference`, the tool axis at the zero pose. Linear axes X, Y, Z are aligned
 /// with the workpiece frame; under tool-tip tracking (TRAORI, M128, G43.4) the programmed XYZ is
-/// the tool tip in the workpiece frame. Example (spec K1):
+/// the tool tip in the workpiece frame. Example, (K1):
 /// @code
 /// struct sajo_12000p {
 ///   static constexpr std::string_view id = "sajo-12000p";
@@ -51,7 +51,7 @@ inline constexpr std::size_t rotary_count = M::rotary.size();
 namespace rules {
 
 inline constexpr double unit_tolerance = 1e-12;
-/// A machine whose ρ (spec §4.2) is below this is degenerate (spec S1).
+/// A machine whose ρ (G2) is below this is degenerate (S1).
 inline constexpr double degenerate_rho = 1e-9;
 /// Widest travel of a bounded axis, so that one pose has at most four 360° shifts.
 inline constexpr double widest_bounded_travel_deg = 1080.0;
@@ -90,8 +90,8 @@ constexpr bool travels_are_ordered_and_bounded() {
   return true;
 }
 
-/// Spec S1: on a two-rotary machine, q must be neither parallel to p nor to t, else one axis
-/// cannot change the tool direction. ρ = |p×q|·|q×t| (spec §4.2).
+/// (S1): on a two-rotary machine, q must be neither parallel to p nor to t, else one axis
+/// cannot change the tool direction. ρ = |p×q|·|q×t| (G2).
 template <machine_description M>
 constexpr bool second_axis_moves_the_tool() {
   if constexpr (rotary_count<M> == 2) {
@@ -127,7 +127,7 @@ consteval bool check_machine() {
                 "kin5: a bounded axis needs lower <= upper and at most 1080 degrees of travel; "
                 "declare wider axes continuous");
   static_assert(rules::second_axis_moves_the_tool<M>(),
-                "kin5: degenerate machine (spec S1): the carried rotary axis is parallel to the "
+                "kin5: degenerate machine (S1): the carried rotary axis is parallel to the "
                 "fixed one or to the tool, so it cannot change the tool direction");
   return true;
 }

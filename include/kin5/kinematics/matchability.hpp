@@ -1,11 +1,11 @@
 /// @file matchability.hpp
-/// Whether a block of one machine can be run on another (spec §6.1, generalised to any pair):
+/// Whether a block of one machine can be run on another (docs/matchability.md, generalised to any pair):
 ///
 /// * `direct`: the source pose lies on the source machine's principal branch (branch 0 of
 ///   `inverse<From>` gives it back) and the target reaches the tool axis;
 /// * `other_branch`: the target reaches it, but the source pose is on the source's other
-///   branch, (K3). For SAJO → DMU 80P that is A_s ∈ [As1, −90°), where the paper's eq 19 puts
-///   C_d 180° off (spec E6, P13); solving the tool axis, as kin5 does, is exact there too;
+///   branch, (K3). For SAJO → DMU 80P that is A_s ∈ [As1, −90°), where Tian et al. 2010, eq. (19)
+///   puts C_d 180° off (E6, P13); solving the tool axis, as kin5 does, is exact there too;
 /// * `unreachable`: no target solution within travel; the gap is the angle from the tool axis
 ///   to the target's reach. SAJO A_s ∈ (0°, As2] has gap exactly A_s on the DMU 80P (P14).
 #pragma once

@@ -1,9 +1,9 @@
 /// @file solver.hpp
-/// The general closed-form inverse for a tool axis turned by two rotary axes (spec §4):
+/// The general closed-form inverse for a tool axis turned by two rotary axes (docs/theory.md):
 ///
 ///     u = R(p, ψp) · R(q, ψq) · t                                             (G1)
 ///
-/// `two_axis_geometry` holds p, q, t and the derived constants of spec §4.2; `solve` returns
+/// `two_axis_geometry` holds p, q, t and the derived constants of (G2); `solve` returns
 /// both branches (G3) with their ψp (G4), the reach test (G5) and the pole policy (S2).
 /// Everything is in radians and unit vectors, and works in constant expressions.
 ///
@@ -20,7 +20,7 @@
 
 namespace kin5 {
 
-/// Whether a tool axis can be reached, and how (spec §4.4).
+/// Whether a tool axis can be reached, and how (S2), (S4).
 enum class reach_status {
   reachable,    ///< one or more solutions within the axes' travel
   pole,         ///< u = ±p (S2): ψp is free and was chosen by the pole policy
@@ -37,7 +37,7 @@ struct pole_policy {
   /// Keep ψp, typically the value of the previous block.
   static constexpr pole_policy keep(radians psi_p_value) { return {kind::keep, psi_p_value, {}}; }
   /// ψp is the limit of (G4) as u approaches the pole along `direction` (a vector not parallel
-  /// to p). This generalises seed 000's convention (c_t → 90°, spec P16): pass the direction in
+  /// to p). This generalises the convention of Tian et al. 2010 (c_t → 90°, P16): pass the direction in
   /// which the source machine's tool axis leaves the pole.
   static constexpr pole_policy approach(const vec3& direction) { return {kind::approach, {}, direction}; }
 };
@@ -56,7 +56,7 @@ struct two_axis_solution {
   std::array<branch_angles, 2> branch{};
 };
 
-/// Geometry of a two-rotary-axis chain and the derived constants of spec §4.2.
+/// Geometry of a two-rotary-axis chain and the derived constants of (G2).
 struct two_axis_geometry {
   vec3 p{};  ///< axis fixed in the workpiece frame (unit)
   vec3 q{};  ///< axis carried by p, at the zero pose (unit)

@@ -1,8 +1,8 @@
 /// @file machines/a_rotary_4axis.hpp
-/// Four-axis machine with a rotary table A about +X (seed 002, without its fixture offset).
+/// Four-axis machine with a rotary table A about +X (patent CN1624613, without its fixture offset).
 /// Commanded angles are ISO tool-relative (ψ).
 ///
-///     u = R(X, A) · ẑ = (0, −sin A, cos A)                                   (spec K25/K26)
+///     u = R(X, A) · ẑ = (0, −sin A, cos A)                                   (K25), (K26)
 ///
 /// Only tool axes with u·X = 0 are reachable; others are reported with their gap |u_x| in angle.
 #pragma once

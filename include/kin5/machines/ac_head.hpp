@@ -1,8 +1,8 @@
 /// @file machines/ac_head.hpp
-/// Head-head machine (seed 004): a head C about +Z on the ram carrying a head A about +X.
+/// Head-head machine (Li, Chen, Liu 2013): a head C about +Z on the ram carrying a head A about +X.
 /// Head angles are physical, so ψ = commanded.
 ///
-///     u = R(Z, C) · R(X, A) · ẑ                                               (spec §3.4)
+///     u = R(Z, C) · R(X, A) · ẑ                               (docs/papers.md, Li et al. 2013)
 ///
 /// C ∈ [−360°, 360°] is bounded but wider than a turn: a pose may be reached at two or three
 /// values of C, and `inverse` lists each.

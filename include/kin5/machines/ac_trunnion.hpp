@@ -1,9 +1,9 @@
 /// @file machines/ac_trunnion.hpp
-/// A/C trunnion (seed 001): a tilting table A about +X, fixed on the bed, carrying a rotary
+/// A/C trunnion (Ji, side milling): a tilting table A about +X, fixed on the bed, carrying a rotary
 /// table C about +Z that holds the part. Commanded angles are physical table angles (φ), so
 /// ψ = −φ for both axes.
 ///
-///     u = R(Z, −C) · R(X, −A) · ẑ = (sin A sin C, sin A cos C, cos A)        (spec K18)
+///     u = R(Z, −C) · R(X, −A) · ẑ = (sin A sin C, sin A cos C, cos A)        (K18)
 #pragma once
 
 #include "../kinematics/machine.hpp"

@@ -1,10 +1,10 @@
 /// @file machines/b_head_a_tilted_table.hpp
-/// Head-table machine with a tilted table axis (seed 004): a table A turning about
+/// Head-table machine with a tilted table axis (Li, Chen, Liu 2013): a table A turning about
 /// (1, 0, −1)/√2 and a head B about +Y. A is a physical table angle (ψ = −A), B a head angle.
 ///
-///     u = R((1,0,−1)/√2, −A) · R(Y, B) · ẑ                                    (spec §3.4)
+///     u = R((1,0,−1)/√2, −A) · R(Y, B) · ẑ                     (docs/papers.md, Li et al. 2013)
 ///
-/// ρ = 1, c₀ = 0 (spec §4.5): with B unlimited the whole sphere is reachable. With B ∈ [−120°, 120°]
+/// ρ = 1, c₀ = 0 (G2): with B unlimited the whole sphere is reachable. With B ∈ [−120°, 120°]
 /// the latitude p·w = sin(B − 45°) stays in [−1, sin 75°], so axes within 15° of p are not.
 #pragma once
 

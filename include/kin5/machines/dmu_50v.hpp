@@ -1,9 +1,9 @@
 /// @file machines/dmu_50v.hpp
-/// DMU 50V (seed 003): a table B turning about (0, −1, 1)/√2, at 45° in the YZ plane, carrying
-/// a rotary table C about +Z that holds the part. Commanded angles as seed 003's inverse
+/// DMU 50V (Liu 2010): a table B turning about (0, −1, 1)/√2, at 45° in the YZ plane, carrying
+/// a rotary table C about +Z that holds the part. Commanded angles as Liu 2010's inverse
 /// (eqs 1–5) uses them: B is the physical table angle, C the tool-relative one.
 ///
-///     u = R(Z, C) · R((0,1,−1)/√2, B) · ẑ                                   (spec K22)
+///     u = R(Z, C) · R((0,1,−1)/√2, B) · ẑ                                   (K22)
 ///
 /// B ∈ [0°, 180°]: the tool reaches the closed upper hemisphere; at B = 180° it is −Y.
 #pragma once

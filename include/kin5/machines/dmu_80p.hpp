@@ -1,10 +1,10 @@
 /// @file machines/dmu_80p.hpp
-/// DMU 80P (seed 000, machine M2): a rotary table C about +Z carrying the part and a head B
+/// DMU 80P (Tian et al. 2010, machine M2): a rotary table C about +Z carrying the part and a head B
 /// tilted at 45°, turning about p = (0, 1, 1)/√2. Commanded angles are ISO tool-relative (ψ).
 ///
-///     u = R(Z, C) · R((0,1,1)/√2, B) · ẑ                                  (spec K5, [000:14])
+///     u = R(Z, C) · R((0,1,1)/√2, B) · ẑ                                  (K5) = Tian et al. 2010, eq. (14)
 ///
-/// B ∈ [0°, 180°]: the tool reaches the closed upper hemisphere k ≥ 0 (spec K6).
+/// B ∈ [0°, 180°]: the tool reaches the closed upper hemisphere k ≥ 0 (K6).
 #pragma once
 
 #include "../kinematics/machine.hpp"

@@ -1,8 +1,8 @@
 /// @file machines/sajo_12000p.hpp
-/// SAJO 12000P (seed 000, machine M1): a rotary table B about +Y carrying the part and a
+/// SAJO 12000P (Tian et al. 2010, machine M1): a rotary table B about +Y carrying the part and a
 /// perpendicular head A about +X. Commanded angles are ISO tool-relative (ψ).
 ///
-///     u = R(Y, B) · R(X, A) · ẑ = (cos A sin B, −sin A, cos A cos B)        (spec K1, [000:8])
+///     u = R(Y, B) · R(X, A) · ẑ = (cos A sin B, −sin A, cos A cos B)        (K1) = Tian et al. 2010, eq. (8)
 ///
 /// The paper gives no A limits, only A₁ < −90° and A₂ > 0°; kin5 uses A ∈ [−120°, 30°].
 #pragma once

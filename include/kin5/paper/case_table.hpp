@@ -3,7 +3,7 @@
 /// one input: every case whose condition holds, with its value.
 ///
 /// A correct table matches exactly one case for every input it covers. A printed table with an
-/// erratum shows it here: `count == 0` is a gap (e.g. [000:7] on b ∈ (270°, 360°), spec E1),
+/// erratum shows it here: `count == 0` is a gap (e.g. [000:7] on b ∈ (270°, 360°), erratum E1),
 /// `count == 2` an overlap. `value()` is the single value when `count == 1`.
 #pragma once
 

@@ -1,10 +1,10 @@
 /// @file paper/cn1624613.hpp
-/// Seed 002 (patent CN1624613, 4-axis post-processor, VB source): the A angle of a tool axis,
+/// Patent CN1624613 (4-axis post-processor, VB source): the A angle of a tool axis,
 /// the point transform with a fixture offset, the incremental A output and the dynamic feed,
 /// written as the code computes them.
 ///
 /// Machine: a rotary table A about +X. A cutter-location point is a tip p (mm) and a tool axis
-/// u; angles are degrees. Example, spec §3.3:
+/// u; angles are degrees. Example (docs/papers.md, CN1624613):
 /// @code
 ///   using namespace kin5::paper::cn1624613;
 ///   cl_point p1{{0, 0, 0}, {0, 0, 1}}, p2{{2, 0, 0}, kin5::rotate(kin5::unit_x, kin5::to_radians(kin5::degrees{10}), {0, 0, 1})};

@@ -1,11 +1,11 @@
 /// @file paper/degree_trig.hpp
-/// Trigonometry in degrees, as the seed papers write their formulas, for the `kin5::paper`
+/// Trigonometry in degrees, as the source papers write their formulas, for the `kin5::paper`
 /// headers. Thin wrappers over `kin5::math`, so they work in constant expressions.
 ///
 ///     sin_deg(30) == 0.5      atan_deg(1) == 45      wrap360_deg(-90) == 270
 ///
 /// `atan_deg` is the one-argument arctangent (range (−90°, 90°)) the papers print; `atan2_deg`
-/// is the quadrant-correct form the spec uses for corrections.
+/// is the quadrant-correct form the corrections use (docs/errata.md).
 #pragma once
 
 #include "../core/math.hpp"
@@ -37,7 +37,7 @@ constexpr double wrap360_deg(double x_deg) {
   return r;
 }
 
-/// `x_deg` reduced modulo 360° into (−180°, 180°] (spec §1 `wrap180`).
+/// `x_deg` reduced modulo 360° into (−180°, 180°] (`wrap180`, docs/theory.md).
 constexpr double wrap180_deg(double x_deg) {
   const double r = wrap360_deg(x_deg);
   return r > 180.0 ? r - 360.0 : r;

@@ -1,10 +1,10 @@
 /// @file paper/ji_ac_table.hpp
-/// Seed 001 (Ji, side milling of ruled surfaces): the A/C dual-table tool axis and its inverse,
+/// Ji (side milling of ruled surfaces): the A/C dual-table tool axis and its inverse,
 /// as printed and corrected, and the side-milling error bounds.
 ///
 /// Machine: a tilting table A about +X on the bed carries a rotary table C about +Z that holds
 /// the part; a and c are *physical* table angles in degrees. The chain [001:6] with the
-/// matrices [001:9-10] gives u = R(Z, −c) R(X, −a) ẑ (spec K18). Example, spec §9.5:
+/// matrices [001:9-10] gives u = R(Z, −c) R(X, −a) ẑ (K18). Example (docs/golden.md):
 /// @code
 ///   auto u = kin5::paper::ji_ac_table::k18_tool_axis(37.0, 121.0);  // (0.515856159, −0.309957651, 0.798635510)
 ///   auto s = kin5::paper::ji_ac_table::k19_inverse(u);               // (37, 121) and (−37, 301)

@@ -1,10 +1,10 @@
 /// @file paper/liu_dmu50v.hpp
-/// Seed 003 (Liu 2010, DMU 50V post-processor): the inverse of a dual table with a 45° B axis,
+/// Liu 2010 (DMU 50V post-processor): the inverse of a dual table with a 45° B axis,
 /// as printed and corrected.
 ///
 /// Machine: a table B about (0, −1, 1)/√2 (range [0°, 180°]) carries a table C about +Z. As
-/// eqs [003:1-5] use the angles, u = R(Z, C) R(n′, B) ẑ with n′ = (0, 1, −1)/√2 (spec K22).
-/// Tool axis n = (a_x, a_y, a_z), unit, a_z ≥ 0. Degrees in and out. Example, spec §9.5:
+/// eqs [003:1-5] use the angles, u = R(Z, C) R(n′, B) ẑ with n′ = (0, 1, −1)/√2 (K22).
+/// Tool axis n = (a_x, a_y, a_z), unit, a_z ≥ 0. Degrees in and out. Example (docs/golden.md):
 /// @code
 ///   using namespace kin5::paper::liu_dmu50v;
 ///   vec3 u = normalized({-1, 1, 1});
@@ -20,7 +20,7 @@
 namespace kin5::paper::liu_dmu50v {
 
 /// [003:2]: OM = ½(−j + k) + (√2/2)((√2/2) cos B (j + k) + sin B i), i.e.
-/// R(n′, B) ẑ = (sin B/√2, −(1 − cos B)/2, (1 + cos B)/2) (spec K22).
+/// R(n′, B) ẑ = (sin B/√2, −(1 − cos B)/2, (1 + cos B)/2) (K22).
 constexpr vec3 eq2_om(double b_deg) {
   constexpr double half_sqrt2 = 0.70710678118654752;
   const double cb = cos_deg(b_deg), sb = sin_deg(b_deg);

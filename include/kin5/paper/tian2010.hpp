@@ -1,17 +1,17 @@
 /// @file paper/tian2010.hpp
-/// Seed 000 (Tian, Ren, Shi, Li 2010): the formulas of the SAJO 12000P (M1: table B_s about +Y,
+/// Tian, Ren, Shi, Li 2010 (Tian et al. 2010): the formulas of the SAJO 12000P (M1: table B_s about +Y,
 /// head A_s about +X) ↔ DMU 80P (M2: table C_d about +Z, head B_d about (0,1,1)/√2) translation,
-/// as printed and, where spec §8 lists an erratum, corrected.
+/// as printed and, where docs/errata.md lists an erratum, corrected.
 ///
 /// Degrees in and out, as the paper writes them; tool axes are unit vectors (i, j, k) in the
-/// workpiece frame of the machine named. Names carry the paper's equation, `[000:n]`, and the
-/// spec's tag, `(Kn)`. `_printed` is the formula exactly as printed, errors included; `_corrected`
-/// is the spec's fixed form. Example, spec §9.5:
+/// workpiece frame of the machine named. Names carry the paper's equation, `[000:n]` (eq. (n)), and the
+/// project's tag, `(Kn)` (docs/equations.md). `_printed` is the formula exactly as printed, errors included; `_corrected`
+/// is the fixed form. Example (docs/golden.md):
 /// @code
 ///   auto d = kin5::paper::tian2010::eq19_m1_to_m2_printed(-45.0, 30.0);  // (B_d, C_d) = (65.530199, 95.530199)
 ///   auto s = kin5::paper::tian2010::eq18_m2_to_m1(d->b_deg, d->c_deg);   // (A_s, B_s) = (−45, 30)
 /// @endcode
-/// These are cross-checks for kin5's general solver (spec §4), not the translator itself.
+/// These are cross-checks for kin5's general solver ((G1)–(G5)), not the translator itself.
 #pragma once
 
 #include <optional>
@@ -35,7 +35,7 @@ struct dmu_angles_deg {
 };
 
 // ---------------------------------------------------------------------------------------------
-// M1: perpendicular head + table (spec §2.1)
+// M1: perpendicular head + table, (K1)–(K4) (docs/papers.md)
 
 /// (K1) = [000:8]: u_s = (cos(−a) sin b, sin(−a), cos(−a) cos b), written as printed.
 constexpr vec3 eq8_tool_axis(double a_deg, double b_deg) {
@@ -98,7 +98,7 @@ constexpr sajo_angles_deg k3_second_branch(sajo_angles_deg s) { return {-180.0 -
 constexpr sajo_angles_deg k4_antipode(sajo_angles_deg s) { return {-s.a_deg, s.b_deg + 180.0}; }
 
 // ---------------------------------------------------------------------------------------------
-// M2: 45° tilted head + table (spec §2.2)
+// M2: 45° tilted head + table, (K5)–(K9) (docs/papers.md)
 
 /// (K5) = [000:14]: u_d = (√2/2 sin b cos c − (1−cos b)/2 sin c,
 ///                          √2/2 sin b sin c + (1−cos b)/2 cos c,  (1+cos b)/2).
@@ -113,7 +113,7 @@ constexpr vec3 eq14_tool_axis(double b_deg, double c_deg) {
 constexpr double eq10_b_deg(double k) { return acos_deg(2.0 * k - 1.0); }
 
 /// (K7), precise near the pole: b_d = 2·atan2(√(1−k), √k) with 1−k = (i²+j²)/(1+k).
-/// NaN for k < 0 (below M2's reach, spec P7).
+/// NaN for k < 0 (below M2's reach, P7).
 constexpr double k7_b_deg(const vec3& u) {
   const double one_minus_k = (u.x * u.x + u.y * u.y) / (1.0 + u.z);
   return 2.0 * atan2_deg(math::sqrt(one_minus_k), math::sqrt(u.z));
@@ -153,7 +153,7 @@ constexpr std::optional<double> eq13_c_deg(const vec3& u) {
 /// (K9): c_d = c_t + wrap180(atan2(j, i) − 90°) ∈ (c_t − 180°, c_t + 180°], c_t from (K8).
 constexpr double k9_c_deg(const vec3& u) { return k8_ct_deg(u) + wrap180_deg(atan2_deg(u.y, u.x) - 90.0); }
 
-/// (K7)-(K9) inverse of M2. Empty when k < 0 (unreachable, spec P7). At the pole u = +Z_d,
+/// (K7)-(K9) inverse of M2. Empty when k < 0 (unreachable, P7). At the pole u = +Z_d,
 /// b = 0 and c is arbitrary.
 constexpr std::optional<dmu_angles_deg> k7_k9_inverse(const vec3& u) {
   if (u.z < 0.0) return std::nullopt;
@@ -161,7 +161,7 @@ constexpr std::optional<dmu_angles_deg> k7_k9_inverse(const vec3& u) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The correspondence M1 ↔ M2 (spec §2.3)
+// The correspondence M1 ↔ M2, (K10)–(K11) (docs/papers.md)
 
 /// (K10) = [000:15-17]: T = T_ds = T_sd, maps M1 workpiece coordinates to M2's and back
 /// (T = Tᵀ = T⁻¹, det T = +1: the 180° turn about (0,1,1)/√2).
@@ -173,7 +173,7 @@ inline constexpr mat3 sajo_T_dmu = dmu_T_sajo;
 constexpr vec3 k11_map(const vec3& v_sajo) { return dmu_T_sajo * v_sajo; }
 
 // ---------------------------------------------------------------------------------------------
-// Translation formulas (spec §2.4)
+// Translation formulas, (K12)–(K14) (docs/papers.md)
 
 /// (K13) = [000:18], M2 → M1: A_s = −arcsin((1 + cos B_d)/2),
 /// B_s = C_d − arctan(√2 sin B_d / (1 − cos B_d)), and "B_s = C_d − 90° when B_d = 0".
@@ -198,14 +198,14 @@ constexpr std::optional<dmu_angles_deg> eq19_m1_to_m2_printed(double a_s_deg, do
   return dmu_angles_deg{b_d, b_s_deg + atan_deg(math::sqrt(-2.0 * s / (1.0 + s)))};
 }
 
-/// Which rule of spec §6.1 translates an M1 pose: it depends on A_s alone.
+/// Which rule of docs/matchability.md translates an M1 pose: it depends on A_s alone.
 enum class region {
   direct,  ///< A_s ∈ [−90°, 0°]: (K12) as printed
   flip_c,  ///< A_s ∈ [−180°, −90°): B_d from (K12), C_d = (K12) + 180° (E6)
   none,    ///< A_s ∈ (0°, 180°): k_d = −sin A_s < 0, unreachable for every B_s (E5)
 };
 
-/// The region of spec §6.1 for A_s, taken modulo 360° into (−180°, 180°].
+/// The region (docs/matchability.md) for A_s, taken modulo 360° into (−180°, 180°].
 constexpr region region_of(double a_s_deg) {
   const double a = wrap180_deg(a_s_deg);
   if (a >= -90.0 && a <= 0.0) return region::direct;
@@ -220,11 +220,11 @@ struct m1_to_m2 {
   /// C_d = B_s (A_s ≤ 90°) or B_s + 180° (A_s > 90°).
   dmu_angles_deg angles{};
   /// Angle from T·u_s to M2's reach, degrees: 0, or arcsin(sin A_s) for `none`, which is A_s on
-  /// (0°, 90°] (spec §6.1) and 180° − A_s beyond.
+  /// (0°, 90°] (docs/matchability.md) and 180° − A_s beyond.
   double gap_deg = 0.0;
 };
 
-/// (K12) corrected (E5, E6, spec §6.1): the region rule, with B_d and c_t in forms that keep
+/// (K12) corrected (E5, E6, docs/matchability.md): the region rule, with B_d and c_t in forms that keep
 /// full precision near the pole A_s = −90° (1 + sin A_s = 2 sin²((A_s + 90°)/2)).
 /// At A_s = −90° it gives C_d = B_s + 90°, the printed convention and the continuous limit.
 constexpr m1_to_m2 k12_corrected(double a_s_deg, double b_s_deg) {
@@ -244,7 +244,7 @@ constexpr m1_to_m2 k12_corrected(double a_s_deg, double b_s_deg) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Feed (spec §2.5)
+// Feed, (K15)–(K17) (docs/papers.md)
 
 /// One NC block of a five-axis program: linear axes in mm, the 4th and 5th rotary axes in
 /// degrees (M1: B_s, A_s; M2: C_d, B_d).

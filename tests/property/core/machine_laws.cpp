@@ -1,5 +1,5 @@
 // One law suite, run for every catalog machine: forward kinematics against the Eigen chain
-// (spec P1, P2), FK∘IK and IK∘FK, travel flags, reach against a brute-force sweep, poles (S2,
+// (P1, P2), FK∘IK and IK∘FK, travel flags, reach against a brute-force sweep, poles (S2,
 // P16) and the branch-choice helpers.
 #include <algorithm>
 #include <cmath>
@@ -308,7 +308,7 @@ TEMPLATE_LIST_TEST_CASE("poles (S2): keep and approach policies", "[core][pole]"
   }
 }
 
-TEST_CASE("seed-000 pole convention by approach (P16)", "[core][pole]") {
+TEST_CASE("Tian 2010 pole convention by approach (P16)", "[core][pole]") {
   using kin5::machines::dmu_80p;
   rc::prop("sajo (A, B) = (-90, b) to dmu-80p gives B = 0, C = b + 90", [] {
     const double b = *test::real_in(-2 * pi, 2 * pi);

@@ -1,4 +1,4 @@
-// The general two-axis solver (spec §4, G1–G5) on random unit p, q, t: properties P19–P24,
+// The general two-axis solver ((G1)–(G5), docs/theory.md) on random unit p, q, t: properties P19–P24,
 // with u built by Eigen's AngleAxisd, not by kin5's rotate.
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,6 @@
-// Spec §9.5 golden values and Table 1 of seed 000 (spec §5, P18), through the paper headers and
-// through kin5's general solver. Every number is typed from the spec; angles in degrees.
+// The golden values and Table 1 of Tian et al. 2010 (docs/golden.md, P18), through the paper
+// headers and through kin5's general solver. Every number is typed from docs/golden.md, where
+// they were computed independently of kin5; angles in degrees.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -47,7 +48,7 @@ double solver_m1_to_m2_distance(double a_s, double b_s, double b_d, double c_d) 
 
 }  // namespace
 
-TEST_CASE("Golden 9.5: M1 -> M2 translations", "[paper][golden]") {
+TEST_CASE("golden values: M1 -> M2 translations", "[paper][golden]") {
   SECTION("(a, b) = (-45, 30)") {
     const vec3 u_s = tian::eq8_tool_axis(-45, 30);
     CHECK(max_abs_diff(u_s, {0.353553391, 0.707106781, 0.612372436}) < golden_tol_vec);
@@ -85,7 +86,7 @@ TEST_CASE("Golden 9.5: M1 -> M2 translations", "[paper][golden]") {
   }
 }
 
-TEST_CASE("Golden 9.5: M2 forward and the second (G3) branch", "[paper][golden]") {
+TEST_CASE("golden values: M2 forward and the second (G3) branch", "[paper][golden]") {
   CHECK(max_abs_diff(tian::eq14_tool_axis(90, 0), {0.707106781, 0.5, 0.5}) < golden_tol_vec);
   CHECK(max_abs_diff(tian::eq14_tool_axis(180, 0), {0, 1, 0}) < golden_tol_vec);
   const vec3 u = tian::eq14_tool_axis(60, 45);
@@ -102,8 +103,8 @@ TEST_CASE("Golden 9.5: M2 forward and the second (G3) branch", "[paper][golden]"
   CHECK(found_outside);
 }
 
-TEST_CASE("Golden 9.5: seeds 001, 003, 004", "[paper][golden]") {
-  SECTION("seed 001: a = 37, c = 121") {
+TEST_CASE("golden values: Ji, Liu 2010, Li et al. 2013", "[paper][golden]") {
+  SECTION("Ji: a = 37, c = 121") {
     const vec3 u = kin5::paper::ji_ac_table::k18_tool_axis(37, 121);
     CHECK(max_abs_diff(u, {0.515856159, -0.309957651, 0.798635510}) < golden_tol_vec);
     const auto s = kin5::paper::ji_ac_table::k19_inverse(u);
@@ -115,7 +116,7 @@ TEST_CASE("Golden 9.5: seeds 001, 003, 004", "[paper][golden]") {
     CHECK(distance_to_nearest<km::ac_trunnion>(r, {121, 37}) < golden_tol_deg);
     CHECK(distance_to_nearest<km::ac_trunnion>(r, {301, -37}) < golden_tol_deg);
   }
-  SECTION("seed 003: u = (-1, 1, 1)/sqrt3 and u ~ (0.3, -0.4, 0.8)") {
+  SECTION("Liu 2010: u = (-1, 1, 1)/sqrt3 and u ~ (0.3, -0.4, 0.8)") {
     using namespace kin5::paper::liu_dmu50v;
     const vec3 u1 = kin5::normalized({-1, 1, 1});
     CHECK(eq3_b_deg(u1.z) == Approx(81.100571).margin(golden_tol_deg));
@@ -128,7 +129,7 @@ TEST_CASE("Golden 9.5: seeds 001, 003, 004", "[paper][golden]") {
     CHECK(*eq5_c_printed(u2).value() == Approx(-36.463855).margin(golden_tol_deg));
     CHECK(distance_to_nearest<km::dmu_50v>(kin5::inverse<km::dmu_50v>(u2), {-36.463855, 45.893313}) < golden_tol_deg);
   }
-  SECTION("seed 004 head-table: u ~ (0.2, 0.3, 0.9)") {
+  SECTION("Li et al. 2013 head-table: u ~ (0.2, 0.3, 0.9)") {
     // (psi_table, theta_B) = (158.908642, 255.698971) or (-21.091358, 14.301029); A = -psi.
     const auto r = kin5::inverse<km::b_head_a_tilted_table>(kin5::normalized({0.2, 0.3, 0.9}));
     CHECK(distance_to_nearest<km::b_head_a_tilted_table>(r, {-158.908642, 255.698971}) < golden_tol_deg);
@@ -138,7 +139,8 @@ TEST_CASE("Golden 9.5: seeds 001, 003, 004", "[paper][golden]") {
 
 namespace {
 
-// Table 1 of seed 000 (spec §5, table1.csv): SAJO G1 X Y Z A B and DMU L X Y Z B C. F not used (§7).
+// Table 1 of Tian et al. 2010 (docs/golden.md): SAJO G1 X Y Z A B and DMU L X Y Z B C. F not used
+// (docs/golden.md, "Table 1 feed column").
 struct table1_row {
   double xs, ys, zs, as, bs;
   double xd, yd, zd, bd, cd;
@@ -153,7 +155,7 @@ constexpr double table1_tol_deg = 0.001;
 
 }  // namespace
 
-TEST_CASE("P18 Table 1 of seed 000 through (K10)-(K13) and the general solver", "[paper][golden][table1]") {
+TEST_CASE("P18 Table 1 of Tian et al. 2010 through (K10)-(K13) and the general solver", "[paper][golden][table1]") {
   for (const auto& row : table1) {
     CAPTURE(row.as, row.bs);
     // Linear axes: exact.

@@ -1,4 +1,4 @@
-// Spec §9.4 identities P26-P29 for seeds 001, 002 and 003 (paper/ji_ac_table.hpp,
+// Laws P26-P29 for Ji, CN1624613 and Liu 2010 (docs/equations.md; paper/ji_ac_table.hpp,
 // paper/cn1624613.hpp, paper/liu_dmu50v.hpp).
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
@@ -18,9 +18,9 @@ using paper_test::max_abs_diff;
 using paper_test::uniform;
 
 // ---------------------------------------------------------------------------------------------
-// Seed 001
+// Ji: A/C dual table
 
-TEST_CASE("P26 seed 001: (K18) is the chain and printed [001:12] swaps i and j", "[paper][ji][errata]") {
+TEST_CASE("P26 Ji: (K18) is the chain and printed [001:12] swaps i and j", "[paper][ji][errata]") {
   using namespace kin5::paper::ji_ac_table;
   rc::prop("(K18) = R(Z, -c) R(X, -a) z", [] {
     const double a = *uniform(-180.0, 180.0), c = *uniform(-360.0, 360.0);
@@ -64,7 +64,7 @@ TEST_CASE("P26 seed 001: (K18) is the chain and printed [001:12] swaps i and j",
   });
 }
 
-TEST_CASE("P29 seed 001: side-milling error bounds (K20), (K21)", "[paper][ji]") {
+TEST_CASE("P29 Ji: side-milling error bounds (K20), (K21)", "[paper][ji]") {
   using namespace kin5::paper::ji_ac_table;
   CHECK(eq3_convex_error_mm(5.0, 40.0, 0.0) == Approx(0.0).margin(1e-12));
   CHECK(eq4_concave_error_mm(5.0, 40.0, 0.0) == Approx(0.0).margin(1e-12));
@@ -102,9 +102,9 @@ TEST_CASE("P29 seed 001: side-milling error bounds (K20), (K21)", "[paper][ji]")
 }
 
 // ---------------------------------------------------------------------------------------------
-// Seed 003
+// Liu 2010: DMU 50V
 
-TEST_CASE("P27 seed 003: [003:2], (K23)-(K24) and the printed case table", "[paper][liu][errata]") {
+TEST_CASE("P27 Liu 2010: [003:2], (K23)-(K24) and the printed case table", "[paper][liu][errata]") {
   using namespace kin5::paper::liu_dmu50v;
   rc::prop("[003:2] = R((0,1,-1)/sqrt2, B) z", [] {
     const double b = *uniform(-180.0, 360.0);
@@ -163,9 +163,9 @@ TEST_CASE("P27 seed 003: [003:2], (K23)-(K24) and the printed case table", "[pap
 }
 
 // ---------------------------------------------------------------------------------------------
-// Seed 002
+// Patent CN1624613: 4-axis post-processor
 
-TEST_CASE("P28 seed 002: (K25) angle, (K26) move, (K27) increment", "[paper][cn1624613]") {
+TEST_CASE("P28 CN1624613: (K25) angle, (K26) move, (K27) increment", "[paper][cn1624613]") {
   using namespace kin5::paper::cn1624613;
   SECTION("VrCalculation on the half-axes") {
     CHECK(vr_calculation_deg(0, 0, 1) == 0.0);
@@ -212,12 +212,12 @@ TEST_CASE("P28 seed 002: (K25) angle, (K26) move, (K27) increment", "[paper][cn1
   CHECK(k27_increment({{}, 190.0}, {{}, 10.0}).a_deg == 180.0);
 }
 
-TEST_CASE("P28 seed 002: (K28) dynamic feed", "[paper][cn1624613][feed]") {
+TEST_CASE("P28 CN1624613: (K28) dynamic feed", "[paper][cn1624613][feed]") {
   using namespace kin5::paper::cn1624613;
   // u1 = +z (A = 0), u2 = R(X, -10) z (A = 10), L = 2 mm.
   const cl_point p1{{0, 0, 0}, {0, 0, 1}};
   const cl_point p2{{2, 0, 0}, eigen_rotate(kin5::unit_x, -10.0, {0, 0, 1})};
-  SECTION("spec example values") {
+  SECTION("worked example values") {
     CHECK(feed_word(k28_feed_printed(p1, p2, 1000.0, 20.0, 1500.0)) == "F1223.607");
     CHECK(feed_word(k28_feed_corrected(p1, p2, 1000.0, 20.0, 1500.0)) == "F1223.607");
     CHECK(k28_feed_corrected(p1, p2, 1000.0, 20.0, 1500.0) == Approx(1000.0 * (1.0 + std::sqrt(0.05))).epsilon(1e-14));

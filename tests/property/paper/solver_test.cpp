@@ -1,5 +1,5 @@
-// Spec P25: kin5's general two-axis solver (§4, G1-G5) specialised to each catalog machine
-// equals the corrected seed formula for it, over random poses, near poles and at reach limits.
+// P25: kin5's general two-axis solver ((G1)-(G5)) specialised to each catalog machine
+// equals the corrected paper formula for it, over random poses, near poles and at reach limits.
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
@@ -28,7 +28,7 @@ using paper_test::uniform;
 
 namespace {
 
-// Whether `result` holds a solution equal (mod 360°, within tol_deg) to the seed's angles given
+// Whether `result` holds a solution equal (mod 360°, within tol_deg) to the paper's angles given
 // in M::rotary order; its within-travel flag is returned through `within`.
 template <class M, class Result>
 bool has_solution(const Result& result, std::array<double, kin5::rotary_count<M>> seed_deg, double tol_deg,
@@ -47,7 +47,7 @@ bool has_solution(const Result& result, std::array<double, kin5::rotary_count<M>
 
 }  // namespace
 
-TEST_CASE("P25 forward: kin5::tool_axis equals each seed's closed form", "[paper][solver]") {
+TEST_CASE("P25 forward: kin5::tool_axis equals each paper's closed form", "[paper][solver]") {
   rc::prop("sajo-12000p = (K1), dmu-80p = (K5), ac-trunnion = (K18), dmu-50v = (K22), a-rotary = R(X,A)z", [] {
     const double a = *uniform(-180.0, 180.0), b = *uniform(-360.0, 360.0);
     RC_ASSERT(max_abs_diff(kin5::tool_axis<km::sajo_12000p>({rad(b), rad(a)}), tian::eq8_tool_axis(a, b)) < 1e-12);
@@ -175,7 +175,7 @@ TEST_CASE("P25 a-rotary-4axis: the solver gives (K25)/(K26) A_cmd = -A", "[paper
   });
 }
 
-TEST_CASE("P25 b-head-a-tilted-table (seed 004): both branches reproduce u", "[paper][solver]") {
+TEST_CASE("P25 b-head-a-tilted-table (Li et al. 2013): both branches reproduce u", "[paper][solver]") {
   // rho = 1, c0 = 0: with B unlimited the whole sphere is reachable. With B in [-120, 120] the
   // latitude p.w = sin(B - 45 deg) stays in [-1, sin 75 deg], so axes within 15 deg of the
   // A direction p are out of reach, by 15 deg - angle(p, u).

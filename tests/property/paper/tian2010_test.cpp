@@ -1,4 +1,4 @@
-// Spec §9.1-9.2 identities P3-P17 for seed 000 (paper/tian2010.hpp), with the general solver
+// Laws P3-P17 for Tian et al. 2010 (docs/equations.md; paper/tian2010.hpp), with the general solver
 // where the identity is about what a machine can reach.
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
@@ -38,7 +38,7 @@ static_assert(eq7_b_corrected(-1.0, 1.0).count == 1 && eq7_b_corrected(-1.0, -1.
 static_assert(region_of(-90.0) == region::direct && region_of(0.0) == region::direct);
 static_assert(region_of(-90.000001) == region::flip_c && region_of(0.000001) == region::none);
 
-TEST_CASE("P1/P2 seed 000 closed forms equal the rotation chains", "[paper][tian2010]") {
+TEST_CASE("P1/P2 Tian 2010 closed forms equal the rotation chains", "[paper][tian2010]") {
   rc::prop("(K1) = [000:8] equals R(Y,b)R(X,a)z", [] {
     const double a = *uniform(-180.0, 180.0), b = *uniform(-720.0, 720.0);
     RC_ASSERT(max_abs_diff(eq8_tool_axis(a, b), m1_chain(a, b)) < 1e-12);
@@ -143,7 +143,7 @@ TEST_CASE("P7 M2 reach is the upper hemisphere and the gap below is arcsin(-k)",
   });
 }
 
-TEST_CASE("P8 seed-000 case tables equal their atan2 forms", "[paper][tian2010]") {
+TEST_CASE("P8 Tian 2010 case tables equal their atan2 forms", "[paper][tian2010]") {
   SECTION("corrected [000:7] on the four half-axes") {
     CHECK(*eq7_b_corrected(0, 1).value() == 0.0);
     CHECK(*eq7_b_corrected(1, 0).value() == 90.0);
@@ -225,7 +225,7 @@ TEST_CASE("P10 P11 the frame map T (K10)/(K11)", "[paper][tian2010]") {
   });
 }
 
-TEST_CASE("P12 P13 P14 (K12) per region of spec 6.1", "[paper][tian2010]") {
+TEST_CASE("P12 P13 P14 (K12) per matchability region", "[paper][tian2010]") {
   rc::prop("P12: a in [-90, 0]: FK_d(K12(a, b)) = T FK_s(a, b)", [] {
     const double a = *rc::gen::oneOf(uniform(-90.0, 0.0), near(-90.0, 1.0), near(0.0, 1.0));
     RC_PRE(a >= -90.0 && a <= 0.0);
