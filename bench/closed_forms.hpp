@@ -1,5 +1,5 @@
 /// @file bench/closed_forms.hpp
-/// The specialised closed-form inverse of each catalog machine, typed directly from the spec,
+/// The specialised closed-form inverse of each catalog machine, typed directly from docs/papers.md,
 /// as the baseline `inverse<M>` is measured against.
 ///
 /// Each `closed_form<M>::solve(u)` returns the same set `inverse<M>` returns for a unit tool
@@ -119,7 +119,7 @@ struct closed_form<machines::dmu_50v> {
 };
 
 /// Four-axis A table about +X, u = (0, −sin A, cos A): A = atan2(−u_y, u_z) (K25 with the
-/// opposite sign of seed 002's A); reachable only when u_x = 0.
+/// opposite sign of CN1624613's A); reachable only when u_x = 0.
 template <>
 struct closed_form<machines::a_rotary_4axis> {
   static closed_result<1> solve(const vec3& u) {

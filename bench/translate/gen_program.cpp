@@ -6,7 +6,7 @@
 // The path: a spiral of 0.1-0.25 mm steps over a wavy surface, under TRAORI, one
 // `N… G1 X Y Z A B F` block per step, with A in [-80°, -10°] and B in [-60°, 60°], both
 // smooth, so that every block lies in the SAJO's reachable region and maps directly onto the
-// DMU 80P (spec §6.1: A in [-90°, 0°]). A header (tool call, spindle, TRAORI, approach) and a
+// DMU 80P (docs/matchability.md: A in [-90°, 0°]). A header (tool call, spindle, TRAORI, approach) and a
 // footer (retract, TRAFOOF, M30) frame the motion blocks.
 #include <charconv>
 #include <cmath>

@@ -5,7 +5,7 @@
 #
 # Each test runs the built tool on a program (the shipped examples, or one written below),
 # then checks the exit code, stdout/stderr and the output file. Expected numbers are typed from
-# the specification (docs: spec §5 Table 1, §6.1, §7, K1, K7) or worked by hand, never taken
+# docs/golden.md (Table 1 and its feed column), docs/matchability.md, (K1), (K7) or worked by hand, never taken
 # from kin5's own output. Numbers are read back from the written program by awk.
 set -u
 
@@ -59,7 +59,7 @@ line_with() {
   done
 }
 
-# Table 1 (spec §5): SAJO X Y Z A B F -> DMU X Y Z B C.
+# Table 1 (docs/golden.md): SAJO X Y Z A B F -> DMU X Y Z B C.
 table1='-34.983 9.100 118.526 -77.954 3.536 1091 34.983 118.526 9.100 17.067 87.479
 -33.824 9.118 117.545 -77.913 4.027 1093 33.824 117.545 9.118 17.126 87.950
 -32.674 9.153 116.558 -77.918 4.588 1094 32.674 116.558 9.153 17.118 88.513
@@ -96,7 +96,7 @@ case "$name" in
     check_table1 table1.h || { report "Table 1 values"; show table1.h; }
     ;;
   block-time)
-    # (K17) f_d = f_s l_d / l_s on consecutive rows: spec §7 gives 1089.25, 1094.48, 1102.02 for
+    # (K17) f_d = f_s l_d / l_s on consecutive rows: docs/golden.md gives 1089.25, 1094.48, 1102.02 for
     # rows 2-4; row 1 comes from a pure 50 mm approach (no rotary change): F kept, 1091.
     run 0 translate --from sajo-12000p --to dmu-80p --feed block-time -o bt.h "$example"
     check_table1 bt.h "1091 1089.25 1094.48 1102.02" || { report "block-time feeds"; show bt.h; }
@@ -153,7 +153,7 @@ case "$name" in
     [ "$fail" = 0 ] || show err
     ;;
   unreachable)
-    # A > 0 cannot be reached on the DMU (spec §6.1): gap exactly A, for every B. Three such
+    # A > 0 cannot be reached on the DMU (docs/matchability.md): gap exactly A, for every B. Three such
     # blocks among reachable ones; A = -100 is reachable (other branch, C + 180).
     printf '%s\n' 'N10 G17 G90 G94' 'N20 TRAORI' 'N30 G1 X0 Y0 Z50 A-45 B30 F1000' \
       'N40 G1 X1 Y0 Z50 A5 B30' 'N50 G1 X2 Y0 Z50 A-30 B60' 'N60 G1 X3 Y0 Z50 A10 B200' \
@@ -222,7 +222,7 @@ case "$name" in
     ;;
   both-ways)
     # Table 1 back again: DMU 80P -> SAJO 12000P on the translated program returns the SAJO
-    # columns (K13; spec §5: within 0.00055 deg of the table), B compared modulo 360.
+    # columns (K13; docs/golden.md: within 0.00055 deg of the table), B compared modulo 360.
     run 0 translate --from sajo-12000p --to dmu-80p -o there.h "$example"
     run 0 translate --from dmu-80p --to sajo-12000p -o back.mpf there.h
     printf '%s\n' "$table1" | while read -r sx sy sz sa sb rest; do
@@ -277,8 +277,8 @@ case "$name" in
     [ "$fail" = 0 ] || show p.h err
     ;;
   setup)
-    # A setup given three ways. T of spec K10 written as a matrix and as the half turn about
-    # (0,1,1) (spec §2.3: T = R((0,1,1)/sqrt2, 180 deg)) must give Table 1 exactly as the default.
+    # A setup given three ways. T of (K10) written as a matrix and as the half turn about
+    # (0,1,1) ((K10): T = R((0,1,1)/sqrt2, 180 deg)) must give Table 1 exactly as the default.
     run 0 translate --from sajo-12000p --to dmu-80p --setup-rotation=-1,0,0,0,0,1,0,1,0 -o m.h "$example"
     check_table1 m.h || { report "Table 1 with --setup-rotation"; show m.h; }
     run 0 translate --from sajo-12000p --to dmu-80p --setup-axis 0,1,1 --setup-angle 180 -o a.h "$example"

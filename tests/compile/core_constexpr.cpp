@@ -1,6 +1,6 @@
 // Compile-time proof of the core: <kin5/kin5.hpp> with the standard library alone, forward and
-// inverse kinematics in constant expressions (spec §5 Table 1 row 1, §9.5), the machine concept
-// rejecting a degenerate machine (spec S1), and the constexpr maths against known constants.
+// inverse kinematics in constant expressions (Table 1 row 1 and golden values of
+// docs/golden.md), the machine concept rejecting a degenerate machine (S1), and the constexpr maths against known constants.
 #if __has_include(<Eigen/Core>)
 #error "core_constexpr must build without Eigen on the include path"
 #endif
@@ -34,7 +34,7 @@ static_assert(math::wrap_pi(-pi) == pi && math::wrap_pi(3 * pi) == pi);
 static_assert(near(math::wrap_pi(7.0), 7.0 - 2 * pi, 1e-15));
 static_assert(near(math::sin(1e6), -0.34999350217129294, 1e-9));  // huge argument, reduced
 
-// --- forward kinematics (spec §9.5 golden values) ---------------------------------------
+// --- forward kinematics (golden values, docs/golden.md) ----------------------------------
 constexpr double h = 0.70710678118654752;
 // rotary order is workpiece → tool: dmu-80p lists {C, B}; sajo lists {B, A}.
 static_assert(near(tool_axis<dmu_80p>({to_radians(0_deg), to_radians(90_deg)}), vec3{h, 0.5, 0.5}, 1e-15));
@@ -46,7 +46,7 @@ static_assert(near(tool_axis<sajo_12000p>({to_radians(30_deg), to_radians(-45_de
 static_assert(near(tool_axis<machines::ac_trunnion>({to_radians(121_deg), to_radians(37_deg)}),
                    vec3{0.515856159, -0.309957651, 0.798635510}, 1e-9));
 
-// --- Table 1 row 1 (spec §5): sajo (A, B) = (−77.954°, 3.536°) → T·u_s → dmu-80p -------
+// --- Table 1 row 1 (docs/golden.md): sajo (A, B) = (−77.954°, 3.536°) → T·u_s → dmu-80p -------
 constexpr vec3 u_s = tool_axis<sajo_12000p>({to_radians(3.536_deg), to_radians(-77.954_deg)});
 constexpr vec3 u_d{-u_s.x, u_s.z, u_s.y};  // (K11): T = [[-1,0,0],[0,0,1],[0,1,0]]
 constexpr auto row1 = inverse<dmu_80p>(u_d);
@@ -56,18 +56,18 @@ static_assert(near(deg(row1_angles[1]), 17.067290, 1e-5), "B_d of Table 1 row 1"
 static_assert(near(deg(row1_angles[0]), 87.479443, 1e-5), "C_d of Table 1 row 1");
 static_assert(near(tool_axis<dmu_80p>(row1_angles), u_d, 1e-14));
 
-// The flip region (spec §9.5): sajo (−100°, 20°) needs C_d = 284.980852° ≡ −75.019148°.
+// The flip region (docs/golden.md): sajo (−100°, 20°) needs C_d = 284.980852° ≡ −75.019148°.
 constexpr vec3 flip_s = tool_axis<sajo_12000p>({to_radians(20_deg), to_radians(-100_deg)});
 constexpr auto flip = inverse<dmu_80p>(vec3{-flip_s.x, flip_s.z, flip_s.y});
 static_assert(near(deg((*flip.first_within_travel())[1]), 14.160202, 1e-5));
 static_assert(near(deg((*flip.first_within_travel())[0]), 284.980852 - 360.0, 1e-5));
 
-// Unreachable (spec P7, P14): sajo A = +20° maps below the dmu-80p horizon, gap 20°.
+// Unreachable (P7, P14): sajo A = +20° maps below the dmu-80p horizon, gap 20°.
 constexpr vec3 up_s = tool_axis<sajo_12000p>({to_radians(10_deg), to_radians(20_deg)});
 constexpr auto up = inverse<dmu_80p>(vec3{-up_s.x, up_s.z, up_s.y});
 static_assert(up.status == reach_status::unreachable && near(deg(up.gap), 20.0, 1e-9));
 
-// Seed 003 golden value (spec §9.5): u = (−1, 1, 1)/√3 → (B, C) = (81.100571°, 166.173952°).
+// Liu 2010 golden value (docs/golden.md): u = (−1, 1, 1)/√3 → (B, C) = (81.100571°, 166.173952°).
 constexpr auto s003 = inverse<machines::dmu_50v>(normalized(vec3{-1, 1, 1}));
 static_assert(near(deg((*s003.first_within_travel())[1]), 81.100571, 1e-5));
 static_assert(near(deg((*s003.first_within_travel())[0]), 166.173952, 1e-5));

@@ -1,4 +1,4 @@
-// A consumer of kin5::kin5: prints the dmu-80p tool axis at B = 90°, C = 0 (spec §9.5).
+// A consumer of kin5::kin5: prints the dmu-80p tool axis at B = 90°, C = 0 (docs/golden.md).
 #include <cstdio>
 
 #include <kin5/kin5.hpp>

@@ -1,5 +1,5 @@
-// Spec §6.1: a_s in 0.1° steps over [−120°, 30°] with random b_s, SAJO 12000P → DMU 80P.
-// Expected classes (spec §6.1 "Check", P13, P14): other_branch exactly on [−120°, −90.1°],
+// docs/matchability.md: a_s in 0.1° steps over [−120°, 30°] with random b_s, SAJO 12000P → DMU 80P.
+// Expected classes (docs/matchability.md, P13, P14): other_branch exactly on [−120°, −90.1°],
 // direct on [−90°, 0°], unreachable on [0.1°, 30°] with gap = a_s.
 #include <cmath>
 #include <random>
@@ -15,7 +15,7 @@
 using kin5::machines::dmu_80p;
 using kin5::machines::sajo_12000p;
 
-TEST_CASE("spec 6.1 scan: matchability classes and gaps of SAJO poses on the DMU 80P") {
+TEST_CASE("matchability scan: classes and gaps of SAJO poses on the DMU 80P") {
   std::mt19937 random(20100612);
   std::uniform_real_distribution<double> b_deg(-180.0, 180.0);
   auto p = kin5::test::tcp_program(kin5::program::dialect::siemens, "scan.mpf");
@@ -61,7 +61,7 @@ TEST_CASE("spec 6.1 scan: matchability classes and gaps of SAJO poses on the DMU
   CHECK(t.blocks_written == t.blocks_read - unreachable);
 }
 
-TEST_CASE("spec 6.1: reachable blocks of the scan reproduce the tool axis exactly (P12, P13)") {
+TEST_CASE("matchability scan: reachable blocks reproduce the tool axis exactly (P12, P13)") {
   const auto T = kin5::sajo_12000p_dmu_80p_setup.rotation;
   std::mt19937 random(7);
   std::uniform_real_distribution<double> b_deg(-180.0, 180.0);

@@ -1,5 +1,6 @@
-// Table 1 of seed 000 (spec §5, P18) through translate<sajo_12000p, dmu_80p> and back, and the
-// block-time feed (K17) against the spec §7 values. Table 1's F_d column is not asserted (§7).
+// Table 1 of Tian et al. 2010 (docs/golden.md, P18) through translate<sajo_12000p, dmu_80p> and
+// back, and the block-time feed (K17) against the values of docs/golden.md, "Table 1 feed
+// column". Table 1's F_d column itself is not asserted.
 #include <array>
 #include <cmath>
 
@@ -17,11 +18,11 @@ using kin5::program::dialect;
 
 struct row {
   double xs, ys, zs, as, bs, fs;  // SAJO 12000P: X Y Z A B F
-  double xd, yd, zd, bd, cd;      // DMU 80P: X Y Z B C (F_d not used, spec §7)
-  double bd_exact, cd_exact;      // spec §5: B_d, C_d computed independently from (K12)
+  double xd, yd, zd, bd, cd;      // DMU 80P: X Y Z B C (F_d not used, docs/golden.md)
+  double bd_exact, cd_exact;      // docs/golden.md: B_d, C_d computed independently
 };
 
-// table1.csv, typed in; the last two columns are the spec §5 "computed" values.
+// table1.csv, typed in; the last two columns are the computed values of docs/golden.md.
 constexpr std::array<row, 4> table1{{
     {-34.983, 9.100, 118.526, -77.954, 3.536, 1091, 34.983, 118.526, 9.100, 17.067, 87.479, 17.067290, 87.479443},
     {-33.824, 9.118, 117.545, -77.913, 4.027, 1093, 33.824, 117.545, 9.118, 17.126, 87.950, 17.125599, 87.949597},
@@ -94,7 +95,7 @@ TEST_CASE("Table 1, DMU 80P -> SAJO 12000P: positions exact, A and B within 0.00
     CHECK(std::abs(*a.x_mm - r.xs) <= 1e-9);
     CHECK(std::abs(*a.y_mm - r.ys) <= 1e-9);
     CHECK(std::abs(*a.z_mm - r.zs) <= 1e-9);
-    CHECK(std::abs(*a.a_deg - r.as) <= 1e-3);  // (K13): within 0.00055° (spec §5)
+    CHECK(std::abs(*a.a_deg - r.as) <= 1e-3);  // (K13): within 0.00055° (docs/golden.md)
     CHECK(std::abs(*a.b_deg - r.bs) <= 1e-3);
     CHECK_FALSE(a.c_deg.has_value());
   }
@@ -113,8 +114,8 @@ TEST_CASE("Table 1 round trip SAJO -> DMU -> SAJO gives the SAJO program back") 
   }
 }
 
-TEST_CASE("block-time feed is (K17) with (K16) lengths and gives the spec 7 values from the rounded table") {
-  // The spec §7 table: l_s, l_d from the printed (rounded) Table 1 columns.
+TEST_CASE("block-time feed is (K17) with (K16) lengths and gives the Table 1 feed column values from the rounded table") {
+  // The (K17) table of docs/golden.md: l_s, l_d from the printed (rounded) Table 1 columns.
   constexpr std::array<double, 3> expected{1089.25, 1094.48, 1102.02};
   for (std::size_t i = 1; i < 4; ++i) {
     const row &p = table1[i - 1], &r = table1[i];
@@ -164,7 +165,7 @@ TEST_CASE("inverse-time feed is G93 with F = 1 over the block time and is refuse
   CHECK_FALSE(refused.ok());
 }
 
-TEST_CASE("spec 9.5 golden values, one block each") {
+TEST_CASE("golden values of SAJO poses through translate, one block each") {
   struct value { double a, b, bd, cd; };
   // C_d as printed, to be compared modulo 360° (continuous C is written in (−180°, 180°]).
   const std::array<value, 5> values{{{-45, 30, 65.530199, 95.530199},

@@ -22,7 +22,7 @@ namespace heidenhain = kin5::program::heidenhain;
 namespace {
 
 constexpr const char* table1_mpf =
-    "; Table 1 of seed 000 on the SAJO 12000P\n"
+    "; Table 1 of Tian et al. 2010 on the SAJO 12000P\n"
     "T1 M6\n"
     "S4000 M3\n"
     "TRAORI\n"
@@ -97,7 +97,7 @@ TEST_CASE("machine-coordinate moves pass through unchanged with a warning and co
 }
 
 TEST_CASE("Heidenhain CC and C on the DMU 80P become a G18 arc on the SAJO") {
-  // DMU: B = 90°, C = 0 gives u_d = (1/√2, 1/2, 1/2) (spec §9.5). T u_d = (−1/√2, 1/2, 1/2) on the
+  // DMU: B = 90°, C = 0 gives u_d = (1/√2, 1/2, 1/2) (docs/golden.md). T u_d = (−1/√2, 1/2, 1/2) on the
   // SAJO: −sin A = 1/2, so A = −30°, and B = atan2(−1/√2, 1/2) = −54.735610° (K2).
   // Arc: XY plane on the DMU, normal Z_d, T Z_d = +Y_s: G18 on the SAJO, direction kept.
   const char* h =

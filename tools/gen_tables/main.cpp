@@ -1,5 +1,5 @@
 // kin5-gen-tables: matchability and reach tables for catalog machines, each value computed twice —
-// by the closed form (spec G5, §6.1) and numerically with Ipopt (kin5::reach) — side by side.
+// by the closed form ((G5), docs/matchability.md) and numerically with Ipopt (kin5::reach) — side by side.
 //
 //   kin5-gen-tables reach                      reach cone of every machine about its fixed axis
 //   kin5-gen-tables match --from A --to B      source carried-axis sweep → target reachability
@@ -33,7 +33,7 @@ std::string travel_text(const rotary_axis& a) {
   return buf;
 }
 
-/// Closed-form range of ∠(p, u): (G5) narrowed to the carried axis' travel (spec §4.3).
+/// Closed-form range of ∠(p, u): (G5) narrowed to the carried axis' travel.
 template <machine M>
 std::array<double, 2> closed_form_cone() {
   if constexpr (rotary_count<M> == 1) {
@@ -61,7 +61,7 @@ void print_reach() {
   });
 }
 
-/// Region of a source pose on the target (spec §6.1, generalised): direct when the source angles
+/// Region of a source pose on the target (docs/matchability.md, generalised): direct when the source angles
 /// are on the source's principal branch, other branch when on its second one, or unreachable.
 template <machine From>
 const char* source_branch(const rotary_angles<From>& angles) {
@@ -97,7 +97,7 @@ void print_match(double step_deg, double fixed_axis_deg, const rigid_transform& 
   }
 }
 
-// Spec K10: the SAJO 12000P → DMU 80P frame map; identity for any other pair.
+// (K10): the SAJO 12000P → DMU 80P frame map; identity for any other pair.
 template <machine From, machine To>
 rigid_transform default_map() {
   if constexpr ((std::is_same_v<From, machines::sajo_12000p> && std::is_same_v<To, machines::dmu_80p>) ||

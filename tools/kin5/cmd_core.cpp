@@ -1,8 +1,8 @@
 // The core subcommands of the kin5 tool, each a few calls into the headers:
 //
 //   kin5 machines                              the catalog, one machine per line
-//   kin5 solve --machine ID --vector I,J,K     every solution within travel (inverse<M>, spec §4)
-//   kin5 fk --machine ID NAME=DEG NAME=DEG     the unit tool axis (tool_axis<M>, spec G1)
+//   kin5 solve --machine ID --vector I,J,K     every solution within travel (inverse<M>, (G1)-(G5))
+//   kin5 fk --machine ID NAME=DEG NAME=DEG     the unit tool axis (tool_axis<M>, (G1))
 //
 // Exit codes are those of commands.hpp: 0 success, 1 bad arguments, 3 no solution.
 // Messages go to stderr as one line starting with "kin5 <command>:".

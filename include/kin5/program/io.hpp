@@ -109,13 +109,13 @@ class block_writer {
 ///
 /// | machine id              | controller                           | dialect      |
 /// |-------------------------|--------------------------------------|--------------|
-/// | `sajo-12000p`           | Siemens 840D (TRAORI), seed 000      | `siemens`    |
-/// | `dmu-80p`               | Heidenhain iTNC (M128), seed 000     | `heidenhain` |
-/// | `dmu-50v`               | Heidenhain (DMG's usual), seed 003   | `heidenhain` |
+/// | `sajo-12000p`           | Siemens 840D (TRAORI), Tian 2010     | `siemens`    |
+/// | `dmu-80p`               | Heidenhain iTNC (M128), Tian 2010    | `heidenhain` |
+/// | `dmu-50v`               | Heidenhain (DMG's usual), Liu 2010   | `heidenhain` |
 /// | `ac-trunnion`           | Siemens 840D                         | `siemens`    |
 /// | `ac-head`               | Siemens 840D                         | `siemens`    |
 /// | `b-head-a-tilted-table` | Siemens 840D                         | `siemens`    |
-/// | `a-rotary-4axis`        | ISO / Fanuc-style, seed 002          | `iso`        |
+/// | `a-rotary-4axis`        | ISO / Fanuc-style, CN1624613         | `iso`        |
 constexpr std::optional<dialect> default_dialect(std::string_view machine_id) {
   struct entry {
     std::string_view id;

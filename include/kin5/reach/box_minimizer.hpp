@@ -4,7 +4,7 @@
 ///
 /// The objective is given as a callable filling the value and the gradient; kin5::reach builds
 /// its objectives from dot products (smooth everywhere), never from arccos, whose derivative is
-/// infinite at 0 (spec §6.2).
+/// infinite at 0 (docs/matchability.md).
 #pragma once
 
 #include <IpIpoptApplication.hpp>

@@ -1,6 +1,6 @@
 /// @file reach/nearest_tool_axis.hpp
 /// The tool axis a machine can reach nearest to a requested one, found numerically: minimise
-/// 1 − u(angles) · v over the axes' travel (spec §6.2, "per-block feasibility").
+/// 1 − u(angles) · v over the axes' travel (docs/matchability.md, "per-block feasibility").
 ///
 /// The closed form in `inverse<M>` gives the same gap exactly when only the carried axis is
 /// bounded; this solver is the independent check, and the exact answer when both are bounded.

@@ -8,7 +8,7 @@
 /// `tcp` keeps F: under tool-tip tracking F is the tip speed relative to the part, and the tip
 /// path is the same on both machines (the setup is rigid), so the time per block is already
 /// kept. `block_time` applies (K17) literally, counting degrees as millimetres as a controller
-/// does without TCP; it does *not* reproduce Table 1's F column (spec §7). `inverse_time`
+/// does without TCP; it does *not* reproduce Table 1's F column (docs/golden.md). `inverse_time`
 /// writes G93, F = 1 / block time in minutes, which needs a dialect that has it (Siemens, ISO).
 /// Spindle speed is copied unchanged in every policy ([000:24-25]).
 #pragma once

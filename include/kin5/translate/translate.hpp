@@ -672,7 +672,7 @@ class nc_target {
     if (!s.principal) {
       report.match = matchability::other_branch;
       report.why = "the source pose is on the second solution branch of the source machine (K3); a closed-form "
-                   "translation on the principal branch would turn the table 180° off (spec E6)";
+                   "translation on the principal branch would turn the table 180° off (E6)";
     }
     on_report(block_report(report));
     const rotary_angles<To>& angles = *path.angles[j];

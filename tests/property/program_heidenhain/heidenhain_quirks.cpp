@@ -76,7 +76,7 @@ TEST_CASE("heidenhain: a program in NX and hand-edit style") {
   CHECK((b[15].motion == motion_kind::linear && b[15].axes.tool_axis == vec3{0, -0.7071068, 0.7071068}));
   CHECK((b[15].axes.z_mm == 3.0 && b[15].feed == 500.0));
   CHECK((b[16].tcp == true && b[16].kept_words == std::vector<std::string>{"F TCP", "AXIS POS", "PATHCTRL AXIS"}));
-  // Table 1, row 1, DMU side (spec §5).
+  // Table 1, row 1, DMU side (docs/golden.md).
   CHECK((b[17].axes.x_mm == 34.983 && b[17].axes.y_mm == 118.526 && b[17].axes.z_mm == 9.1));
   CHECK((b[17].axes.b_deg == 17.067 && b[17].axes.c_deg == 87.479 && b[17].feed == 1137.0 && b[17].tcp == true));
   CHECK((b[17].m_codes.empty() && b[17].kept_words == std::vector<std::string>{"R0"}));

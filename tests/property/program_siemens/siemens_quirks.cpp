@@ -1,5 +1,5 @@
 // Hand-written Siemens programs in the styles found in real 840D output, each checked against
-// values worked out by hand (Table 1 of the kinematics specification for the SAJO blocks).
+// values worked out by hand (Table 1 of Tian et al. 2010, docs/golden.md, for the SAJO blocks).
 #include <string>
 #include <vector>
 

@@ -1,4 +1,4 @@
-// kin5::reach (Ipopt) against the closed forms: spec §6.2 and P30.
+// kin5::reach (Ipopt) against the closed forms: docs/matchability.md and P30.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
@@ -15,10 +15,10 @@ namespace {
 constexpr double deg(double v) { return v * pi / 180.0; }
 constexpr double in_deg(radians r) { return r.value * 180.0 / pi; }
 
-// Spec K11: the SAJO → DMU frame map T.
+// (K11): the SAJO → DMU frame map T.
 vec3 sajo_to_dmu(const vec3& u) { return {-u.x, u.z, u.y}; }
 
-// (K1) typed from the spec, independent of kin5::tool_axis.
+// (K1) typed from docs/papers.md, independent of kin5::tool_axis.
 vec3 sajo_axis(double a_deg, double b_deg) {
   const double a = deg(a_deg), b = deg(b_deg);
   return {std::cos(a) * std::sin(b), -std::sin(a), std::cos(a) * std::cos(b)};
@@ -30,10 +30,10 @@ TEST_CASE("DMU 80P reach cone about its table axis is [0 deg, 90 deg]", "[reach]
   const auto range = reach::angle_range_to<dmu_80p>(unit_z);
   CHECK(range.converged);
   // The smallest angle is at the pole B = 0, where the objective is flat to second order:
-  // 1e-3 deg, as spec §6.2 advises for degenerate points.
+  // 1e-3 deg, as docs/matchability.md advises for degenerate points.
   CHECK(in_deg(range.smallest) == Approx(0.0).margin(1e-3));
   CHECK(in_deg(range.largest) == Approx(90.0).margin(1e-4));
-  // The largest angle is reached with the B bound active (spec §6.2).
+  // The largest angle is reached with the B bound active (docs/matchability.md).
   CHECK(in_deg(range.at_largest[1]) == Approx(180.0).margin(1e-3));
 }
 
@@ -50,7 +50,7 @@ TEST_CASE("Per-block gap of SAJO poses on the DMU 80P equals A_s above 0 and 0 e
       const auto nearest = reach::nearest_reachable_axis<dmu_80p>(sajo_to_dmu(sajo_axis(a_s, b_s)));
       INFO("a_s = " << a_s << ", b_s = " << b_s);
       CHECK(in_deg(nearest.gap) == Approx(a_s).margin(1e-4));
-      // Reached at B = 180 deg (bound active) and C = b_s (spec §6.1).
+      // Reached at B = 180 deg (bound active) and C = b_s (docs/matchability.md).
       CHECK(in_deg(nearest.angles[1]) == Approx(180.0).margin(1e-3));
       CHECK(std::remainder(in_deg(nearest.angles[0]) - b_s, 360.0) == Approx(0.0).margin(1e-3));
     }
@@ -59,7 +59,7 @@ TEST_CASE("Per-block gap of SAJO poses on the DMU 80P equals A_s above 0 and 0 e
     const auto nearest = reach::nearest_reachable_axis<dmu_80p>(sajo_to_dmu(sajo_axis(a_s, 33.0)));
     INFO("a_s = " << a_s);
     // At a_s = -90 deg the target pose is the pole B = 0 with C free, where the objective is
-    // flat in C and converges slowly (spec §6.2): compare the dot product, not the angle.
+    // flat in C and converges slowly (docs/matchability.md): compare the dot product, not the angle.
     CHECK(1.0 - std::cos(nearest.gap.value) < 1e-10);
   }
 }
@@ -89,7 +89,7 @@ TEST_CASE("Closed-form gap of inverse<M> agrees with Ipopt over the sphere", "[r
     const auto closed = inverse<dmu_80p>(v);
     const auto numeric = reach::nearest_reachable_axis<dmu_80p>(v, 3);
     // 1e-3 deg: at the pole (B = 0, C free) the objective 1 − u·v is flat to second order, so
-    // a converged Ipopt point can sit ~1e-4 deg away (spec §6.2).
+    // a converged Ipopt point can sit ~1e-4 deg away (docs/matchability.md).
     CHECK(in_deg(closed.gap) == Approx(in_deg(numeric.gap)).margin(1e-3));
   }
 }
