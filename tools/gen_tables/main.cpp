@@ -1,156 +1,197 @@
-// kin5-gen-tables: matchability and reach tables for catalog machines, each value computed twice —
-// by the closed form ((G5), docs/matchability.md) and numerically with Ipopt (kin5::reach) — side by side.
+// kin5-gen-tables: the matchability tables and maps of docs/tables/, for every ordered pair of
+// catalog machines, and the reach cones of every machine — each boundary and gap computed in
+// closed form and again with Ipopt (kin5::reach), side by side.
 //
-//   kin5-gen-tables reach                      reach cone of every machine about its fixed axis
-//   kin5-gen-tables match --from A --to B      source carried-axis sweep → target reachability
-//   --check DEG                                 exit 4 if the two ways disagree by more than DEG
-#include <cmath>
+//   kin5-gen-tables write DIR                    (re)write every file in DIR
+//   kin5-gen-tables check DIR [--shard K/N]      regenerate in memory and compare with DIR
+//   kin5-gen-tables check DIR --index            the same for README.md, reach.md, stale files
+//   kin5-gen-tables pair --from ID --to ID [--format md|csv|svg|json]   one pair to stdout
+//   kin5-gen-tables reach                        the reach cones to stdout
+//
+// `check` exits 4 when a file differs (words exactly, numbers to --tolerance) or when Ipopt
+// and the closed form disagree by more than 1e-6° (cosines at degenerate points).
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include <kin5/kin5.hpp>
 #include <kin5/reach.hpp>
+#include <kin5/translate/setup.hpp>
+
+#include "compare.hpp"
+#include "pages.hpp"
 
 namespace {
 
 using namespace kin5;
+namespace fs = std::filesystem;
 
-double deg(radians r) { return to_degrees(r).value; }
+/// One generated file: its name in DIR and its text.
+struct generated {
+  std::string name, text;
+};
 
-// Largest disagreement between closed form and Ipopt seen in this run, degrees.
-double worst_disagreement_deg = 0.0;
-void record(double closed_deg, double numeric_deg) {
-  worst_disagreement_deg = std::max(worst_disagreement_deg, std::abs(closed_deg - numeric_deg));
-}
-
-template <machine M>
-std::string travel_text(const rotary_axis& a) {
-  if (a.travel.continuous) return std::string(1, to_char(a.letter)) + " endless";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%c [%g, %g]", to_char(a.letter), a.travel.lower.value, a.travel.upper.value);
-  return buf;
-}
-
-/// Closed-form range of ∠(p, u): (G5) narrowed to the carried axis' travel.
-template <machine M>
-std::array<double, 2> closed_form_cone() {
-  if constexpr (rotary_count<M> == 1) {
-    const double a = deg(angle_between(M::rotary[0].direction, M::tool_reference));
-    return {a, a};
-  } else {
-    const auto image = kin5::detail::latitude_image(geometry<M>(), M::rotary[1]);
-    return {image[0] * 180.0 / pi, image[1] * 180.0 / pi};
-  }
-}
-
-void print_reach() {
-  std::printf("| machine | travel | angle to fixed axis, closed form (deg) | Ipopt (deg) | max difference (deg) |\n");
-  std::printf("|---|---|---|---|---|\n");
-  machines::for_each_machine([]<class M>() {
-    const auto closed = closed_form_cone<M>();
-    const auto numeric = reach::angle_range_to<M>(M::rotary[0].direction);
-    std::string travel;
-    for (const auto& a : M::rotary) travel += (travel.empty() ? "" : ", ") + travel_text<M>(a);
-    record(closed[0], deg(numeric.smallest));
-    record(closed[1], deg(numeric.largest));
-    const double diff = std::max(std::abs(closed[0] - deg(numeric.smallest)), std::abs(closed[1] - deg(numeric.largest)));
-    std::printf("| `%s` | %s | [%.6f, %.6f] | [%.6f, %.6f] | %.1e |\n", std::string(M::id).c_str(), travel.c_str(),
-                closed[0], closed[1], deg(numeric.smallest), deg(numeric.largest), diff);
+/// Calls f.template operator()<From, To>(index) for every ordered pair, in catalog order.
+template <class F>
+void for_each_pair(F&& f) {
+  std::size_t index = 0;
+  machines::for_each_machine([&]<class From>() {
+    machines::for_each_machine([&]<class To>() { f.template operator()<From, To>(index++); });
   });
 }
 
-/// Region of a source pose on the target (docs/matchability.md, generalised): direct when the source angles
-/// are on the source's principal branch, other branch when on its second one, or unreachable.
-template <machine From>
-const char* source_branch(const rotary_angles<From>& angles) {
-  const auto result = inverse<From>(tool_axis<From>(angles));
-  for (const auto& s : result) {
-    bool same = true;
-    for (std::size_t i = 0; i < rotary_count<From>; ++i)
-      same = same && std::abs(math::wrap_pi(s.angles[i].value - angles[i].value)) < 1e-9;
-    if (same) return s.branch == 0 ? "direct" : "other branch";
-  }
-  return "pole";
+template <machine From, machine To>
+reach::pair_table table_of(bool with_ipopt) {
+  const rigid_transform setup = default_setup<From, To>();
+  return reach::make_pair_table<From, To>(setup, true, with_ipopt);
 }
 
-template <machine From, machine To>
-void print_match(double step_deg, double fixed_axis_deg, const rigid_transform& target_T_source) {
-  static_assert(rotary_count<From> == 2, "the sweep runs over the source's carried axis");
-  const auto& swept = From::rotary[1];
-  const double lo = swept.travel.continuous ? -180.0 : swept.travel.lower.value;
-  const double hi = swept.travel.continuous ? 180.0 : swept.travel.upper.value;
-  std::printf("Source `%s`, %c = %g deg fixed, %c swept; target `%s`.\n\n", std::string(From::id).c_str(),
-              to_char(From::rotary[0].letter), fixed_axis_deg, to_char(swept.letter), std::string(To::id).c_str());
-  std::printf("| %c (deg) | region | gap, closed form (deg) | gap, Ipopt (deg) |\n|---|---|---|---|\n", to_char(swept.letter));
-  const int n = static_cast<int>(std::floor((hi - lo) / step_deg + 1e-9));
-  for (int k = 0; k <= n; ++k) {
-    const double q_deg = lo + k * step_deg;
-    const rotary_angles<From> angles{to_radians(degrees{fixed_axis_deg}), to_radians(degrees{q_deg})};
-    const vec3 u = target_T_source.map_direction(tool_axis<From>(angles));
-    const auto closed = inverse<To>(u);
-    const auto numeric = reach::nearest_reachable_axis<To>(u);
-    const char* region = closed.reachable() ? source_branch<From>(angles) : "unreachable";
-    record(deg(closed.gap), deg(numeric.gap));
-    std::printf("| %.3f | %s | %.6f | %.6f |\n", q_deg, region, deg(closed.gap), deg(numeric.gap));
-  }
+/// Ipopt checks that disagree with the closed form by more than 1e-6°.
+std::vector<std::string> disagreements(const reach::pair_table& t) {
+  constexpr double tolerance = 1e-6 * pi / 180.0;
+  std::vector<std::string> out;
+  auto look = [&](const reach::value_check& c) {
+    if (!reach::agrees(c, tolerance))
+      out.push_back(t.from + " -> " + t.to + ": " + c.what + " closed form " + std::to_string(c.closed * 180 / pi) +
+                    " deg, Ipopt " + (c.found ? std::to_string(c.numeric * 180 / pi) : std::string("none")));
+  };
+  for (const auto& c : t.branch_checks) look(c);
+  for (const auto& row : t.checks)
+    for (const auto& c : row) look(c);
+  return out;
 }
 
-// (K10): the SAJO 12000P → DMU 80P frame map; identity for any other pair.
-template <machine From, machine To>
-rigid_transform default_map() {
-  if constexpr ((std::is_same_v<From, machines::sajo_12000p> && std::is_same_v<To, machines::dmu_80p>) ||
-                (std::is_same_v<From, machines::dmu_80p> && std::is_same_v<To, machines::sajo_12000p>))
-    return {mat3{{vec3{-1, 0, 0}, vec3{0, 0, 1}, vec3{0, 1, 0}}}, {}};
-  else
-    return {};
+std::vector<generated> pair_files(const reach::pair_table& t) {
+  const std::string stem = "match-" + t.from + "-to-" + t.to;
+  return {{stem + ".md", reach::markdown(t)}, {stem + ".csv", reach::csv(t)}, {stem + ".svg", gen_tables::map_svg(t)}};
+}
+
+int write_all(const fs::path& dir) {
+  fs::create_directories(dir);
+  std::vector<reach::pair_table> tables;
+  for_each_pair([&]<class From, class To>(std::size_t) { tables.push_back(table_of<From, To>(true)); });
+  std::vector<generated> files{{"reach.md", gen_tables::reach_page()}, {"README.md", gen_tables::index_page(tables)}};
+  for (const auto& t : tables)
+    for (auto& f : pair_files(t)) files.push_back(std::move(f));
+  for (const auto& f : files) std::ofstream(dir / f.name, std::ios::binary) << f.text;
+  std::printf("kin5-gen-tables: wrote %zu files to %s\n", files.size(), dir.string().c_str());
+  return 0;
+}
+
+/// Compares one generated file with DIR's; prints and counts a difference.
+bool same_as_committed(const fs::path& dir, const generated& f, double tolerance) {
+  std::ifstream in(dir / f.name, std::ios::binary);
+  if (!in) {
+    std::fprintf(stderr, "%s: missing; run the regen_tables target\n", (dir / f.name).string().c_str());
+    return false;
+  }
+  std::stringstream committed;
+  committed << in.rdbuf();
+  const auto d = gen_tables::compare(committed.str(), f.text, tolerance);
+  if (!d.found) return true;
+  std::fprintf(stderr, "%s:%zu: differs from the regenerated text\n  committed:   %s\n  regenerated: %s\n",
+               (dir / f.name).string().c_str(), d.line, d.expected.c_str(), d.actual.c_str());
+  return false;
+}
+
+int check_pairs(const fs::path& dir, std::size_t shard, std::size_t shards, double tolerance) {
+  int failures = 0, pairs = 0;
+  for_each_pair([&]<class From, class To>(std::size_t index) {
+    if (index % shards != shard) return;
+    ++pairs;
+    const auto t = table_of<From, To>(true);
+    for (const auto& f : pair_files(t)) failures += same_as_committed(dir, f, tolerance) ? 0 : 1;
+    for (const auto& d : disagreements(t)) {
+      std::fprintf(stderr, "closed form and Ipopt disagree: %s\n", d.c_str());
+      ++failures;
+    }
+  });
+  std::printf("kin5-gen-tables: %d pairs checked, %d problems\n", pairs, failures);
+  return failures ? 4 : 0;
+}
+
+int check_index(const fs::path& dir, double tolerance) {
+  std::vector<reach::pair_table> tables;
+  std::set<std::string> expected{"README.md", "reach.md"};
+  for_each_pair([&]<class From, class To>(std::size_t) {
+    tables.push_back(table_of<From, To>(false));
+    for (const auto& ext : {".md", ".csv", ".svg"})
+      expected.insert("match-" + std::string(From::id) + "-to-" + std::string(To::id) + ext);
+  });
+  int failures = 0;
+  failures += same_as_committed(dir, {"README.md", gen_tables::index_page(tables)}, tolerance) ? 0 : 1;
+  failures += same_as_committed(dir, {"reach.md", gen_tables::reach_page()}, tolerance) ? 0 : 1;
+  if (!gen_tables::reach_page_agrees()) {
+    std::fprintf(stderr, "reach.md: closed form and Ipopt disagree by more than 1e-6 deg\n");
+    ++failures;
+  }
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (!expected.count(entry.path().filename().string())) {
+      std::fprintf(stderr, "%s: not generated by kin5-gen-tables; remove it\n", entry.path().string().c_str());
+      ++failures;
+    }
+  std::printf("kin5-gen-tables: index checked, %d problems\n", failures);
+  return failures ? 4 : 0;
+}
+
+int print_pair(const std::string& from, const std::string& to, const std::string& format) {
+  bool found = false;
+  for_each_pair([&]<class From, class To>(std::size_t) {
+    if (From::id != from || To::id != to) return;
+    found = true;
+    const auto t = table_of<From, To>(true);
+    const std::string text = format == "csv" ? reach::csv(t)
+                             : format == "svg" ? gen_tables::map_svg(t)
+                             : format == "json" ? reach::json(t)
+                                                : reach::markdown(t);
+    std::fwrite(text.data(), 1, text.size(), stdout);
+  });
+  if (!found) std::fprintf(stderr, "kin5-gen-tables: no catalog pair %s -> %s\n", from.c_str(), to.c_str());
+  return found ? 0 : 1;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"kin5-gen-tables: reach and matchability tables, closed form beside Ipopt"};
+  CLI::App app{"kin5-gen-tables: matchability tables and maps, closed form beside Ipopt"};
   app.require_subcommand(1);
-  auto* reach_cmd = app.add_subcommand("reach", "reach cone of every catalog machine about its fixed axis");
-  auto* match_cmd = app.add_subcommand("match", "sweep the source's carried axis and classify each pose on the target");
-  std::string from = "sajo-12000p", to = "dmu-80p";
-  double step = 5.0, fixed = 0.0;
-  match_cmd->add_option("--from", from, "source machine id")->capture_default_str();
-  match_cmd->add_option("--to", to, "target machine id")->capture_default_str();
-  match_cmd->add_option("--step", step, "sweep step, degrees")->capture_default_str()->check(CLI::PositiveNumber);
-  match_cmd->add_option("--fixed", fixed, "value of the source's fixed axis, degrees")->capture_default_str();
-  double tolerance = -1.0;
-  app.add_option("--check", tolerance,
-                 "exit 4 if closed form and Ipopt differ by more than this many degrees anywhere");
+  std::string dir, from, to, format = "md", shard_text = "0/1";
+  bool index = false;
+  double tolerance = 1.5e-6;
+  auto* write_cmd = app.add_subcommand("write", "write every table, map and index into DIR");
+  write_cmd->add_option("dir", dir, "output directory (docs/tables)")->required();
+  auto* check_cmd = app.add_subcommand("check", "regenerate in memory and compare with DIR");
+  check_cmd->add_option("dir", dir, "directory of committed tables")->required();
+  check_cmd->add_option("--shard", shard_text, "check only pairs whose index is K modulo N")->capture_default_str();
+  check_cmd->add_flag("--index", index, "check README.md, reach.md and that DIR holds nothing else");
+  check_cmd->add_option("--tolerance", tolerance, "largest difference allowed between numbers")->capture_default_str();
+  auto* pair_cmd = app.add_subcommand("pair", "one pair's table or map to stdout");
+  pair_cmd->add_option("--from", from, "source machine id")->required();
+  pair_cmd->add_option("--to", to, "target machine id")->required();
+  pair_cmd->add_option("--format", format, "md, csv, svg or json")->check(CLI::IsMember({"md", "csv", "svg", "json"}));
+  auto* reach_cmd = app.add_subcommand("reach", "the reach cones of every machine to stdout");
   CLI11_PARSE(app, argc, argv);
 
-  auto verdict = [&] {
-    if (tolerance >= 0 && worst_disagreement_deg > tolerance) {
-      std::fprintf(stderr, "kin5-gen-tables: closed form and Ipopt differ by %.3g deg (> %.3g)\n",
-                   worst_disagreement_deg, tolerance);
-      return 4;
-    }
-    return 0;
-  };
+  if (write_cmd->parsed()) return write_all(dir);
+  if (pair_cmd->parsed()) return print_pair(from, to, format);
   if (reach_cmd->parsed()) {
-    print_reach();
-    return verdict();
+    const std::string text = gen_tables::reach_page();
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    return gen_tables::reach_page_agrees() ? 0 : 4;
   }
-  bool found = false;
-  machines::for_each_machine([&]<class From>() {
-    if constexpr (rotary_count<From> == 2) {
-      machines::for_each_machine([&]<class To>() {
-        if (From::id == from && To::id == to) {
-          found = true;
-          print_match<From, To>(step, fixed, default_map<From, To>());
-        }
-      });
-    }
-  });
-  if (!found) {
-    std::fprintf(stderr, "kin5-gen-tables: no two-rotary source '%s' or target '%s' in the catalog\n", from.c_str(), to.c_str());
+  if (index) return check_index(dir, tolerance);
+  std::size_t shard = 0, shards = 1;
+  if (std::sscanf(shard_text.c_str(), "%zu/%zu", &shard, &shards) != 2 || shards == 0 || shard >= shards) {
+    std::fprintf(stderr, "kin5-gen-tables: --shard wants K/N with K < N\n");
     return 1;
   }
-  return verdict();
+  return check_pairs(dir, shard, shards, tolerance);
 }

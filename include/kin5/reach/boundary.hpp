@@ -1,7 +1,6 @@
 /// @file reach/boundary.hpp
 /// Where along a one-parameter family of source poses the target stops being able to follow:
-/// bisection on "the numerically nearest reachable axis is within tolerance" (docs/matchability.md,
-/// "boundary search").
+/// bisection on "the numerically nearest reachable axis is within tolerance" (docs/reach.md).
 ///
 /// Example: SAJO 12000P → DMU 80P, source A swept with B fixed: the boundary is A = 0°.
 #pragma once

@@ -1,7 +1,7 @@
 /// @file reach/cone.hpp
 /// The range of angles a machine's tool axis can make with a fixed direction, found numerically:
-/// minimise and maximise `d · u(angles)` over the travel (docs/matchability.md, "target reach
-/// cone" and "source image").
+/// minimise and maximise `d · u(angles)` over the travel: a target's reach cone, or the image of a
+/// source's travel about a direction.
 ///
 /// For the DMU 80P and d = ẑ the range is [0°, 90°] (closed form (G5) with ∠(p,q) = ∠(q,t) = 45°);
 /// for the SAJO 12000P and d = Y it is [0°, 90° + A₂].

@@ -1,6 +1,6 @@
 /// @file reach/nearest_tool_axis.hpp
 /// The tool axis a machine can reach nearest to a requested one, found numerically: minimise
-/// 1 − u(angles) · v over the axes' travel (docs/matchability.md, "per-block feasibility").
+/// 1 − u(angles) · v over the axes' travel: the per-block gap, found without the closed form.
 ///
 /// The closed form in `inverse<M>` gives the same gap exactly when only the carried axis is
 /// bounded; this solver is the independent check, and the exact answer when both are bounded.
@@ -99,22 +99,31 @@ inline std::vector<std::vector<double>> grid_starts(const std::vector<double>& l
 
 }  // namespace detail
 
-/// Minimises 1 − u·v over the travel of M from a grid of starts. `v` need not be unit.
+/// Minimises 1 − u·v over the travel of M from each of `starts` (commanded angles, radians);
+/// `v` need not be unit.
 template <machine M>
-nearest_axis<M> nearest_reachable_axis(const vec3& v_in, int starts_per_axis = 3) {
+nearest_axis<M> nearest_reachable_axis_from(const vec3& v_in, const std::vector<std::vector<double>>& starts) {
   const vec3 v = normalized(v_in);
   std::vector<double> lower, upper;
   detail::travel_box<M>(lower, upper);
   const objective f = [&v](const std::vector<double>& x, std::vector<double>& gradient, std::vector<double>& hessian) {
     return 1.0 + detail::linear_in_axis<M>(x, v, -1.0, gradient, hessian);  // 1 − u·v
   };
-  const box_minimum m = minimize_in_box(f, lower, upper, detail::grid_starts(lower, upper, starts_per_axis));
+  const box_minimum m = minimize_in_box(f, lower, upper, starts);
   nearest_axis<M> out;
   for (std::size_t i = 0; i < rotary_count<M>; ++i) out.angles[i] = {m.x[i]};
   out.axis = tool_axis<M>(out.angles);
   out.gap = angle_between(out.axis, v);
   out.converged = m.converged;
   return out;
+}
+
+/// Minimises 1 − u·v over the travel of M from a grid of `starts_per_axis` starts per axis.
+template <machine M>
+nearest_axis<M> nearest_reachable_axis(const vec3& v, int starts_per_axis = 3) {
+  std::vector<double> lower, upper;
+  detail::travel_box<M>(lower, upper);
+  return nearest_reachable_axis_from<M>(v, detail::grid_starts(lower, upper, starts_per_axis));
 }
 
 }  // namespace kin5::reach
