@@ -6,6 +6,7 @@
 #pragma once
 
 #include "kinematics.hpp"
+#include "kinematics/branch_plan.hpp"
 #include "program/io.hpp"
 #include "translate/feed.hpp"
 #include "translate/setup.hpp"

@@ -4,7 +4,7 @@
 ///
 /// "Nearest" is the largest single-axis move first, then the sum of moves (both in radians);
 /// ties keep the solver's order (the + branch of G3 first). Whole-program choice, which may
-/// prefer a larger move now to avoid a branch switch later, lives in the translator.
+/// prefer a larger move now to avoid a branch switch later, lives in `branch_plan.hpp`.
 #pragma once
 
 #include <optional>

@@ -1,0 +1,269 @@
+/// @file branch_plan.hpp
+/// Whole-program branch choice: given the tool axis of every motion block (target frame), one
+/// within-travel solution of `inverse<M>` per block such that the total rotary travel
+///
+///     J = Σ_blocks Σ_axes |Δangle|     (radians; a continuous axis the short way round)
+///
+/// is least, by dynamic programming over the blocks: exact, not greedy (`branch.hpp` picks the
+/// nearest solution to one previous block; this may take a larger move now to avoid a branch
+/// switch later). Ties go to fewer blocks off branch 0, then to the solver's order. Unreachable
+/// blocks are skipped and reported with their gap; at a pole (S2) the free angle is the
+/// neighbours'. Fed one tool axis at a time (`rotary_planner`), it keeps only the candidates
+/// (one or two per block) and a back pointer each; `plan_rotary_path` plans a whole list.
+/// Needs only `inverse<M>` and the standard library.
+/// @code
+///   kin5::rotary_planner<kin5::machines::dmu_80p> planner;
+///   for (const kin5::vec3& u_target : tool_axes) planner.add(u_target);
+///   const auto path = planner.finish();  // path.angles[k]: block k's angles, or empty
+/// @endcode
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <vector>
+
+#include "branch.hpp"
+#include "inverse.hpp"
+
+namespace kin5 {
+
+/// Rotary travel from `from` to `to`, Σ|Δ| in radians; a continuous axis goes the short way
+/// round (it is unwrapped next to the previous block, so that is the move it makes).
+template <machine M>
+constexpr double rotary_step_cost(const rotary_angles<M>& from, const rotary_angles<M>& to) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < rotary_count<M>; ++i) {
+    const double d = to[i].value - from[i].value;
+    sum += math::abs(M::rotary[i].travel.continuous ? math::wrap_pi(d) : d);
+  }
+  return sum;
+}
+
+/// Total rotary travel of a path of commanded angles, Σ over steps and axes of |Δ| (radians).
+template <machine M>
+constexpr double total_rotary_travel(std::span<const rotary_angles<M>> path) {
+  double sum = 0.0;
+  for (std::size_t k = 1; k < path.size(); ++k)
+    for (std::size_t i = 0; i < rotary_count<M>; ++i) sum += math::abs(path[k][i].value - path[k - 1][i].value);
+  return sum;
+}
+
+/// The chosen path: per tool axis the commanded angles (continuous axes unwrapped next to the
+/// previous block), or nothing when the block is unreachable.
+template <machine M>
+struct rotary_path {
+  std::vector<std::optional<rotary_angles<M>>> angles;
+  std::vector<int> branch;         ///< branch of the chosen solution (−1: unreachable)
+  std::vector<bool> pole;          ///< the chosen solution is at a pole
+  std::vector<unsigned> branches;  ///< bit b set: some candidate on branch b (a pole sets both)
+  std::vector<radians> gap;        ///< angle to the reach, for unreachable blocks
+  double travel_rad = 0.0;         ///< total rotary travel
+};
+
+/// Whole-program branch choice, fed one tool axis at a time: among all within-travel solutions of
+/// every block, the sequence of least total rotary travel Σ|Δ| over the program, by dynamic
+/// programming over the blocks (exact, not greedy); ties go to fewer blocks off branch 0, then to
+/// the solver's order. Unreachable blocks are skipped (the path joins the blocks either side of
+/// them). At a pole (S2) the free angle of p is taken from the nearest non-pole block before and
+/// after, so that staying costs nothing; pole blocks wait for the next non-pole block.
+///
+/// Memory: the candidates of every block (one or two per block away from poles) and one back
+/// pointer each; the DP itself keeps only the last reachable block's costs.
+template <machine M>
+class rotary_planner {
+ public:
+  /// Adds the tool axis (target frame, unit) of the next block.
+  void add(const vec3& u_target) {
+    const std::size_t k = count_++;
+    if (pending_.empty() && first_.size() != k) throw std::logic_error("rotary_planner: blocks out of order");
+    gap_.push_back(radians{0.0});
+    const auto r = inverse<M>(u_target);
+    if (!r.reachable()) gap_[k] = r.gap;
+    if (r.status == reach_status::pole) {
+      pending_.push_back({k, u_target, true});
+      return;
+    }
+    if (!pending_.empty()) {  // blocks wait in order behind the pole blocks
+      const bool reachable_here = std::any_of(r.begin(), r.end(), [](const auto& s) { return s.within_travel; });
+      if (!reachable_here) {
+        pending_.push_back({k, u_target, false});
+        return;
+      }
+      flush(&r);
+    }
+    begin_block();
+    add_within_travel(r, false);
+    if (candidates_.size() > first_[k]) {
+      step(k);
+      anchor_ = k;
+    }
+  }
+
+  /// The chosen path for every axis added (and clears the planner).
+  rotary_path<M> finish() {
+    flush(nullptr);
+    const std::size_t n = count_;
+    first_.push_back(static_cast<std::uint32_t>(candidates_.size()));  // first_[n]: the end
+    rotary_path<M> path;
+    path.gap = std::move(gap_);
+    path.angles.assign(n, std::nullopt);
+    path.branch.assign(n, -1);
+    path.pole.assign(n, false);
+    path.branches.assign(n, 0u);
+    for (std::size_t k = 0; k < n; ++k)
+      for (std::uint32_t c = first_[k]; c < first_[k + 1]; ++c)
+        path.branches[k] |= candidates_[c].pole ? 3u : (1u << candidates_[c].branch);
+    if (!frontier_.empty()) {
+      // Back pointers from the best last candidate name one candidate per reachable block.
+      std::size_t best = 0;
+      for (std::size_t c = 1; c < frontier_.size(); ++c)
+        if (better(frontier_[c], frontier_[best])) best = c;
+      std::uint32_t chosen = first_[last_] + static_cast<std::uint32_t>(best);
+      std::vector<std::uint32_t> choice(n, none32);
+      for (std::size_t k = n; k-- > 0;) {
+        if (first_[k] == first_[k + 1]) continue;
+        choice[k] = chosen;
+        chosen = candidates_[chosen].previous;
+      }
+      std::optional<rotary_angles<M>> before;
+      for (std::size_t k = 0; k < n; ++k) {
+        if (choice[k] == none32) continue;
+        const stored& c = candidates_[choice[k]];
+        rotary_angles<M> a = before ? unwrap_continuous<M>(c.angles, *before) : c.angles;
+        if (before) path.travel_rad += rotary_travel_between<M>(*before, a)[1];
+        path.angles[k] = a;
+        path.branch[k] = c.branch;
+        path.pole[k] = c.pole;
+        before = a;
+      }
+    }
+    *this = rotary_planner{};
+    return path;
+  }
+
+ private:
+  static constexpr std::size_t none = static_cast<std::size_t>(-1);
+  static constexpr std::uint32_t none32 = static_cast<std::uint32_t>(-1);
+  struct stored {
+    rotary_angles<M> angles{};  ///< continuous axes in (−180°, 180°]
+    std::int8_t branch = 0;     ///< (G3) branch; a pole counts as both
+    bool pole = false;
+    std::uint32_t previous = none32;  ///< the best candidate of the previous reachable block
+  };
+  struct cell {
+    double travel_rad = 0.0;
+    int off_principal = 0;
+  };
+  struct waiting {
+    std::size_t block;
+    vec3 u_target;  // unit
+    bool pole;
+  };
+  static constexpr double tie = 1e-9;  // radians of total travel that count as equal
+  static bool better(const cell& a, const cell& b) {
+    if (a.travel_rad < b.travel_rad - tie) return true;
+    if (a.travel_rad > b.travel_rad + tie) return false;
+    return a.off_principal < b.off_principal;
+  }
+
+  std::size_t count_ = 0;                // blocks added
+  std::vector<stored> candidates_;       // every block's candidates, in block order
+  std::vector<std::uint32_t> first_;     // per block: its first candidate in candidates_
+  std::vector<radians> gap_;             // per block
+  std::vector<waiting> pending_;         // blocks from the first pole block not yet resolved
+  std::vector<cell> frontier_;           // DP costs of the last reachable block's candidates
+  std::vector<cell> next_;               // the step being computed
+  std::size_t last_ = none;              // that block
+  std::size_t anchor_ = none;            // the last reachable non-pole block
+
+  /// Starts the candidate list of the next block (blocks are begun in order, each once).
+  void begin_block() {
+    if (candidates_.size() >= none32) throw std::length_error("kin5: program too long for the branch planner");
+    first_.push_back(static_cast<std::uint32_t>(candidates_.size()));
+  }
+
+  /// Appends the within-travel solutions of `r` to the block begun last, without duplicates.
+  void add_within_travel(const inverse_result<M>& r, bool pole) {
+    const std::size_t start = first_.back();
+    for (const auto& s : r) {
+      if (!s.within_travel) continue;
+      bool duplicate = false;
+      for (std::size_t c = start; c < candidates_.size(); ++c) {
+        bool same = true;
+        for (std::size_t i = 0; i < rotary_count<M>; ++i)
+          same = same && math::abs(candidates_[c].angles[i].value - s.angles[i].value) <= 1e-12;
+        duplicate = duplicate || same;
+      }
+      if (!duplicate) candidates_.push_back({s.angles, static_cast<std::int8_t>(s.branch), pole, none32});
+    }
+  }
+
+  /// One DP step: the cheapest way to each candidate of block k from the last reachable block.
+  void step(std::size_t k) {
+    const std::uint32_t begin = first_[k], end = static_cast<std::uint32_t>(candidates_.size());
+    std::vector<cell>& next = next_;  // reused: no allocation per block
+    next.assign(end - begin, cell{});
+    for (std::uint32_t c = begin; c < end; ++c) {
+      const int off = candidates_[c].branch != 0 && !candidates_[c].pole ? 1 : 0;
+      if (last_ == none) {
+        next[c - begin] = {0.0, off};
+        continue;
+      }
+      bool have = false;
+      for (std::size_t s = 0; s < frontier_.size(); ++s) {
+        const std::uint32_t from = first_[last_] + static_cast<std::uint32_t>(s);
+        const cell option{frontier_[s].travel_rad + rotary_step_cost<M>(candidates_[from].angles, candidates_[c].angles),
+                          frontier_[s].off_principal + off};
+        if (!have || better(option, next[c - begin])) {
+          next[c - begin] = option;
+          candidates_[c].previous = from;
+          have = true;
+        }
+      }
+    }
+    frontier_.swap(next);
+    last_ = k;
+  }
+
+  /// Resolves the waiting blocks, given the solutions `after` of the next reachable non-pole
+  /// block (none at the end of the program).
+  void flush(const inverse_result<M>* after) {
+    if (pending_.empty()) return;
+    std::vector<radians> free_angles;
+    if (anchor_ != none) {
+      const std::size_t end = anchor_ + 1 < first_.size() ? first_[anchor_ + 1] : candidates_.size();
+      for (std::size_t c = first_[anchor_]; c < end; ++c) free_angles.push_back(candidates_[c].angles[0]);
+    }
+    if (after)
+      for (const auto& s : *after)
+        if (s.within_travel) free_angles.push_back(s.angles[0]);
+    if (free_angles.empty()) free_angles.push_back(radians{0.0});
+    const std::vector<waiting> waiting_blocks = std::move(pending_);
+    pending_.clear();
+    for (const waiting& w : waiting_blocks) {
+      begin_block();
+      if (w.pole) {
+        for (radians p : free_angles) {
+          inverse_options options{};
+          options.pole = pole_policy::keep(p);
+          add_within_travel(inverse<M>(w.u_target, options), true);
+        }
+      }
+      if (candidates_.size() > first_[w.block]) step(w.block);
+    }
+  }
+};
+
+/// `rotary_planner` over a whole list of tool axes (target frame).
+template <machine M>
+rotary_path<M> plan_rotary_path(std::span<const vec3> tool_axes) {
+  rotary_planner<M> planner;
+  for (const vec3& u : tool_axes) planner.add(u);
+  return planner.finish();
+}
+
+}  // namespace kin5
