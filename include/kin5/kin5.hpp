@@ -1,8 +1,10 @@
 /// @file kin5.hpp
 /// Everything in kin5 that needs only the C++20 standard library: the kinematics core
-/// (`kinematics.hpp`), NC and CL programs (readers, writers, modal state) and the translation
-/// between machines. Eigen interop (`eigen.hpp`) and the Ipopt reach analysis (`reach.hpp`)
-/// have targets of their own.
+/// (`kinematics.hpp`) and the whole-program branch plan, NC and CL programs (readers, writers,
+/// modal state) and the translation between machines.
+/// Not included: the translation by machine id (`translate/by_id.hpp`, opt-in: it instantiates
+/// every pair of catalog machines), Eigen interop (`eigen.hpp`) and the Ipopt reach analysis
+/// (`reach.hpp`), which have targets of their own.
 #pragma once
 
 #include "kinematics.hpp"

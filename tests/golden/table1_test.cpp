@@ -123,9 +123,9 @@ TEST_CASE("block-time feed is (K17) with (K16) lengths and gives the Table 1 fee
                                  std::pow(r.as - p.as, 2) + std::pow(r.bs - p.bs, 2));
     const double l_d = std::sqrt(std::pow(r.xd - p.xd, 2) + std::pow(r.yd - p.yd, 2) + std::pow(r.zd - p.zd, 2) +
                                  std::pow(r.bd - p.bd, 2) + std::pow(r.cd - p.cd, 2));
-    CHECK(std::abs(kin5::block_time_feed(r.fs, l_s, l_d) - expected[i - 1]) <= 0.005);
+    CHECK(std::abs(kin5::block_time_feed_mm_per_min(r.fs, l_s, l_d) - expected[i - 1]) <= 0.005);
   }
-  CHECK(kin5::block_time_feed(1000.0, 0.0, 3.0) == 1000.0);  // l_s = 0 keeps F
+  CHECK(kin5::block_time_feed_mm_per_min(1000.0, 0.0, 3.0) == 1000.0);  // l_s = 0 keeps F
 
   // Through the translator: (K17) by hand from the source rows and the written DMU angles.
   const auto t = kin5::translate<sajo_12000p, dmu_80p>(sajo_program(), kin5::test::options(kin5::feed_policy::block_time));

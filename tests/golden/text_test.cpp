@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <kin5/kin5.hpp>
+#include <kin5/translate/by_id.hpp>
 #include <kin5/program/apt.hpp>
 #include <kin5/program/heidenhain.hpp>
 #include <kin5/program/iso.hpp>

@@ -5,7 +5,7 @@
 //   kin5 post      --machine ID [--dialect D] [-o OUT] IN       APT CL data -> NC program
 //
 // Each one reads IN (a path, or '-' for stdin) as bytes and runs a `block_translator`
-// (translate.hpp: make_translator / make_reverse / make_post) in two passes: the first over the
+// (translate/by_id.hpp: make_translator / make_reverse / make_post) in two passes: the first over the
 // blocks program/io.hpp's read_blocks reads, which it also keeps as compact records
 // (program/block_store.hpp); the second over those records, writing each output block as it is
 // made to OUT (a path, or '-' / nothing for stdout). Everything else goes to stderr:
@@ -35,7 +35,7 @@
 
 #include <kin5/program/block_store.hpp>
 #include <kin5/program/io.hpp>
-#include <kin5/translate/translate.hpp>
+#include <kin5/translate/by_id.hpp>
 
 #include "commands.hpp"
 #include "format.hpp"
@@ -272,14 +272,23 @@ prog::dialect dialect_or_default(const std::string& given, const std::string& ma
   return prog::default_dialect(machine_id).value_or(prog::dialect::siemens);
 }
 
-feed_policy parse_feed(const std::string& s) {
-  if (s == "block-time") return feed_policy::block_time;
-  if (s == "inverse-time") return feed_policy::inverse_time;
-  return feed_policy::tcp;
+/// The names of `feed_policies`, in its order.
+std::vector<std::string_view> feed_policy_names() {
+  std::vector<std::string_view> names;
+  for (const auto& p : feed_policies) names.push_back(p.name);
+  return names;
+}
+
+/// "tcp: …; block-time: …; inverse-time: …" from `feed_policies`.
+std::string feed_policy_help() {
+  std::string help;
+  for (const auto& p : feed_policies)
+    help += (help.empty() ? "" : "; ") + std::string(p.name) + ": " + std::string(p.help);
+  return help;
 }
 
 struct translate_arguments {
-  std::string from, to, feed = "tcp", from_dialect, to_dialect, output = "-", input;
+  std::string from, to, feed{feed_policies[0].name}, from_dialect, to_dialect, output = "-", input;
   std::string setup_rotation, setup_axis, setup_offset;
   std::optional<double> setup_angle_deg;
   bool verbose = false;
@@ -359,10 +368,16 @@ int run_translate(const translate_arguments& a) {
   translate_options options;
   options.setup = parse_setup(a);
   if (!options.setup) return exit_codes::usage;
-  options.feed = parse_feed(a.feed);
-  if (options.feed == feed_policy::inverse_time && !supports_inverse_time(j.output_dialect)) {
-    std::cerr << "kin5 translate: --feed inverse-time needs an output dialect with inverse-time feed (G93): "
-              << prog::name(j.output_dialect) << " has none; choose --to-dialect siemens or iso, or another --feed\n";
+  const auto feed = parse_feed_policy(a.feed);
+  if (!feed) {
+    std::cerr << "kin5 translate: --feed: unknown feed policy '" << a.feed << "'; valid: " << join(feed_policy_names())
+              << '\n';
+    return exit_codes::usage;
+  }
+  options.feed = *feed;
+  if (const auto refusal = feed_refusal(options.feed, j.output_dialect)) {  // found before reading
+    std::cerr << "kin5 translate: --feed " << a.feed << ": " << *refusal
+              << "; choose --to-dialect siemens or iso, or another --feed\n";
     return exit_codes::usage;
   }
   options.output_dialect = j.output_dialect;
@@ -433,16 +448,15 @@ const char* exit_code_footer =
 void add_program_commands(CLI::App& app, int& exit_code) {
   const auto dialects =
       CLI::IsMember(std::vector<std::string>(std::begin(nc_dialect_names), std::end(nc_dialect_names)));
+  const auto feed_names = feed_policy_names();
 
   {
     auto a = std::make_shared<translate_arguments>();
     auto* sub = app.add_subcommand("translate", "Translate an NC program from one machine to another");
     sub->add_option("--from", a->from, "Machine the program was written for (see `kin5 machines`)")->required();
     sub->add_option("--to", a->to, "Machine to write the program for")->required();
-    sub->add_option("--feed", a->feed,
-                    "tcp: F kept (tool-tip speed; right for TRAORI/M128/G43.4 programs); block-time: F scaled "
-                    "to keep each block's time, the paper's eq 23; inverse-time: G93, F = 1/block time")
-        ->check(CLI::IsMember({"block-time", "tcp", "inverse-time"}))
+    sub->add_option("--feed", a->feed, feed_policy_help())
+        ->check(CLI::IsMember(std::vector<std::string>(feed_names.begin(), feed_names.end())))
         ->capture_default_str();
     sub->add_option("--from-dialect", a->from_dialect, "Dialect of IN (default: the --from machine's)")
         ->check(dialects);

@@ -1,0 +1,76 @@
+/// @file translate/cl_target.hpp
+/// The target side for APT CL data (`reverse`): each motion block becomes one
+/// GOTO/x,y,z,i,j,k with the tool tip and tool axis of its source step, in the source
+/// workpiece frame (CL data names no machine, so there is no setup and nothing to plan). F is
+/// kept: CL feed is tool-tip feed. TCP switches become comments (CL data is tool-tip data);
+/// arcs and inverse-time feed are errors, since GOTO points cannot say them. Blocks that are
+/// not motion are copied, their dialect text carried over (`carry_over.hpp`).
+/// @code
+///   kin5::translate_detail::cl_target target(kin5::program::dialect::siemens);
+///   target.write(block, step, result, emit, on_report);  // GOTO/tip_source_mm, u_source
+/// @endcode
+#pragma once
+
+#include "../kinematics/matchability.hpp"
+#include "../program/block.hpp"
+#include "../program/modal.hpp"
+#include "carry_over.hpp"
+#include "options.hpp"
+#include "source_walk.hpp"
+
+namespace kin5::translate_detail {
+
+/// The target side for APT CL data: GOTO/x,y,z,i,j,k per motion block (no planning).
+class cl_target {
+ public:
+  static constexpr bool plans_with_tool_axis = false;  // `plan` is empty; `write` writes the axis
+  explicit cl_target(program::dialect source_language) : source_language_(source_language) {}
+
+  void plan(const source_step&) {}
+  void finish_plan() {}
+
+  /// Second pass: block `b` (whose step is `s`) → `emit`; reports to `on_report`.
+  template <class Emit, class Report>
+  void write(const program::block& b, const source_step& s, translation& out, Emit&& emit, Report&& on_report) {
+    if (s.what == source_step::kind::failed) return;
+    if (s.what == source_step::kind::passthrough) {
+      emit(carried_over(b, source_language_, program::dialect::apt));
+      ++out.passed_through;
+      return;
+    }
+    program::block o = b;
+    carry_over(o, source_language_, program::dialect::apt);
+    if (b.feed_mode == program::feed_unit::inverse_time) {
+      out.errors.push_back(at(b, "inverse-time feed (G93) cannot be written as APT CL data"));
+      return;
+    }
+    if (o.tcp) {  // CL data is tool-tip data: tracking is implied
+      if (!o.comment) o.comment = *o.tcp ? "tool-tip tracking on" : "tool-tip tracking off";
+      o.tcp.reset();
+    }
+    if (s.what == source_step::kind::copy) {
+      o.arc.reset();
+      emit(std::move(o));
+      return;
+    }
+    block_report report{b.where, s.principal ? matchability::direct : matchability::other_branch, {}, {}, {}};
+    if (!s.principal) report.why = "the source pose is on the second solution branch of the source machine (K3)";
+    on_report(block_report(report));
+    if (program::is_arc(s.motion)) {
+      out.errors.push_back(at(b, "circular move cannot be written as GOTO points; kin5 does not linearise arcs"));
+      return;
+    }
+    o.text.clear();
+    o.axes = {};
+    o.axes.x_mm = s.tip_source_mm.x, o.axes.y_mm = s.tip_source_mm.y, o.axes.z_mm = s.tip_source_mm.z;
+    o.axes.tool_axis = s.u_source;
+    o.motion = s.rapid ? program::motion_kind::rapid : program::motion_kind::linear;
+    if (s.rapid) o.feed.reset();
+    emit(std::move(o));
+  }
+
+ private:
+  program::dialect source_language_;
+};
+
+}  // namespace kin5::translate_detail

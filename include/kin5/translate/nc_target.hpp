@@ -1,0 +1,299 @@
+/// @file translate/nc_target.hpp
+/// The target side for an NC machine To, in two passes over the source steps:
+///
+///     plan:  u_target = target_T_source.map_direction(u_source)   → rotary_planner<To>
+///     write: tip_target_mm = target_T_source.map_point(tip_source_mm),
+///            the planned angles of To (degrees), F by the feed policy → one output block
+///
+/// Arcs are written in the plane the setup maps theirs onto (direction flipped when its normal
+/// lands on a negative axis), or refused; plane words G17–G19 are mapped the same way. A block
+/// To cannot reach is an error with its gap; a branch switch is a warning. Blocks that are not
+/// motion are copied, their dialect text carried over (`carry_over.hpp`).
+/// @code
+///   kin5::translate_detail::nc_target<To> target(target_T_source, kin5::feed_policy::tcp,
+///                                                from_dialect, to_dialect, false);
+///   for (const auto& s : steps) target.plan(s);
+///   target.finish_plan();
+///   for (std::size_t k = 0; k < blocks.size(); ++k) target.write(blocks[k], steps[k], result, emit, on_report);
+/// @endcode
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "../core/rigid.hpp"
+#include "../kinematics/branch_plan.hpp"
+#include "../program/block.hpp"
+#include "../program/modal.hpp"
+#include "carry_over.hpp"
+#include "feed.hpp"
+#include "options.hpp"
+#include "source_walk.hpp"
+
+namespace kin5::translate_detail {
+
+inline std::optional<double>& rotary_word(program::axis_words& w, axis_letter l) {
+  return l == axis_letter::A ? w.a_deg : (l == axis_letter::B ? w.b_deg : w.c_deg);
+}
+
+/// The change of the source's commanded angles from step `from` to step `to` (degrees, machine
+/// order), as (K16) counts it; `count` of them.
+struct rotary_delta_deg {
+  std::array<double, 2> value{};
+  std::size_t count = 0;
+  std::span<const double> span() const { return {value.data(), count}; }
+};
+inline rotary_delta_deg source_rotary_delta(const source_step& from, const source_step& to) {
+  rotary_delta_deg d;
+  d.count = to.rotary_count;
+  for (std::size_t i = 0; i < to.rotary_count && i < from.rotary_count; ++i)
+    d.value[i] = to.rotary_source_deg[i] - from.rotary_source_deg[i];
+  return d;
+}
+
+/// The target side for an NC machine To: branch choice over the program (first pass), then feed
+/// and output blocks (second pass).
+template <machine To>
+class nc_target {
+ public:
+  static constexpr bool plans_with_tool_axis = true;  // `plan` needs it; `write` uses the planned angles
+  /// `switch_tcp_on`: switch tool-tip tracking on in the first motion block and off at the
+  /// program end (`post`, whose CL input has no TCP words).
+  nc_target(const rigid_transform& target_T_source, feed_policy feed, program::dialect source_language,
+            program::dialect output_language, bool switch_tcp_on)
+      : target_T_source_(target_T_source),
+        feed_(feed),
+        source_language_(source_language),
+        output_language_(output_language),
+        switch_tcp_on_(switch_tcp_on) {}
+
+  /// First pass: the step of every block, in order.
+  void plan(const source_step& s) {
+    if (s.what == source_step::kind::motion) planner_.add(normalized(target_T_source_.map_direction(s.u_source)));
+  }
+  void finish_plan() { path_ = planner_.finish(); }
+
+  /// Second pass: block `b` (whose step is `s`) → `emit`; reports to `on_report`.
+  template <class Emit, class Report>
+  void write(const program::block& b, const source_step& s, translation& out, Emit&& emit, Report&& on_report) {
+    if (s.what == source_step::kind::failed) return;
+    if (s.what == source_step::kind::passthrough) {
+      emit(carried_over(b, source_language_, output_language_));
+      ++out.passed_through;
+      return;
+    }
+    program::block o = b;
+    if (auto error = map_plane_words(o, target_T_source_.rotation)) {
+      out.errors.push_back(at(b, *error));
+      return;
+    }
+    carry_over(o, source_language_, output_language_);
+    if (b.feed_mode == program::feed_unit::inverse_time) {
+      if (auto error = feed_refusal(feed_policy::inverse_time, output_language_)) {
+        out.errors.push_back(at(b, *error));
+        return;
+      }
+    }
+    if (s.what == source_step::kind::copy) {
+      write_copy(b, std::move(o), out, emit);
+      return;
+    }
+    write_motion(b, s, std::move(o), out, emit, on_report);
+  }
+
+ private:
+  rigid_transform target_T_source_;
+  feed_policy feed_;
+  program::dialect source_language_, output_language_;
+  bool switch_tcp_on_;
+  rotary_planner<To> planner_;
+  rotary_path<To> path_;
+  bool output_inverse_time_ = false, tcp_switched_on_ = false, inverse_time_error_ = false;
+  std::optional<std::size_t> previous_motion_;  // motion index of the last written motion
+  source_step previous_step_;                   // its step
+  std::size_t next_motion_ = 0;                 // motion index of the next motion block
+
+  /// A block that is not motion: an arc centre on its own is mapped; feed and TCP words follow
+  /// the policy.
+  template <class Emit>
+  void write_copy(const program::block& b, program::block&& o, translation& out, Emit&& emit) {
+    if (b.arc && b.arc->centre_mm) {  // an arc centre on its own (Heidenhain CC)
+      const auto mapped = principal_plane(target_T_source_.rotation * plane_normal(b.arc->plane));
+      if (!mapped) {
+        out.errors.push_back(at(b, "circular move cannot be mapped: plane " + std::string(plane_name(b.arc->plane)) +
+                                       " has no principal image on the target"));
+        return;
+      }
+      o.arc->plane = mapped->first;
+      o.arc->centre_mm = target_T_source_.map_point(*b.arc->centre_mm);
+      if (output_language_ != program::dialect::heidenhain) {  // G2/G3 carry their own centre: keep a note
+        const vec3 centre_target_mm = *o.arc->centre_mm;
+        if (!o.comment)
+          o.comment = "circle centre X" + fixed(centre_target_mm.x, 3) + " Y" + fixed(centre_target_mm.y, 3) + " Z" +
+                      fixed(centre_target_mm.z, 3);
+        o.arc.reset();
+      }
+    }
+    if (feed_ == feed_policy::inverse_time && b.feed_mode != program::feed_unit::inverse_time) {
+      o.feed.reset();
+      o.feed_mode.reset();
+    }
+    if (switch_tcp_on_ && tcp_switched_on_ && b.program_end) o.tcp = false;
+    emit(std::move(o));
+  }
+
+  /// A motion block: the planned angles, the mapped tip (or arc), the feed.
+  template <class Emit, class Report>
+  void write_motion(const program::block& b, const source_step& s, program::block&& o, translation& out, Emit&& emit,
+                    Report&& on_report) {
+    const std::size_t j = next_motion_++;
+    if (!report_motion(b, s, j, out, on_report)) return;
+    const rotary_angles<To>& angles_target = *path_.angles[j];
+    const vec3 tip_target_mm = target_T_source_.map_point(s.tip_source_mm);
+    std::array<double, 2> angles_target_deg{};
+    for (std::size_t i = 0; i < rotary_count<To>; ++i) angles_target_deg[i] = to_degrees(angles_target[i]).value;
+
+    o.text.clear();
+    o.axes = {};
+    if (switch_tcp_on_ && !tcp_switched_on_) o.tcp = true, tcp_switched_on_ = true;
+    if (program::is_arc(s.motion)) {
+      if (!write_arc(b, s, angles_target, tip_target_mm, o, out)) return;
+    } else {
+      o.axes.x_mm = tip_target_mm.x, o.axes.y_mm = tip_target_mm.y, o.axes.z_mm = tip_target_mm.z;
+      for (std::size_t i = 0; i < rotary_count<To>; ++i) rotary_word(o.axes, To::rotary[i].letter) = angles_target_deg[i];
+    }
+    write_feed(b, s, tip_target_mm, angles_target_deg, o, out);
+    warn_branch_switch(b, j, out);
+    previous_motion_ = j;
+    previous_step_ = s;
+    emit(std::move(o));
+  }
+
+  /// Reports motion block `b` (its `j`-th motion); false, with an error, when To cannot reach it.
+  template <class Report>
+  bool report_motion(const program::block& b, const source_step& s, std::size_t j, translation& out,
+                     Report&& on_report) {
+    block_report report{b.where, matchability::direct, {}, {}, {}};
+    if (!path_.angles[j]) {
+      report.match = matchability::unreachable;
+      report.gap = path_.gap[j];
+      report.why = "tool axis " + fixed(to_degrees(path_.gap[j]).value, 3) + "° outside the reach of " +
+                   std::string(To::id);
+      out.errors.push_back(at(b, std::string(To::id) + " cannot reach this block (" + angles_text(s) + "): " + report.why));
+      on_report(std::move(report));
+      return false;
+    }
+    if (!s.principal) {
+      report.match = matchability::other_branch;
+      report.why = "the source pose is on the second solution branch of the source machine (K3); a closed-form "
+                   "translation on the principal branch would turn the table 180° off (E6)";
+    }
+    on_report(block_report(report));
+    return true;
+  }
+
+  /// The words of an arc: end point, direction and centre in the plane the setup maps the
+  /// source plane onto; false, with an error, when that is no principal plane or To's rotary
+  /// axes would move during the arc.
+  bool write_arc(const program::block& b, const source_step& s, const rotary_angles<To>& angles_target,
+                 const vec3& tip_target_mm, program::block& o, translation& out) const {
+    const arc_path& arc_source = s.arc_source;
+    const auto mapped = principal_plane(target_T_source_.rotation * plane_normal(arc_source.plane));
+    if (!mapped) {
+      out.errors.push_back(at(b, "circular move cannot be mapped: plane " + std::string(plane_name(arc_source.plane)) +
+                                     " maps to a plane that is not XY, ZX or YZ on the target"));
+      return false;
+    }
+    if (previous_motion_ && path_.angles[*previous_motion_] &&
+        rotary_step_cost<To>(*path_.angles[*previous_motion_], angles_target) > 1e-9) {
+      out.errors.push_back(at(b, "circular move cannot be mapped: the target's rotary axes would move during it"));
+      return false;
+    }
+    const auto [plane_target, flipped] = *mapped;
+    const vec3 start_target_mm = target_T_source_.map_point(*s.start_source_mm);
+    for (program::arc_plane plane : {program::arc_plane::yz, program::arc_plane::zx, program::arc_plane::xy}) {
+      const double v_mm = normal_component(tip_target_mm, plane);  // yz → x, zx → y, xy → z
+      std::optional<double>& word = plane == program::arc_plane::yz   ? o.axes.x_mm
+                                    : plane == program::arc_plane::zx ? o.axes.y_mm
+                                                                      : o.axes.z_mm;
+      if (plane != plane_target || math::abs(v_mm - normal_component(start_target_mm, plane)) > 1e-9) word = v_mm;
+    }
+    using program::motion_kind;
+    o.motion = flipped ? (s.motion == motion_kind::arc_cw ? motion_kind::arc_ccw : motion_kind::arc_cw) : s.motion;
+    program::arc_words arc_target{plane_target, std::nullopt, arc_source.radius_mm};
+    if (arc_source.centre_mm) arc_target.centre_mm = target_T_source_.map_point(*arc_source.centre_mm);
+    o.arc = arc_target;
+    return true;
+  }
+
+  /// F of motion block `b` by the feed policy (see feed.hpp); rapid moves carry none, and a
+  /// source already in inverse time keeps its F.
+  void write_feed(const program::block& b, const source_step& s, const vec3& tip_target_mm,
+                  const std::array<double, 2>& angles_target_deg, program::block& o, translation& out) {
+    if (s.rapid) {
+      o.feed.reset();
+    } else if (s.feed_mode == program::feed_unit::inverse_time) {
+      // Already inverse time: the block time is kept by construction.
+    } else if (feed_ == feed_policy::block_time && s.feed_mm_per_min) {
+      o.feed = block_time_feed_mm_per_min(*s.feed_mm_per_min, source_length(s), target_length(tip_target_mm, angles_target_deg));
+    } else if (feed_ == feed_policy::inverse_time && s.feed_mm_per_min) {
+      if (auto error = feed_refusal(feed_, output_language_)) {
+        if (!inverse_time_error_) out.errors.push_back(at(b, *error));
+        inverse_time_error_ = true;
+      }
+      o.feed = inverse_time_feed_per_min(*s.feed_mm_per_min, path_length(s));
+      if (!o.feed)
+        out.warnings.push_back(at(b, s.start_source_mm ? "zero-length move: no inverse-time F written"
+                                                       : "start point unknown, so is the block time: no inverse-time F written"));
+      if (!output_inverse_time_) o.feed_mode = program::feed_unit::inverse_time, output_inverse_time_ = true;
+    }
+  }
+
+  /// (K16) length of the source block from the previous motion (0 for the first).
+  double source_length(const source_step& s) const {
+    if (!previous_motion_) return 0.0;
+    return block_length(s.tip_source_mm - previous_step_.tip_source_mm, source_rotary_delta(previous_step_, s).span());
+  }
+
+  /// (K16) length of the target block from the previous motion (0 for the first).
+  double target_length(const vec3& tip_target_mm, const std::array<double, 2>& angles_target_deg) const {
+    if (!previous_motion_) return 0.0;
+    std::array<double, 2> delta_deg{};
+    for (std::size_t i = 0; i < rotary_count<To>; ++i)
+      delta_deg[i] = angles_target_deg[i] - to_degrees((*path_.angles[*previous_motion_])[i]).value;
+    const vec3 previous_tip_target_mm = target_T_source_.map_point(previous_step_.tip_source_mm);
+    return block_length(tip_target_mm - previous_tip_target_mm,
+                        std::span<const double>(delta_deg.data(), rotary_count<To>));
+  }
+
+  /// The path an inverse-time block is timed over: the tool-tip path (mm; the arc's length for
+  /// an arc), or for a pure re-orientation the source's (K16) length in degrees.
+  double path_length(const source_step& s) const {
+    double length = 0.0;
+    if (s.start_source_mm)
+      length = program::is_arc(s.motion) ? arc_length_mm(s.arc_source, *s.start_source_mm, s.tip_source_mm)
+                                         : norm(s.tip_source_mm - *s.start_source_mm);
+    if (!(length > 0.0) && previous_motion_)
+      length = block_length({}, source_rotary_delta(previous_step_, s).span());
+    return length;
+  }
+
+  /// A warning when the planned path changes solution branch at motion `j`.
+  void warn_branch_switch(const program::block& b, std::size_t j, translation& out) const {
+    if (!previous_motion_) return;
+    const std::size_t p = *previous_motion_;
+    if (path_.branch[p] < 0 || path_.branch[j] < 0 || path_.branch[p] == path_.branch[j] || path_.pole[p] ||
+        path_.pole[j])
+      return;
+    const bool avoidable = (path_.branches[p] & path_.branches[j]) != 0;
+    out.warnings.push_back(at(b, std::string(avoidable ? "solution branch switch (least total rotary travel)"
+                                                       : "unavoidable solution branch switch") +
+                                     " from branch " + std::to_string(path_.branch[p]) + " to " +
+                                     std::to_string(path_.branch[j]) + " on " + std::string(To::id)));
+  }
+};
+
+}  // namespace kin5::translate_detail

@@ -1,0 +1,66 @@
+/// @file translate/options.hpp
+/// What a translation is asked to do and what it gives back: `translate_options` in (feed
+/// policy, setup transform, output dialect); `translation` out (the output program, one
+/// `block_report` per motion block, errors, warnings and counts). `report_detail` says how many
+/// block reports a long run keeps. Any error means the output must not be written.
+/// @code
+///   kin5::translate_options options;
+///   options.feed = kin5::feed_policy::tcp;
+///   options.output_dialect = kin5::program::dialect::siemens;
+///   const kin5::translation t = kin5::translate<From, To>(nc, options);
+///   if (!t.ok()) for (const auto& e : t.errors) std::cerr << e.to_string() << '\n';
+///   // t.per_class[direct], [other_branch], [unreachable]: motion blocks of each class
+/// @endcode
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "../core/rigid.hpp"
+#include "../core/units.hpp"
+#include "../kinematics/matchability.hpp"
+#include "../program/block.hpp"
+#include "feed.hpp"
+
+namespace kin5 {
+
+/// How to translate.
+struct translate_options {
+  feed_policy feed = feed_policy::tcp;
+  /// target_T_source; default: `default_setup<From, To>()`.
+  std::optional<rigid_transform> setup;
+  program::dialect output_dialect = program::dialect::heidenhain;
+};
+
+/// What happened to one motion block.
+struct block_report {
+  program::source_location where;
+  matchability match = matchability::direct;
+  radians gap{};              ///< angle from the tool axis to the target's reach, when unreachable
+  std::string source_angles;  ///< the source pose as written/modal, e.g. "A=-77.954 B=3.536" (degrees)
+  std::string why;            ///< the reason, when not direct
+};
+
+/// The result of `translate`, `reverse` or `post`.
+struct translation {
+  program::program output;                   ///< in the output dialect
+  std::vector<block_report> reports;         ///< one per motion block, in program order
+  std::vector<program::diagnostic> errors;   ///< any error: the output must not be written
+  std::vector<program::diagnostic> warnings; ///< e.g. a branch switch, a passed-through block
+  std::size_t blocks_read = 0, blocks_written = 0, passed_through = 0;
+  /// Motion blocks per matchability class, indexed by `matchability` (direct, other branch,
+  /// unreachable): complete even when `reports` keeps only the exceptions.
+  std::array<std::size_t, 3> per_class{};
+  bool ok() const { return errors.empty(); }
+};
+
+/// Which block reports a translation keeps (`translation::per_class` counts them all anyway).
+enum class report_detail {
+  every_block,      ///< one report per motion block
+  exceptions_only,  ///< only blocks that are not `matchability::direct`: constant memory
+};
+
+}  // namespace kin5

@@ -1,0 +1,184 @@
+/// @file translate/pipeline.hpp
+/// The two-pass pipeline every translation runs: a `block_translator` joins a source side
+/// (`source_walk.hpp`) to a target side (`nc_target.hpp`, `cl_target.hpp`) and is fed the
+/// program's blocks twice, in file order:
+///
+///     plan(b)   for every block — source errors, reach, branch planning (first pass)
+///     write(b)  for every block — each output block to the sink as soon as it is made
+///
+/// Nothing is stored per block but the planner's candidates, so programs of any length run in
+/// little memory (`stream.hpp` runs it over a file's text). `make_translator<From, To>`,
+/// `make_reverse<M>` and `make_post<M>` make one; `run` runs both passes over a program in memory.
+/// @code
+///   auto t = kin5::make_translator<From, To>(nc.language, nc.file, options);
+///   for (const auto& b : nc.blocks) t->plan(b);
+///   for (const auto& b : nc.blocks) t->write(b, emit);  // emit: void(program::block&&)
+///   if (!t->result().ok()) { /* the output must not be used */ }
+/// @endcode
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "../program/block.hpp"
+#include "cl_target.hpp"
+#include "feed.hpp"
+#include "nc_target.hpp"
+#include "options.hpp"
+#include "setup.hpp"
+#include "source_walk.hpp"
+
+namespace kin5 {
+
+/// A translation, reverse or post run in two passes over the blocks of one program, for
+/// programs of any length: call `plan` with every block in file order, then `write` with the
+/// same blocks in the same order. Each output block goes to the sink given to `write` as soon
+/// as it is made; nothing is stored per block but the branch planner's candidates (tens of
+/// bytes per motion block). Make one with `make_translator`, `make_reverse` or `make_post`.
+///
+/// The first pass finds the source's errors and the blocks the target cannot reach; the second
+/// finds what can only be seen while writing (arcs the setup cannot map, feeds the dialect
+/// cannot say). Either way, any error in `result()` means the output must not be used.
+class block_translator {
+ public:
+  virtual ~block_translator() = default;
+  /// First pass: the next block of the program.
+  virtual void plan(const program::block& b) = 0;
+  /// Second pass: the next block of the same program (after every `plan`); output to `emit`.
+  virtual void write(const program::block& b, const program::block_sink& emit) = 0;
+  /// Counts, reports, errors and warnings so far (`output` stays empty: blocks go to `emit`).
+  translation& result() { return result_; }
+
+ protected:
+  translation result_;
+};
+
+/// Whether a `block_translator`'s second pass reads the source text of `b`: not for a block it
+/// moves, whose text it replaces; so a `program::block_store` kept for that pass may drop it.
+inline bool second_pass_reads_text(const program::block& b) {
+  return !b.moves() || b.passthrough || b.machine_coordinates;
+}
+
+namespace translate_detail {
+
+/// An error about the whole file (line 0).
+inline program::diagnostic file_error(const std::string& file, std::string message) {
+  return {program::source_location{file, 0, 0}, std::move(message)};
+}
+
+/// `block_translator` for one source side and one target side.
+template <class Source, class Target>
+class two_pass_translator final : public block_translator {
+ public:
+  /// `refusal`: a reason not to run at all (an error for the whole file); blocks are then only
+  /// counted.
+  two_pass_translator(Target target, const std::string& file, program::dialect output_language, report_detail detail,
+                      std::optional<std::string> refusal = std::nullopt)
+      : target_(std::move(target)), detail_(detail), refused_(refusal.has_value()) {
+    result_.output.language = output_language;
+    result_.output.file = file;
+    if (refusal) result_.errors.push_back(file_error(file, std::move(*refusal)));
+  }
+
+  void plan(const program::block& b) override {
+    ++result_.blocks_read;
+    if (refused_) return;
+    // The source kinematics (tool axis, branch) run once per block: in the pass that uses them.
+    const source_step s = first_.next(b, &result_, Target::plans_with_tool_axis);
+    if (Target::plans_with_tool_axis && s.what == source_step::kind::motion) principal_.push_back(s.principal);
+    target_.plan(s);
+  }
+
+  void write(const program::block& b, const program::block_sink& emit) override {
+    if (refused_) return;
+    if (!planned_) target_.finish_plan(), planned_ = true;
+    source_step s = second_.next(b, nullptr, !Target::plans_with_tool_axis);
+    if (Target::plans_with_tool_axis && s.what == source_step::kind::motion) s.principal = principal_[motion_++];
+    target_.write(
+        b, s, result_,
+        [&](program::block&& o) {
+          ++result_.blocks_written;
+          emit(std::move(o));
+        },
+        [&](block_report&& r) {
+          ++result_.per_class[static_cast<std::size_t>(r.match)];
+          if (detail_ == report_detail::every_block || r.match != matchability::direct) {
+            r.source_angles = angles_text(s);
+            result_.reports.push_back(std::move(r));
+          }
+        });
+  }
+
+ private:
+  Target target_;
+  report_detail detail_;
+  bool refused_;
+  bool planned_ = false;
+  source_walker<Source> first_, second_;
+  std::vector<bool> principal_;  // per motion block when the first pass classified it: on branch 0
+  std::size_t motion_ = 0;       // motion blocks written so far
+};
+
+/// Why `translate` cannot run on a program in `source_language`, if it cannot.
+inline std::optional<std::string> translate_refusal(program::dialect source_language, const translate_options& options) {
+  if (source_language == program::dialect::apt) return "APT CL data names no machine axes: use post, not translate";
+  if (options.output_dialect == program::dialect::apt) return "translate writes NC; for APT CL data use reverse";
+  return feed_refusal(options.feed, options.output_dialect);
+}
+
+/// Both passes of `t` over a whole program; the output program collects the emitted blocks.
+inline translation run(block_translator& t, const program::program& in) {
+  for (const program::block& b : in.blocks) t.plan(b);
+  std::vector<program::block> output;
+  const program::block_sink emit = [&](program::block&& o) { output.push_back(std::move(o)); };
+  for (const program::block& b : in.blocks) t.write(b, emit);
+  translation out = std::move(t.result());
+  out.output.blocks = std::move(output);
+  return out;
+}
+
+}  // namespace translate_detail
+
+/// The two passes of `translate<From, To>` (see `block_translator`), for a program read in
+/// `source_language` from `file`.
+template <machine From, machine To>
+std::unique_ptr<block_translator> make_translator(program::dialect source_language, const std::string& file,
+                                                  const translate_options& options = {},
+                                                  report_detail detail = report_detail::every_block) {
+  using namespace translate_detail;
+  return std::make_unique<two_pass_translator<nc_source<From>, nc_target<To>>>(
+      nc_target<To>(options.setup.value_or(default_setup<From, To>()), options.feed, source_language,
+                    options.output_dialect, false),
+      file, options.output_dialect, detail, translate_refusal(source_language, options));
+}
+
+/// The two passes of `reverse<M>` (see `block_translator`).
+template <machine M>
+std::unique_ptr<block_translator> make_reverse(program::dialect source_language, const std::string& file,
+                                               report_detail detail = report_detail::every_block) {
+  using namespace translate_detail;
+  return std::make_unique<two_pass_translator<nc_source<M>, cl_target>>(
+      cl_target(source_language), file, program::dialect::apt, detail,
+      source_language == program::dialect::apt ? std::optional<std::string>("the input is already APT CL data")
+                                               : std::nullopt);
+}
+
+/// The two passes of `post<M>` (see `block_translator`).
+template <machine M>
+std::unique_ptr<block_translator> make_post(program::dialect source_language, program::dialect output_dialect,
+                                            const std::string& file,
+                                            report_detail detail = report_detail::every_block) {
+  using namespace translate_detail;
+  return std::make_unique<two_pass_translator<cl_source, nc_target<M>>>(
+      nc_target<M>(rigid_transform::identity(), feed_policy::tcp, source_language, output_dialect, true), file,
+      output_dialect, detail,
+      output_dialect == program::dialect::apt
+          ? std::optional<std::string>("post writes NC: choose siemens, heidenhain or iso")
+          : std::nullopt);
+}
+
+}  // namespace kin5
