@@ -5,10 +5,10 @@
 //   kin5 post      --machine ID [--dialect D] [-o OUT] IN       APT CL data -> NC program
 //
 // Each one reads IN (a path, or '-' for stdin) as bytes and runs a `block_translator`
-// (translate/by_id.hpp: make_translator / make_reverse / make_post) in two passes: the first over the
-// blocks program/io.hpp's read_blocks reads, which it also keeps as compact records
-// (program/block_store.hpp); the second over those records, writing each output block as it is
-// made to OUT (a path, or '-' / nothing for stdout). Everything else goes to stderr:
+// (translate/by_id.hpp: make_translator / make_reverse / make_post) over them with the library's
+// streaming driver (translate/stream.hpp: two passes, the second over compact block records),
+// which writes each output block as it is made to OUT (a path, or '-' / nothing for stdout).
+// Everything else goes to stderr:
 //   * every diagnostic as `FILE:LINE:COL: error: ...` or `... warning: ...`, all of them;
 //   * every block the target cannot reach, as an error at the block, with its source angles
 //     and the angular gap;
@@ -32,10 +32,9 @@
 #include <string_view>
 #include <vector>
 
-
-#include <kin5/program/block_store.hpp>
 #include <kin5/program/io.hpp>
 #include <kin5/translate/by_id.hpp>
+#include <kin5/translate/stream.hpp>
 
 #include "commands.hpp"
 #include "format.hpp"
@@ -171,42 +170,27 @@ int execute(const job& j) {
   const std::string file = display_name(j.input_path);
   const std::unique_ptr<block_translator> translator = j.make(dialect, file);
 
-  // Pass 1: read every block, plan, and keep the block as a compact record for pass 2.
-  prog::read_result input;
-  prog::block_store blocks(file);
-  prog::read_blocks(dialect, *bytes, file, input, [&](prog::block&& b) {
-    translator->plan(b);
-    blocks.push(b, second_pass_reads_text(b));
-  });
-  bytes.reset();  // the records are all pass 2 needs
+  // Both passes (translate/stream.hpp): the output reaches OUT's temporary file while the run is
+  // clean; the rest is still translated after an error, so that one run lists every error.
+  const stream_result run = stream_text(*translator, std::move(*bytes), dialect, file, j.output_dialect,
+                                        [&](std::string_view chunk) {
+                                          out.buffer().append(chunk);
+                                          return out.flush_if_full();
+                                        });
+  bytes.reset();
   {
     std::vector<message> messages;
-    collect(messages, input.errors, "error");
-    collect(messages, input.warnings, "warning");
+    collect(messages, run.input.errors, "error");
+    collect(messages, run.input.warnings, "warning");
     print_in_source_order(std::move(messages));
   }
-  if (!input.ok()) {
-    std::cerr << prefix << input.errors.size() << (input.errors.size() == 1 ? " error" : " errors") << " in "
+  if (!run.input.ok()) {
+    std::cerr << prefix << run.input.errors.size() << (run.input.errors.size() == 1 ? " error" : " errors") << " in "
               << file << " (read as " << prog::name(dialect) << "); nothing written\n";
     return exit_codes::input_error;
   }
-
-  // Pass 2: translate each block and write it while the run is clean. The rest is still
-  // translated after an error, so that one run lists every error.
-  prog::block_writer writer(j.output_dialect, dialect, file);
-  std::optional<std::string> writer_error;  // a block the output dialect cannot express
-  bool file_failed = false;                 // the output file: `out.error()` says why
-  const prog::block_sink emit = [&](prog::block&& o) {
-    if (writer_error || file_failed || !translator->result().ok()) return;
-    try {
-      writer.write(out.buffer(), o);
-    } catch (const std::invalid_argument& e) {
-      writer_error = e.what();
-      return;
-    }
-    file_failed = !out.flush_if_full();
-  };
-  blocks.replay([&](const prog::block& b) { translator->write(b, emit); });
+  const std::optional<std::string>& writer_error = run.writer_error;  // a block the output dialect cannot express
+  const bool file_failed = run.sink_failed;                            // the output file: `out.error()` says why
 
   const translation& result = translator->result();
   // Unreachable blocks come as errors too (with their source angles and gap), one per report.

@@ -1,17 +1,20 @@
-// The streaming form agrees with the whole-program one: the two-pass `block_translator` (second
-// pass over a `block_store`) with a block-by-block writer against `translate` + `write`.
+// The streaming form agrees with the whole-program one: the streaming driver (`stream_blocks`:
+// the two-pass `block_translator`, second pass over a `block_store`, a block-by-block writer)
+// against `translate` + `write`.
 #include <array>
 #include <cmath>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
 #include <kin5/kin5.hpp>
-#include <kin5/program/block_store.hpp>
 #include <kin5/program/io.hpp>
+#include <kin5/translate/stream.hpp>
 
 #include "generators.hpp"
 #include "program_builder.hpp"
@@ -43,18 +46,20 @@ TEST_CASE("two passes block by block write what translate + write produce, and c
                                                 program::dialect::iso);
     const translation whole = translate<From, To>(p, options);
 
-    // As the tool runs it: pass 2 over compact records without the text of moved blocks.
+    // As the tool runs it (stream.hpp): pass 2 over compact records without the text of moved
+    // blocks, each output block written as it is made.
     const auto t = make_translator<From, To>(p.language, p.file, options, report_detail::exceptions_only);
-    program::block_store records(p.file);
-    for (const auto& b : p.blocks) {
-      t->plan(b);
-      records.push(b, second_pass_reads_text(b));
-    }
     std::string text;
-    program::block_writer writer(options.output_dialect, p.language, p.file);
-    const program::block_sink emit = [&](program::block&& o) { writer.write(text, o); };
-    records.replay([&](const program::block& b) { t->write(b, emit); });
+    const block_source read = [&](program::read_result&, const program::block_sink& on_block) {
+      for (program::block b : p.blocks) on_block(std::move(b));
+    };
+    const auto run = stream_blocks(*t, read, p.file, p.language, options.output_dialect, [&](std::string_view chunk) {
+      text += chunk;
+      return true;
+    });
     const translation& streamed = t->result();
+    RC_ASSERT(run.input.ok());
+    RC_ASSERT(run.ok(*t) == whole.ok());
 
     RC_ASSERT(streamed.blocks_read == whole.blocks_read);
     RC_ASSERT(streamed.blocks_written == whole.blocks_written);
@@ -73,4 +78,82 @@ TEST_CASE("two passes block by block write what translate + write produce, and c
     for (std::size_t i = 0; i < exception_lines.size(); ++i) RC_ASSERT(streamed.reports[i].where.line == exception_lines[i]);
     if (whole.ok()) RC_ASSERT(text == program::write(options.output_dialect, whole.output));
   });
+}
+
+namespace {
+
+/// A Siemens program for the SAJO 12000P: TRAORI, `lines` G1 blocks along a slow tilt, M30;
+/// `bad_line`: the number of a G1 line written with a malformed number instead (0: none).
+std::string siemens_program(std::size_t lines, std::size_t bad_line = 0) {
+  std::string text = "N10 TRAORI\n";
+  for (std::size_t k = 1; k <= lines; ++k) {
+    const double t = static_cast<double>(k) / static_cast<double>(lines);
+    text += "N" + std::to_string(10 * (k + 1)) + " G1 X" + std::to_string(100.0 * t) + " Y" +
+            std::to_string(-50.0 * t) + " Z50 A" + std::to_string(-20.0 - 40.0 * t) + " B" +
+            std::to_string(-30.0 + 60.0 * t) + (k == bad_line ? " F7..0\n" : " F700\n");
+  }
+  return text + "N" + std::to_string(10 * (lines + 2)) + " M30\n";
+}
+
+}  // namespace
+
+TEST_CASE("the streaming driver over text: the whole output in chunks, or nothing after an error") {
+  using From = machines::sajo_12000p;
+  using To = machines::dmu_80p;
+  const auto options = test::options();
+  const std::string text = siemens_program(30000);  // about 1.6 MB of Heidenhain output
+  const auto read = program::read(program::dialect::siemens, text, "long.mpf");
+  REQUIRE(read.ok());
+  const translation whole = translate<From, To>(read.parsed, options);
+  REQUIRE(whole.ok());
+  const std::string expected = program::write(options.output_dialect, whole.output);
+  REQUIRE(expected.size() > (std::size_t{1} << 20));
+
+  SECTION("a clean run gives the sink every byte, in order, in chunks of at least 1 MiB but the last") {
+    const auto t = make_translator<From, To>(program::dialect::siemens, "long.mpf", options);
+    std::vector<std::size_t> chunks;
+    std::string out;
+    const auto run = stream_text(*t, text, program::dialect::siemens, "long.mpf", options.output_dialect,
+                                 [&](std::string_view chunk) {
+                                   chunks.push_back(chunk.size());
+                                   out += chunk;
+                                   return true;
+                                 });
+    CHECK(run.ok(*t));
+    CHECK(out == expected);
+    REQUIRE(chunks.size() >= 2);
+    for (std::size_t i = 0; i + 1 < chunks.size(); ++i) CHECK(chunks[i] >= (std::size_t{1} << 20));
+  }
+  SECTION("a reader error: no second pass, nothing reaches the sink") {
+    const auto t = make_translator<From, To>(program::dialect::siemens, "bad.mpf", options);
+    std::size_t calls = 0;
+    const auto run = stream_text(*t, siemens_program(30000, 29000), program::dialect::siemens, "bad.mpf",
+                                 options.output_dialect, [&](std::string_view) { return ++calls, true; });
+    CHECK_FALSE(run.input.ok());
+    CHECK_FALSE(run.ok(*t));
+    CHECK(calls == 0);
+    CHECK(t->result().blocks_written == 0);
+  }
+  SECTION("a sink that fails is not called again") {
+    const auto t = make_translator<From, To>(program::dialect::siemens, "long.mpf", options);
+    std::size_t calls = 0;
+    const auto run = stream_text(*t, text, program::dialect::siemens, "long.mpf", options.output_dialect,
+                                 [&](std::string_view) { return ++calls, false; });
+    CHECK(run.sink_failed);
+    CHECK_FALSE(run.ok(*t));
+    CHECK(calls == 1);
+  }
+  SECTION("a block the target cannot reach: nothing after it reaches the sink") {
+    // A = +20° is outside the DMU 80P's reach (k_d = −sin A < 0): an error on the last motion.
+    std::string unreachable = text;
+    unreachable.insert(unreachable.rfind("N"), "N999999 G1 X0 Y0 Z50 A20 B0\n");
+    const auto t = make_translator<From, To>(program::dialect::siemens, "far.mpf", options);
+    std::string out;
+    const auto run = stream_text(*t, unreachable, program::dialect::siemens, "far.mpf", options.output_dialect,
+                                 [&](std::string_view chunk) { return out += chunk, true; });
+    CHECK(run.input.ok());
+    CHECK_FALSE(run.ok(*t));
+    CHECK(t->result().per_class[static_cast<std::size_t>(matchability::unreachable)] == 1);
+    CHECK(out.size() < expected.size());  // at most the chunks before the error
+  }
 }

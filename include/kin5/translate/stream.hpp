@@ -1,0 +1,101 @@
+/// @file translate/stream.hpp
+/// The streaming driver: a `block_translator` run over a whole program of any length, in two
+/// passes, with the output text going to a sink the caller provides (a file, a string):
+///
+///     pass 1: read_blocks → plan(b), and each block kept as a compact record (block_store);
+///             the input text is freed after this pass
+///     pass 2: replay the records → write(b) → block_writer of the output dialect → sink
+///
+/// The output is written only while the run is clean: once any error is known (a reader error
+/// stops before pass 2; a translation error; a block the output dialect cannot say), nothing
+/// more reaches the sink, and the sink has seen the whole program exactly when `ok` holds. The
+/// `kin5` tool and the laws run this same code.
+/// @code
+///   auto t = kin5::make_translator<From, To>(program::dialect::siemens, "part.mpf", options);
+///   std::string out;
+///   const auto run = kin5::stream_text(*t, std::move(text), program::dialect::siemens, "part.mpf",
+///                                      program::dialect::heidenhain,
+///                                      [&](std::string_view chunk) { out += chunk; return true; });
+///   if (!run.ok(*t)) { /* run.input.errors, t->result().errors, run.writer_error */ }
+/// @endcode
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "../program/block.hpp"
+#include "../program/block_store.hpp"
+#include "../program/io.hpp"
+#include "pipeline.hpp"
+
+namespace kin5 {
+
+/// Where the output text goes, in order, in chunks of about 1 MiB (the last one shorter);
+/// false stops the writing (e.g. the file cannot be written).
+using text_sink = std::function<bool(std::string_view chunk)>;
+
+/// Reads a program: gives every block to the sink in file order, diagnostics to the result.
+using block_source = std::function<void(program::read_result& diagnostics, const program::block_sink& on_block)>;
+
+/// What a streamed run found besides the translator's own result.
+struct stream_result {
+  program::read_result input;              ///< the reader's errors and warnings (`parsed` stays empty)
+  std::optional<std::string> writer_error; ///< the first block the output dialect cannot say
+  bool sink_failed = false;                ///< the sink refused a chunk
+  /// Whether the whole output reached the sink: no error anywhere.
+  bool ok(block_translator& t) const {
+    return input.ok() && t.result().ok() && !writer_error && !sink_failed;
+  }
+};
+
+/// Both passes of `t` over the blocks `read` gives (see the file comment); output blocks are
+/// written in `output_language` to `sink`.
+inline stream_result stream_blocks(block_translator& t, const block_source& read, const std::string& file,
+                                   program::dialect source_language, program::dialect output_language,
+                                   const text_sink& sink) {
+  stream_result run;
+  program::block_store records(file);
+  read(run.input, [&](program::block&& b) {
+    t.plan(b);
+    records.push(b, second_pass_reads_text(b));
+  });
+  if (!run.input.ok()) return run;
+
+  constexpr std::size_t chunk_size = std::size_t{1} << 20;
+  std::string text;
+  program::block_writer writer(output_language, source_language, file);
+  auto writing = [&] { return !run.writer_error && !run.sink_failed && t.result().ok(); };
+  const program::block_sink emit = [&](program::block&& o) {
+    if (!writing()) return;
+    try {
+      writer.write(text, o);
+    } catch (const std::invalid_argument& e) {
+      run.writer_error = e.what();
+      return;
+    }
+    if (text.size() >= chunk_size) {
+      run.sink_failed = !sink(text);
+      text.clear();
+    }
+  };
+  records.replay([&](const program::block& b) { t.write(b, emit); });
+  if (writing() && !text.empty()) run.sink_failed = !sink(text);
+  return run;
+}
+
+/// Both passes of `t` over the program `text` in `source_language` (`file` names it in
+/// diagnostics); `text` is freed after the first pass. Output as `stream_blocks`.
+inline stream_result stream_text(block_translator& t, std::string text, program::dialect source_language,
+                                 const std::string& file, program::dialect output_language, const text_sink& sink) {
+  const block_source read = [&](program::read_result& diagnostics, const program::block_sink& on_block) {
+    program::read_blocks(source_language, text, file, diagnostics, on_block);
+    text = std::string();  // the records are all pass 2 needs
+  };
+  return stream_blocks(t, read, file, source_language, output_language, sink);
+}
+
+}  // namespace kin5
