@@ -1,6 +1,7 @@
 /// @file program/block.hpp
 /// The dialect-neutral model of an NC program: a sequence of blocks, each remembering where it
-/// came from (file, line, column) and what it says, in the units written (millimetres, degrees).
+/// came from (file, line, column) and what it says: lengths in millimetres (an inch program's
+/// reader converts, exactly, ×25.4; `metric` says which unit the text used), angles in degrees.
 ///
 /// Readers (`siemens.hpp`, `heidenhain.hpp`, `iso.hpp`, `apt.hpp`) build it; writers turn it back
 /// into text; the translator maps the motion content between machines and keeps the rest in
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "../core/vec.hpp"
+#include "state_words.hpp"
 
 namespace kin5::program {
 
@@ -90,9 +92,6 @@ enum class feed_unit {
   inverse_time,  ///< G93: 1 / block time in minutes
 };
 
-/// Plane of a circular move (G17/G18/G19, or the Heidenhain CC axes).
-enum class arc_plane { xy, zx, yz };
-
 /// Axis words of a block as written: absolute values, millimetres and degrees.
 struct axis_words {
   std::optional<double> x_mm, y_mm, z_mm;
@@ -136,12 +135,13 @@ struct block {
   std::optional<feed_unit> feed_mode;        ///< G93 / G94
   std::optional<bool> metric;                ///< G71/G21/MM (true), G70/G20/INCH (false)
   std::optional<long long> tool;             ///< tool call / T number
+  std::optional<std::string> tool_name;      ///< TOOL CALL "NAME", T="NAME": the tool by name
   std::optional<double> spindle_rpm;         ///< S
   std::vector<int> m_codes;                  ///< M functions other than those mapped above and `program_end`'s
   std::optional<motion_kind> motion;         ///< set when the block commands a motion word (G0-G3, L, C)
   axis_words axes;                           ///< axis words present in the block
   std::optional<arc_words> arc;              ///< circle data of an arc block
-  std::optional<double> feed;                ///< F, in the unit of the modal feed mode
+  std::optional<double> feed;                ///< F: mm/min per minute (inch/min converted), 1/min in inverse time
   bool feed_rapid = false;                   ///< FMAX / RAPID: the move is at rapid traverse
   /// Axis words in machine coordinates (G53, G28/G30 intermediate points, M91/M92): not
   /// workpiece positions, so never run through kinematics.
@@ -153,6 +153,10 @@ struct block {
   /// Not understood and with no axis words: written back unchanged (same dialect) or
   /// carried as text (another dialect) — never interpreted.
   bool passthrough = false;
+  /// Tool change, compensation, spindle, coolant, work offset, plane, distance mode, dwell and
+  /// stop, as the text says them (state_words.hpp). Readers fill these instead of `m_codes` and
+  /// `kept_words` for the words they map, so every such word has one meaning in every dialect.
+  state_words state;
 
   /// Whether the block moves any axis.
   bool moves() const { return !axes.empty(); }

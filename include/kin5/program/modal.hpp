@@ -5,9 +5,10 @@
 ///
 /// Tracked: the last value of every axis (X Y Z in mm, A B C in degrees, the last tool-axis
 /// vector), the motion mode (G0–G3, L, C), tool-tip tracking (TRAORI / M128 / G43.4) on or off,
-/// the feed mode (G93/G94) and F, the arc plane and the last arc centre (Heidenhain CC).
-/// Machine-coordinate moves (G53, M91/M92) leave the workpiece position unknown: the axes they
-/// name are forgotten.
+/// the feed mode (G93/G94) and F, the arc plane and the last arc centre (Heidenhain CC), and the
+/// machine state of `block::state` (tools, compensation, spindle, coolant, work offset, plane,
+/// distance mode, units) with the rules in `apply_state`. Machine-coordinate moves (G53,
+/// M91/M92) leave the workpiece position unknown: the axes they name are forgotten.
 /// @code
 ///   kin5::program::modal_state state;
 ///   for (const auto& b : nc.blocks) {
@@ -45,6 +46,25 @@ struct modal_state {
   std::optional<vec3> arc_centre_mm;          ///< last centre (Heidenhain CC is modal)
   bool rotary_moved = false;                  ///< some rotary axis has been programmed
 
+  std::optional<long long> selected_tool;     ///< last T / TOOL CALL number (ISO: the next tool)
+  std::optional<long long> active_tool;       ///< tool in the spindle after the last change
+  std::optional<spindle_axis> tool_spindle_axis;
+  std::optional<bool> length_compensation;    ///< G43 … on, G49 off
+  std::optional<long long> length_register;   ///< H in effect; empty: the active tool's own
+  std::optional<cutter_side> radius_compensation;
+  std::optional<long long> radius_register;   ///< D in effect; empty: the active tool's own
+  std::optional<long long> cutting_edge;      ///< Siemens D
+  std::optional<spindle_rotation> spindle;
+  std::optional<double> spindle_rpm;          ///< S in effect (kept while the spindle is stopped)
+  std::optional<bool> coolant_flood, coolant_mist;  ///< independent: M7 and M8 may both be on
+  std::optional<kin5::program::work_offset> work_offset;
+  std::optional<arc_plane> working_plane;
+  std::optional<distance_mode> distance;
+  std::optional<bool> metric;                 ///< the unit the program text uses
+  bool ended = false;                         ///< a block has ended the program (M2, M30, END PGM, FINI)
+  /// Inverse time: the F in effect has been used by a feed move; the next feed move needs its own.
+  bool inverse_time_feed_used = false;
+
   /// The last value of axis `letter` (X Y Z A B C, upper case), if known.
   std::optional<double> value(char letter) const {
     switch (letter) {
@@ -64,9 +84,10 @@ struct modal_state {
   /// Updates the state with block `b`'s words.
   void apply(const block& b) {
     if (b.tcp) tcp = *b.tcp;
-    if (b.feed_mode) feed_mode = *b.feed_mode;
-    if (b.feed) feed = *b.feed;
+    apply_feed(b);
     if (b.motion) motion = *b.motion;
+    if (feed_mode == feed_unit::inverse_time && moves_at_feed(b)) inverse_time_feed_used = true;
+    apply_state(b);
     if (b.arc) {
       plane = b.arc->plane;
       if (b.arc->centre_mm) arc_centre_mm = *b.arc->centre_mm;
@@ -88,6 +109,55 @@ struct modal_state {
     take(w.a_deg, a_deg), take(w.b_deg, b_deg), take(w.c_deg, c_deg);
     if (w.has_rotary()) tool_axis.reset(), rotary_moved = true;
     if (w.tool_axis) tool_axis = normalized(*w.tool_axis);
+  }
+
+  /// Whether block `b` moves the tool at the programmed feed (not rapid): a move that needs F.
+  bool moves_at_feed(const block& b) const {
+    const auto kind = motion_of(b);
+    return b.moves() && !b.feed_rapid && kind && *kind != motion_kind::rapid;
+  }
+
+ private:
+  /// F is modal per minute. Switching the feed mode drops it (a G94 after G93 needs a new F, as
+  /// LinuxCNC's interpreter insists), and in inverse time each feed move uses its own F: once a
+  /// feed move has run, no F is in effect until the next one is given.
+  void apply_feed(const block& b) {
+    if (inverse_time_feed_used) feed.reset(), inverse_time_feed_used = false;
+    if (b.feed_mode && *b.feed_mode != feed_mode) feed.reset();
+    if (b.feed_mode) feed_mode = *b.feed_mode;
+    if (b.feed) feed = *b.feed;
+  }
+
+  /// Tools: T selects, a change loads the selected tool (the block's own T first). Turning a
+  /// compensation on without a register means the active tool's own entry. Coolant flood and
+  /// mist are independent (M9 writes both off). Everything else: the last value given.
+  void apply_state(const block& b) {
+    const state_words& s = b.state;
+    if (b.tool) selected_tool = *b.tool;
+    if (s.tool_change) active_tool = selected_tool;
+    take_word(s.tool_spindle_axis, tool_spindle_axis);
+    if (s.length_compensation == true && !s.length_register) length_register.reset();
+    take_word(s.length_compensation, length_compensation);
+    take_word(s.length_register, length_register);
+    const bool radius_on = s.radius_compensation && *s.radius_compensation != cutter_side::off;
+    if (radius_on && !s.radius_register) radius_register.reset();
+    take_word(s.radius_compensation, radius_compensation);
+    take_word(s.radius_register, radius_register);
+    take_word(s.cutting_edge, cutting_edge);
+    take_word(s.spindle, spindle);
+    take_word(b.spindle_rpm, spindle_rpm);
+    take_word(s.coolant_flood, coolant_flood);
+    take_word(s.coolant_mist, coolant_mist);
+    take_word(s.work_offset, work_offset);
+    take_word(s.working_plane, working_plane);
+    take_word(s.distance, distance);
+    take_word(b.metric, metric);
+    if (b.program_end) ended = true;
+  }
+
+  template <class T>
+  static void take_word(const std::optional<T>& word, std::optional<T>& slot) {
+    if (word) slot = *word;
   }
 };
 
