@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <random>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
@@ -381,6 +382,57 @@ TEMPLATE_LIST_TEST_CASE("unwrap_continuous and nearest_within_travel", "[core][b
     for (std::size_t i = 0; i < rotary_count<M>; ++i)
       if (M::rotary[i].travel.continuous) RC_ASSERT(std::abs((*chosen)[i].value - prev[i].value) <= pi + 1e-12);
   });
+}
+
+TEST_CASE("nearest_within_travel: equal largest moves are decided by the sum of moves", "[core][branch]") {
+  using kin5::machines::ac_trunnion;
+  // Both branches tilt A by 114.5861° from A = 0; the largest moves differ by one ulp. The
+  // C = 72.6764° branch moves C by 72.7° instead of 107.3°, so it moves less in sum.
+  const vec3 u{-0.86808798392234987, -0.27077116485630992, -0.41606036635563726};
+  const auto chosen = nearest_within_travel<ac_trunnion>(inverse<ac_trunnion>(u), {radians{0.0}, radians{0.0}});
+  REQUIRE(chosen.has_value());
+  CHECK(std::abs((*chosen)[0].value * 180.0 / pi - 72.6764) < 1e-4);    // C
+  CHECK(std::abs((*chosen)[1].value * 180.0 / pi + 114.5861) < 1e-4);  // A
+}
+
+TEMPLATE_LIST_TEST_CASE("nearest_within_travel: least largest move, ties to 1e-9 rad decided by the sum",
+                        "[core][branch]", kin5::machines::catalog) {
+  using M = TestType;
+  // Previous angles at zero make the two branches of an orthogonal chain tilt by exactly the same
+  // amount (A = ±arccos k on ac-trunnion), the case where rounding used to decide; 20,000 fixed
+  // draws so that the rare tie is met every run.
+  std::mt19937_64 rng(8u);
+  std::uniform_real_distribution<double> z(-1.0, 1.0), phi(-pi, pi);
+  constexpr double tol = 1e-9;
+  for (int n = 0; n < 20000; ++n) {
+    const double zz = z(rng), r = std::sqrt(std::max(0.0, 1.0 - zz * zz)), f = phi(rng);
+    const vec3 u{r * std::cos(f), r * std::sin(f), zz};
+    const rotary_angles<M> prev{};
+    const auto result = inverse<M>(u);
+    const auto chosen = nearest_within_travel<M>(result, prev);
+    REQUIRE(chosen.has_value() == result.reachable());
+    if (!chosen) continue;
+    auto cost = [&](const rotary_angles<M>& c) {
+      double largest = 0, sum = 0;
+      for (std::size_t i = 0; i < rotary_count<M>; ++i) {
+        const double d = std::abs(c[i].value - prev[i].value);
+        largest = std::max(largest, d);
+        sum += d;
+      }
+      return std::pair{largest, sum};
+    };
+    const auto best = cost(*chosen);
+    for (const auto& s : result) {
+      if (!s.within_travel) continue;
+      rotary_angles<M> c = s.angles;
+      for (std::size_t i = 0; i < rotary_count<M>; ++i)
+        if (M::rotary[i].travel.continuous) c[i] = radians{std::remainder(c[i].value - prev[i].value, 2.0 * pi)};
+      const auto k = cost(c);
+      INFO("u = (" << u.x << ", " << u.y << ", " << u.z << ")");
+      REQUIRE(best.first <= k.first + tol);
+      if (std::abs(k.first - best.first) <= tol) REQUIRE(best.second <= k.second + tol);
+    }
+  }
 }
 
 TEMPLATE_LIST_TEST_CASE("principal branch: branch 0 of the full inverse gives the angles back", "[core][branch]",
