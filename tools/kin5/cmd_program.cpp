@@ -172,11 +172,7 @@ int execute(const job& j) {
 
   // Both passes (translate/stream.hpp): the output reaches OUT's temporary file while the run is
   // clean; the rest is still translated after an error, so that one run lists every error.
-  const stream_result run = stream_text(*translator, std::move(*bytes), dialect, file, j.output_dialect,
-                                        [&](std::string_view chunk) {
-                                          out.buffer().append(chunk);
-                                          return out.flush_if_full();
-                                        });
+  const stream_result run = stream_text(*translator, std::move(*bytes), dialect, file, j.output_dialect, out);
   bytes.reset();
   {
     std::vector<message> messages;

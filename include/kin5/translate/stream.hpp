@@ -7,25 +7,23 @@
 ///     pass 2: replay the records → write(b) → block_writer of the output dialect → sink
 ///
 /// The output is written only while the run is clean: once any error is known (a reader error
-/// stops before pass 2; a translation error; a block the output dialect cannot say), nothing
-/// more reaches the sink, and the sink has seen the whole program exactly when `ok` holds. The
-/// `kin5` tool and the laws run this same code.
+/// stops before pass 2; a translation error; a block the output dialect cannot say; the sink
+/// failing), nothing more reaches the sink, so the sink holds the whole program exactly when
+/// `ok` holds. The `kin5` tool and the laws run this same code.
 /// @code
 ///   auto t = kin5::make_translator<From, To>(program::dialect::siemens, "part.mpf", options);
-///   std::string out;
+///   kin5::string_sink out;  // or the tool's output file: any `text_sink`
 ///   const auto run = kin5::stream_text(*t, std::move(text), program::dialect::siemens, "part.mpf",
-///                                      program::dialect::heidenhain,
-///                                      [&](std::string_view chunk) { out += chunk; return true; });
+///                                      program::dialect::heidenhain, out);
 ///   if (!run.ok(*t)) { /* run.input.errors, t->result().errors, run.writer_error */ }
 /// @endcode
 #pragma once
 
-#include <cstddef>
+#include <concepts>
 #include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <string_view>
 
 #include "../program/block.hpp"
 #include "../program/block_store.hpp"
@@ -34,9 +32,21 @@
 
 namespace kin5 {
 
-/// Where the output text goes, in order, in chunks of about 1 MiB (the last one shorter);
-/// false stops the writing (e.g. the file cannot be written).
-using text_sink = std::function<bool(std::string_view chunk)>;
+/// Where the driver writes the output text: it appends each block's text to `buffer()`, then
+/// calls `flush_if_full()`, which may write the buffer out and empty it (the tool's output file
+/// does once it holds 1 MiB); false stops the writing (e.g. the file cannot be written).
+template <class S>
+concept text_sink = requires(S& sink) {
+  { sink.buffer() } -> std::same_as<std::string&>;
+  { sink.flush_if_full() } -> std::same_as<bool>;
+};
+
+/// A `text_sink` that keeps the whole output in a string.
+struct string_sink {
+  std::string text;
+  std::string& buffer() { return text; }
+  bool flush_if_full() { return true; }
+};
 
 /// Reads a program: gives every block to the sink in file order, diagnostics to the result.
 using block_source = std::function<void(program::read_result& diagnostics, const program::block_sink& on_block)>;
@@ -45,7 +55,7 @@ using block_source = std::function<void(program::read_result& diagnostics, const
 struct stream_result {
   program::read_result input;              ///< the reader's errors and warnings (`parsed` stays empty)
   std::optional<std::string> writer_error; ///< the first block the output dialect cannot say
-  bool sink_failed = false;                ///< the sink refused a chunk
+  bool sink_failed = false;                ///< `flush_if_full` failed
   /// Whether the whole output reached the sink: no error anywhere.
   bool ok(block_translator& t) const {
     return input.ok() && t.result().ok() && !writer_error && !sink_failed;
@@ -54,9 +64,9 @@ struct stream_result {
 
 /// Both passes of `t` over the blocks `read` gives (see the file comment); output blocks are
 /// written in `output_language` to `sink`.
-inline stream_result stream_blocks(block_translator& t, const block_source& read, const std::string& file,
-                                   program::dialect source_language, program::dialect output_language,
-                                   const text_sink& sink) {
+template <text_sink Sink>
+stream_result stream_blocks(block_translator& t, const block_source& read, const std::string& file,
+                            program::dialect source_language, program::dialect output_language, Sink& sink) {
   stream_result run;
   program::block_store records(file);
   read(run.input, [&](program::block&& b) {
@@ -65,35 +75,29 @@ inline stream_result stream_blocks(block_translator& t, const block_source& read
   });
   if (!run.input.ok()) return run;
 
-  constexpr std::size_t chunk_size = std::size_t{1} << 20;
-  std::string text;
   program::block_writer writer(output_language, source_language, file);
-  auto writing = [&] { return !run.writer_error && !run.sink_failed && t.result().ok(); };
   const program::block_sink emit = [&](program::block&& o) {
-    if (!writing()) return;
+    if (run.writer_error || run.sink_failed || !t.result().ok()) return;
     try {
-      writer.write(text, o);
+      writer.write(sink.buffer(), o);
     } catch (const std::invalid_argument& e) {
       run.writer_error = e.what();
       return;
     }
-    if (text.size() >= chunk_size) {
-      run.sink_failed = !sink(text);
-      text.clear();
-    }
+    run.sink_failed = !sink.flush_if_full();
   };
   records.replay([&](const program::block& b) { t.write(b, emit); });
-  if (writing() && !text.empty()) run.sink_failed = !sink(text);
   return run;
 }
 
 /// Both passes of `t` over the program `text` in `source_language` (`file` names it in
 /// diagnostics); `text` is freed after the first pass. Output as `stream_blocks`.
-inline stream_result stream_text(block_translator& t, std::string text, program::dialect source_language,
-                                 const std::string& file, program::dialect output_language, const text_sink& sink) {
+template <text_sink Sink>
+stream_result stream_text(block_translator& t, std::string text, program::dialect source_language,
+                          const std::string& file, program::dialect output_language, Sink& sink) {
   const block_source read = [&](program::read_result& diagnostics, const program::block_sink& on_block) {
     program::read_blocks(source_language, text, file, diagnostics, on_block);
-    text = std::string();  // the records are all pass 2 needs
+    std::string().swap(text);  // freed (assigning an empty string would keep the capacity)
   };
   return stream_blocks(t, read, file, source_language, output_language, sink);
 }

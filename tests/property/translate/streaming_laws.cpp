@@ -5,7 +5,6 @@
 #include <cmath>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -49,14 +48,11 @@ TEST_CASE("two passes block by block write what translate + write produce, and c
     // As the tool runs it (stream.hpp): pass 2 over compact records without the text of moved
     // blocks, each output block written as it is made.
     const auto t = make_translator<From, To>(p.language, p.file, options, report_detail::exceptions_only);
-    std::string text;
+    string_sink out;
     const block_source read = [&](program::read_result&, const program::block_sink& on_block) {
       for (program::block b : p.blocks) on_block(std::move(b));
     };
-    const auto run = stream_blocks(*t, read, p.file, p.language, options.output_dialect, [&](std::string_view chunk) {
-      text += chunk;
-      return true;
-    });
+    const auto run = stream_blocks(*t, read, p.file, p.language, options.output_dialect, out);
     const translation& streamed = t->result();
     RC_ASSERT(run.input.ok());
     RC_ASSERT(run.ok(*t) == whole.ok());
@@ -76,7 +72,7 @@ TEST_CASE("two passes block by block write what translate + write produce, and c
     RC_ASSERT(counted == whole.per_class);
     RC_ASSERT(streamed.reports.size() == exception_lines.size());
     for (std::size_t i = 0; i < exception_lines.size(); ++i) RC_ASSERT(streamed.reports[i].where.line == exception_lines[i]);
-    if (whole.ok()) RC_ASSERT(text == program::write(options.output_dialect, whole.output));
+    if (whole.ok()) RC_ASSERT(out.text == program::write(options.output_dialect, whole.output));
   });
 }
 
@@ -95,9 +91,25 @@ std::string siemens_program(std::size_t lines, std::size_t bad_line = 0) {
   return text + "N" + std::to_string(10 * (lines + 2)) + " M30\n";
 }
 
+/// A `text_sink` as a file is one: the buffer is written out (to `written`) once it holds
+/// 1 MiB, and every flush after the `fail_at`-th fails.
+struct chunked_sink {
+  std::string pending, written;
+  std::size_t calls = 0, flushes = 0, fail_at = static_cast<std::size_t>(-1);
+  std::string& buffer() { return pending; }
+  bool flush_if_full() {
+    ++calls;
+    if (pending.size() < (std::size_t{1} << 20)) return true;
+    if (++flushes > fail_at) return false;
+    written += pending;
+    pending.clear();
+    return true;
+  }
+};
+
 }  // namespace
 
-TEST_CASE("the streaming driver over text: the whole output in chunks, or nothing after an error") {
+TEST_CASE("the streaming driver over text: the whole output, or nothing after an error") {
   using From = machines::sajo_12000p;
   using To = machines::dmu_80p;
   const auto options = test::options();
@@ -109,51 +121,47 @@ TEST_CASE("the streaming driver over text: the whole output in chunks, or nothin
   const std::string expected = program::write(options.output_dialect, whole.output);
   REQUIRE(expected.size() > (std::size_t{1} << 20));
 
-  SECTION("a clean run gives the sink every byte, in order, in chunks of at least 1 MiB but the last") {
+  SECTION("a clean run gives the sink every byte, in order, across flushes") {
     const auto t = make_translator<From, To>(program::dialect::siemens, "long.mpf", options);
-    std::vector<std::size_t> chunks;
-    std::string out;
-    const auto run = stream_text(*t, text, program::dialect::siemens, "long.mpf", options.output_dialect,
-                                 [&](std::string_view chunk) {
-                                   chunks.push_back(chunk.size());
-                                   out += chunk;
-                                   return true;
-                                 });
+    chunked_sink out;
+    const auto run = stream_text(*t, text, program::dialect::siemens, "long.mpf", options.output_dialect, out);
     CHECK(run.ok(*t));
-    CHECK(out == expected);
-    REQUIRE(chunks.size() >= 2);
-    for (std::size_t i = 0; i + 1 < chunks.size(); ++i) CHECK(chunks[i] >= (std::size_t{1} << 20));
+    CHECK(out.flushes >= 1);
+    CHECK(out.written + out.pending == expected);
   }
   SECTION("a reader error: no second pass, nothing reaches the sink") {
     const auto t = make_translator<From, To>(program::dialect::siemens, "bad.mpf", options);
-    std::size_t calls = 0;
+    chunked_sink out;
     const auto run = stream_text(*t, siemens_program(30000, 29000), program::dialect::siemens, "bad.mpf",
-                                 options.output_dialect, [&](std::string_view) { return ++calls, true; });
+                                 options.output_dialect, out);
     CHECK_FALSE(run.input.ok());
     CHECK_FALSE(run.ok(*t));
-    CHECK(calls == 0);
+    CHECK(out.calls == 0);
+    CHECK(out.pending.empty());
     CHECK(t->result().blocks_written == 0);
   }
-  SECTION("a sink that fails is not called again") {
+  SECTION("a sink that fails is given nothing more") {
     const auto t = make_translator<From, To>(program::dialect::siemens, "long.mpf", options);
-    std::size_t calls = 0;
-    const auto run = stream_text(*t, text, program::dialect::siemens, "long.mpf", options.output_dialect,
-                                 [&](std::string_view) { return ++calls, false; });
+    chunked_sink out;
+    out.fail_at = 0;
+    const auto run = stream_text(*t, text, program::dialect::siemens, "long.mpf", options.output_dialect, out);
     CHECK(run.sink_failed);
     CHECK_FALSE(run.ok(*t));
-    CHECK(calls == 1);
+    CHECK(out.flushes == 1);
+    CHECK(out.calls < 30000);
+    CHECK(out.pending.size() < (std::size_t{1} << 20) + 200);  // one block past the 1 MiB mark
   }
   SECTION("a block the target cannot reach: nothing after it reaches the sink") {
     // A = +20° is outside the DMU 80P's reach (k_d = −sin A < 0): an error on the last motion.
     std::string unreachable = text;
     unreachable.insert(unreachable.rfind("N"), "N999999 G1 X0 Y0 Z50 A20 B0\n");
     const auto t = make_translator<From, To>(program::dialect::siemens, "far.mpf", options);
-    std::string out;
-    const auto run = stream_text(*t, unreachable, program::dialect::siemens, "far.mpf", options.output_dialect,
-                                 [&](std::string_view chunk) { return out += chunk, true; });
+    string_sink out;
+    const auto run = stream_text(*t, unreachable, program::dialect::siemens, "far.mpf", options.output_dialect, out);
     CHECK(run.input.ok());
     CHECK_FALSE(run.ok(*t));
     CHECK(t->result().per_class[static_cast<std::size_t>(matchability::unreachable)] == 1);
-    CHECK(out.size() < expected.size());  // at most the chunks before the error
+    CHECK(out.text.size() < expected.size());  // at most the blocks before the error
+    CHECK(expected.compare(0, out.text.size(), out.text) == 0);
   }
 }
