@@ -11,6 +11,8 @@
 /// @endcode
 #pragma once
 
+#include <utility>
+
 #include "../kinematics/matchability.hpp"
 #include "../program/block.hpp"
 #include "../program/modal.hpp"
@@ -55,7 +57,7 @@ class cl_target {
     }
     block_report report{b.where, s.principal ? matchability::direct : matchability::other_branch, {}, {}, {}};
     if (!s.principal) report.why = "the source pose is on the second solution branch of the source machine (K3)";
-    on_report(block_report(report));
+    on_report(std::move(report));
     if (program::is_arc(s.motion)) {
       out.errors.push_back(at(b, "circular move cannot be written as GOTO points; kin5 does not linearise arcs"));
       return;

@@ -23,6 +23,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 
 #include "../core/rigid.hpp"
 #include "../kinematics/branch_plan.hpp"
@@ -166,7 +167,7 @@ class nc_target {
       for (std::size_t i = 0; i < rotary_count<To>; ++i) rotary_word(o.axes, To::rotary[i].letter) = angles_target_deg[i];
     }
     write_feed(b, s, tip_target_mm, angles_target_deg, o, out);
-    warn_branch_switch(b, j, out);
+    if (previous_motion_ && path_.branch[*previous_motion_] != path_.branch[j]) warn_branch_switch(b, j, out);
     previous_motion_ = j;
     previous_step_ = s;
     emit(std::move(o));
@@ -191,7 +192,7 @@ class nc_target {
       report.why = "the source pose is on the second solution branch of the source machine (K3); a closed-form "
                    "translation on the principal branch would turn the table 180° off (E6)";
     }
-    on_report(block_report(report));
+    on_report(std::move(report));
     return true;
   }
 
