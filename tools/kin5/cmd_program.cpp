@@ -239,8 +239,7 @@ int execute(const job& j) {
 
 /// Whether `id` is a catalog machine; if not, says so with the valid ids.
 bool known_machine(std::string_view command, std::string_view option, const std::string& id) {
-  for (auto known : machine_ids())
-    if (known == id) return true;
+  if (with_machine(id, []<class>() {})) return true;
   std::cerr << "kin5 " << command << ": " << option << ": unknown machine '" << id
             << "'; valid ids: " << join(machine_ids()) << '\n';
   return false;
@@ -301,29 +300,24 @@ std::optional<rigid_transform> parse_setup(const translate_arguments& a) {
   if (!a.setup_rotation.empty() && (!a.setup_axis.empty() || a.setup_angle_deg))
     return fail("give the setup rotation either as --setup-rotation or as --setup-axis with --setup-angle, not both");
   if (!a.setup_rotation.empty()) {
-    const auto m = parse_list(a.setup_rotation, 9);
-    if (!m) return fail("--setup-rotation needs 9 numbers, row by row, separated by commas");
-    const mat3 r{{vec3{(*m)[0], (*m)[1], (*m)[2]}, vec3{(*m)[3], (*m)[4], (*m)[5]}, vec3{(*m)[6], (*m)[7], (*m)[8]}}};
-    const mat3 should_be_identity = r * r.transposed();
-    double worst = std::abs(determinant(r) - 1.0);
-    for (int i = 0; i < 3; ++i) {
-      const vec3 row = should_be_identity.row[static_cast<std::size_t>(i)];
-      const vec3 unit = mat3::identity().row[static_cast<std::size_t>(i)];
-      worst = std::max(worst, norm(row - unit));
-    }
-    if (worst > 1e-9) return fail("--setup-rotation is not a proper rotation (R Rᵀ = I and det R = +1 to 1e-9)");
-    setup.rotation = r;
+    const auto rows = parse_list(a.setup_rotation, 9);
+    if (!rows) return fail("--setup-rotation needs 9 numbers, row by row, separated by commas");
+    const auto& r = *rows;
+    const mat3 target_R_source{{vec3{r[0], r[1], r[2]}, vec3{r[3], r[4], r[5]}, vec3{r[6], r[7], r[8]}}};
+    if (!is_proper_rotation(target_R_source))
+      return fail("--setup-rotation is not a proper rotation (R Rᵀ = I and det R = +1 to 1e-9)");
+    setup.rotation = target_R_source;
   } else if (!a.setup_axis.empty() || a.setup_angle_deg) {
     const auto axis = parse_list(a.setup_axis, 3);
     if (!axis || !a.setup_angle_deg) return fail("--setup-axis X,Y,Z and --setup-angle DEG go together");
-    const vec3 n{(*axis)[0], (*axis)[1], (*axis)[2]};
-    if (!(norm(n) > 1e-12)) return fail("--setup-axis must not be the zero vector");
-    setup.rotation = rotation(normalized(n), to_radians(degrees{*a.setup_angle_deg}));
+    const vec3 axis_source{(*axis)[0], (*axis)[1], (*axis)[2]};
+    if (!(norm(axis_source) > 1e-12)) return fail("--setup-axis must not be the zero vector");
+    setup.rotation = rotation(normalized(axis_source), to_radians(degrees{*a.setup_angle_deg}));
   }
   if (!a.setup_offset.empty()) {
-    const auto t = parse_list(a.setup_offset, 3);
-    if (!t) return fail("--setup-offset needs 3 numbers (millimetres) separated by commas");
-    setup.translation_mm = {(*t)[0], (*t)[1], (*t)[2]};
+    const auto offset_mm = parse_list(a.setup_offset, 3);
+    if (!offset_mm) return fail("--setup-offset needs 3 numbers (millimetres) separated by commas");
+    setup.translation_mm = {(*offset_mm)[0], (*offset_mm)[1], (*offset_mm)[2]};
   }
   return setup;
 }

@@ -1,5 +1,5 @@
 // Helpers shared by the kin5 subcommands: reading numbers and axis values from arguments,
-// writing angles and vectors, and calling code for a catalog machine chosen by its id.
+// writing angles and vectors, and the ids of the catalog machines.
 //
 // Arguments are read strictly: a whole argument must be one finite decimal number (an exponent
 // is allowed, `inf` and `nan` are not). Angles are written in degrees with 6 decimals, tool axes
@@ -79,18 +79,7 @@ inline std::string join(const std::vector<std::string_view>& names, std::string_
   return out;
 }
 
-/// Calls `f.template operator()<M>()` for the catalog machine M with `M::id == id`.
-/// Returns false, without calling `f`, when no catalog machine has that id.
-template <class F>
-bool with_machine(std::string_view id, F&& f) {
-  bool found = false;
-  kin5::machines::for_each_machine([&]<class M>() {
-    if (!found && M::id == id) {
-      found = true;
-      f.template operator()<M>();
-    }
-  });
-  return found;
-}
+/// The lookup of a catalog machine by id (machines/catalog.hpp), the one the whole tool uses.
+using kin5::machines::with_machine;
 
 }  // namespace kin5::tool

@@ -1,8 +1,9 @@
 /// @file machines.hpp
 /// The catalog: every bundled machine type, and `catalog`, a type list of them for code (tests,
-/// the command line) that must do something for each.
+/// the command line) that must do something for each, or for the one with a given id.
 #pragma once
 
+#include <string_view>
 #include <tuple>
 
 #include "a_rotary_4axis.hpp"
@@ -22,6 +23,20 @@ using catalog = std::tuple<sajo_12000p, dmu_80p, ac_trunnion, dmu_50v, a_rotary_
 template <class F>
 constexpr void for_each_machine(F&& f) {
   [&]<class... Ms>(std::tuple<Ms...>*) { (f.template operator()<Ms>(), ...); }(static_cast<catalog*>(nullptr));
+}
+
+/// Calls `f.template operator()<M>()` for the catalog machine M with `M::id == id`: the one
+/// lookup of a machine by id. False, without calling `f`, when no catalog machine has that id.
+template <class F>
+constexpr bool with_machine(std::string_view id, F&& f) {
+  bool found = false;
+  for_each_machine([&]<class M>() {
+    if (!found && M::id == id) {
+      found = true;
+      f.template operator()<M>();
+    }
+  });
+  return found;
 }
 
 }  // namespace kin5::machines

@@ -1,8 +1,8 @@
 /// @file translate/by_id.hpp
 /// The translation for catalog machines named at run time by id ("sajo-12000p", "dmu-80p"):
 /// `translate`, `reverse`, `post` and the `make_*` translators, each the template of the same
-/// name for the machine (or pair) with that id, and an error naming the valid ids for an unknown
-/// one. `with_machine` is the one lookup of a catalog machine by id.
+/// name for the machine (or pair) with that id (found by `machines::with_machine`, the one lookup
+/// of a catalog machine by id), and an error naming the valid ids for an unknown one.
 ///
 /// Opt-in (not included by `kin5.hpp`): every function here instantiates the pipeline for each
 /// catalog machine, or each ordered pair of them for `translate` (7 × 7), which costs seconds of
@@ -10,7 +10,7 @@
 /// @code
 ///   #include <kin5/translate/by_id.hpp>
 ///   const kin5::translation t = kin5::translate("sajo-12000p", "dmu-80p", nc, options);
-///   if (!kin5::with_machine("dmu-80p", []<class M>() { /* M is machines::dmu_80p */ })) unknown();
+///   if (!t.ok()) for (const auto& e : t.errors) std::cerr << e.to_string() << '\n';
 /// @endcode
 #pragma once
 
@@ -23,20 +23,6 @@
 #include "translate.hpp"
 
 namespace kin5 {
-
-/// Calls `f.template operator()<M>()` for the catalog machine M with `M::id == id`. Returns
-/// false, without calling `f`, when no catalog machine has that id.
-template <class F>
-bool with_machine(std::string_view id, F&& f) {
-  bool found = false;
-  machines::for_each_machine([&]<class M>() {
-    if (!found && M::id == id) {
-      found = true;
-      f.template operator()<M>();
-    }
-  });
-  return found;
-}
 
 /// The ids of every catalog machine, in catalog order, separated by ", ".
 inline std::string catalog_ids() {
@@ -62,8 +48,8 @@ inline std::unique_ptr<block_translator> make_translator(std::string_view from_i
                                                          const translate_options& options,
                                                          report_detail detail = report_detail::every_block) {
   std::unique_ptr<block_translator> out;
-  const bool from_known = with_machine(from_id, [&]<class From>() {
-    with_machine(to_id, [&]<class To>() { out = make_translator<From, To>(source_language, file, options, detail); });
+  const bool from_known = machines::with_machine(from_id, [&]<class From>() {
+    machines::with_machine(to_id, [&]<class To>() { out = make_translator<From, To>(source_language, file, options, detail); });
   });
   if (out) return out;
   return translate_detail::unknown_machine(file, options.output_dialect, from_known ? to_id : from_id);
@@ -74,7 +60,7 @@ inline std::unique_ptr<block_translator> make_reverse(std::string_view machine_i
                                                       const std::string& file,
                                                       report_detail detail = report_detail::every_block) {
   std::unique_ptr<block_translator> out;
-  with_machine(machine_id, [&]<class M>() { out = make_reverse<M>(source_language, file, detail); });
+  machines::with_machine(machine_id, [&]<class M>() { out = make_reverse<M>(source_language, file, detail); });
   if (out) return out;
   return translate_detail::unknown_machine(file, program::dialect::apt, machine_id);
 }
@@ -84,7 +70,7 @@ inline std::unique_ptr<block_translator> make_post(std::string_view machine_id, 
                                                    program::dialect output_dialect, const std::string& file,
                                                    report_detail detail = report_detail::every_block) {
   std::unique_ptr<block_translator> out;
-  with_machine(machine_id, [&]<class M>() { out = make_post<M>(source_language, output_dialect, file, detail); });
+  machines::with_machine(machine_id, [&]<class M>() { out = make_post<M>(source_language, output_dialect, file, detail); });
   if (out) return out;
   return translate_detail::unknown_machine(file, output_dialect, machine_id);
 }

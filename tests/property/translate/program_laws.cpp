@@ -129,3 +129,26 @@ TEST_CASE("arcs map exactly under every axis-permuting setup and come back uncha
     RC_ASSERT(norm(e - end) <= 1e-9);
   });
 }
+
+// The paper's SAJO ↔ DMU 80P setup is proper; a reflection and a stretch are not.
+static_assert(is_proper_rotation(sajo_12000p_dmu_80p_setup.rotation));
+static_assert(!is_proper_rotation(mat3{{vec3{-1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}}));
+static_assert(!is_proper_rotation(mat3{{vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1.000001}}}));
+
+TEST_CASE("a setup rotation is accepted when proper, refused when stretched or reflected") {
+  rc::prop("rotation(axis, angle) is proper; 1e-6 more on one entry, or −R, is not", [] {
+    const vec3 axis{*test::uniform(-1, 1), *test::uniform(-1, 1), *test::uniform(-1, 1)};
+    RC_PRE(norm(axis) > 0.1);
+    const mat3 r = rotation(normalized(axis), radians{*test::uniform(-pi, pi)});
+    RC_ASSERT(is_proper_rotation(r));
+    RC_ASSERT(rotation_defect(r) <= 1e-14);
+    const auto row = *rc::gen::inRange<std::size_t>(0, 3);
+    const auto column = *rc::gen::inRange<std::size_t>(0, 3);
+    mat3 bent = r;
+    (column == 0 ? bent.row[row].x : column == 1 ? bent.row[row].y : bent.row[row].z) += 1e-6;
+    RC_ASSERT(!is_proper_rotation(bent));
+    mat3 reflected = r;
+    for (auto& v : reflected.row) v = -1.0 * v;
+    RC_ASSERT(!is_proper_rotation(reflected));
+  });
+}
