@@ -9,7 +9,6 @@ packages=(
   coinor-libipopt-dev      # kin5::reach
   libbenchmark-dev         # bench/
   libcli11-dev             # command-line tool
-  libfmt-dev               # number formatting in writers and tools
   clang libclang-rt-14-dev # libFuzzer targets
 )
 missing=()
