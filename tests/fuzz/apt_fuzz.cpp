@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string_view>
 
-#include <kin5/program/apt.hpp>
+#include <kin5/program/apt/dialect.hpp>
 
 #include "../property/program_apt/same_model.hpp"
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include <kin5/program/heidenhain.hpp>
+#include <kin5/program/heidenhain/dialect.hpp>
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include <kin5/program/siemens.hpp>
+#include <kin5/program/siemens/dialect.hpp>
 
 #include "../property/program_siemens/model_difference.hpp"
 

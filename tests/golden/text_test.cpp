@@ -8,10 +8,10 @@
 
 #include <kin5/kin5.hpp>
 #include <kin5/translate/by_id.hpp>
-#include <kin5/program/apt.hpp>
-#include <kin5/program/heidenhain.hpp>
-#include <kin5/program/iso.hpp>
-#include <kin5/program/siemens.hpp>
+#include <kin5/program/apt/dialect.hpp>
+#include <kin5/program/heidenhain/dialect.hpp>
+#include <kin5/program/iso/dialect.hpp>
+#include <kin5/program/siemens/dialect.hpp>
 
 #include "program_builder.hpp"
 

@@ -3,7 +3,7 @@
 /// came from (file, line, column) and what it says: lengths in millimetres (an inch program's
 /// reader converts, exactly, ×25.4; `metric` says which unit the text used), angles in degrees.
 ///
-/// Readers (`siemens.hpp`, `heidenhain.hpp`, `iso.hpp`, `apt.hpp`) build it; writers turn it back
+/// Readers (one per dialect, `program/<dialect>/`) build it; writers turn it back
 /// into text; the translator maps the motion content between machines and keeps the rest in
 /// order. A block holds only what its source text says: modal state (the motion mode, the last
 /// position, whether tool-tip tracking is on) is the consumer's to carry, with `modal_state`.
@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "../core/vec.hpp"
+#include "dialect_id.hpp"
 #include "state_words.hpp"
 
 namespace kin5::program {
@@ -30,6 +31,9 @@ enum class dialect {
   apt,         ///< APT cutter-location data (GOTO/, FEDRAT/)
 };
 
+/// The value that names a dialect at run time: `siemens::dialect::id`, … (program/dialect.hpp).
+using dialect_id = dialect;
+
 constexpr std::string_view name(dialect d) {
   switch (d) {
     case dialect::siemens: return "siemens";
@@ -38,12 +42,6 @@ constexpr std::string_view name(dialect d) {
     case dialect::apt: return "apt";
   }
   return "?";
-}
-
-constexpr std::optional<dialect> parse_dialect(std::string_view s) {
-  for (dialect d : {dialect::siemens, dialect::heidenhain, dialect::iso, dialect::apt})
-    if (s == name(d)) return d;
-  return std::nullopt;
 }
 
 /// The name of a program's file, shared by every location in it: copying one copies a pointer,

@@ -1,6 +1,6 @@
 /// @file program/io.hpp
 /// One entry point for every NC dialect: `read` and `write` take the dialect as a value and call
-/// the reader or writer of `siemens.hpp`, `heidenhain.hpp`, `iso.hpp` or `apt.hpp`;
+/// the reader or writer of that entry of `program::dialects` (program/dialect.hpp);
 /// `default_dialect` names the language a catalog machine's controller speaks, and
 /// `guess_dialect` recognises a program by markers only one language uses.
 ///
@@ -12,16 +12,19 @@
 /// @endcode
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <stdexcept>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <variant>
 
-#include "apt.hpp"
 #include "block.hpp"
-#include "heidenhain.hpp"
-#include "iso.hpp"
-#include "siemens.hpp"
+#include "dialect.hpp"
 #include "text.hpp"
 
 namespace kin5::program {
@@ -29,13 +32,9 @@ namespace kin5::program {
 /// Reads `text` (the bytes of a file, any line endings) as a program in dialect `d`.
 /// `file_name` is only used in the locations of blocks and diagnostics.
 inline read_result read(dialect d, std::string_view text, std::string file_name) {
-  switch (d) {
-    case dialect::siemens: return siemens::read(text, std::move(file_name));
-    case dialect::heidenhain: return heidenhain::read(text, std::move(file_name));
-    case dialect::iso: return iso::read(text, std::move(file_name));
-    case dialect::apt: return apt::read(text, std::move(file_name));
-  }
-  return {};
+  return visit_dialect(
+      d, [&]<class D>(std::type_identity<D>) { return read_whole(D::id, text, std::move(file_name), &D::read_blocks); },
+      [] { return read_result{}; });
 }
 
 /// Reads `text` in dialect `d` block by block: `on_block` receives each block in file order as soon
@@ -43,34 +42,51 @@ inline read_result read(dialect d, std::string_view text, std::string file_name)
 /// is `read` without the program: memory stays constant, however long the text.
 inline void read_blocks(dialect d, std::string_view text, const std::string& file_name, read_result& diagnostics,
                         const block_sink& on_block) {
-  switch (d) {
-    case dialect::siemens: return siemens::read_blocks(text, file_name, diagnostics, on_block);
-    case dialect::heidenhain: return heidenhain::read_blocks(text, file_name, diagnostics, on_block);
-    case dialect::iso: return iso::read_blocks(text, file_name, diagnostics, on_block);
-    case dialect::apt: return apt::read_blocks(text, file_name, diagnostics, on_block);
-  }
+  visit_dialect(
+      d,
+      [&]<class D>(std::type_identity<D>) {
+        D::read_blocks(text, file_name, diagnostics, on_block);
+        return true;
+      },
+      [] { return false; });
 }
 
-/// Writer settings for `write`, one member per dialect; only the one for the dialect written
-/// is used. Each member defaults to that writer's own defaults.
+namespace detail {
+template <class List>
+struct write_options_of;
+template <class... D>
+struct write_options_of<std::tuple<D...>> {
+  using type = std::tuple<typename D::write_options...>;
+};
+template <class List>
+struct writer_of;
+template <class... D>
+struct writer_of<std::tuple<D...>> {
+  using type = std::variant<typename D::writer...>;
+};
+}  // namespace detail
+
+/// Writer settings for `write`: one `write_options` per dialect, each defaulting to that writer's
+/// own defaults; only the written dialect's are used. `settings.of<siemens::dialect>()` is one.
 struct write_settings {
-  siemens::write_options siemens_options{};
-  heidenhain::write_options heidenhain_options{};
-  iso::write_options iso_options{};
-  apt::write_options apt_options{};
+  typename detail::write_options_of<dialects>::type options{};
+
+  template <class D>
+  typename D::write_options& of() {
+    return std::get<typename D::write_options>(options);
+  }
+  template <class D>
+  const typename D::write_options& of() const {
+    return std::get<typename D::write_options>(options);
+  }
 };
 
 /// Writes `p` in dialect `d`, whatever dialect it was read from.
 /// Throws `std::invalid_argument` (from the dialect's writer) when a block cannot be written
 /// in `d`; the message names the block's source location.
 inline std::string write(dialect d, const program& p, const write_settings& settings = {}) {
-  switch (d) {
-    case dialect::siemens: return siemens::write(p, settings.siemens_options);
-    case dialect::heidenhain: return heidenhain::write(p, settings.heidenhain_options);
-    case dialect::iso: return iso::write(p, settings.iso_options);
-    case dialect::apt: return apt::write(p, settings.apt_options);
-  }
-  return {};
+  return visit_dialect(
+      d, [&]<class D>(std::type_identity<D>) { return D::write(p, settings.of<D>()); }, [] { return std::string(); });
 }
 
 /// The writer of one dialect, block by block: `write(program)` without the program. The ISO
@@ -79,28 +95,25 @@ inline std::string write(dialect d, const program& p, const write_settings& sett
 class block_writer {
  public:
   block_writer(dialect d, dialect source, std::string file, const write_settings& settings = {})
-      : language_(d),
-        siemens_(source, file, settings.siemens_options),
-        heidenhain_(source, file, settings.heidenhain_options),
-        iso_(source, settings.iso_options),
-        apt_(source, settings.apt_options) {}
+      : writer_(make(d, source, std::move(file), settings)) {}
 
   /// Appends block `b`'s text to `out`; throws `std::invalid_argument` as `write` does.
   void write(std::string& out, const block& b) {
-    switch (language_) {
-      case dialect::siemens: return siemens_.write(out, b);
-      case dialect::heidenhain: return heidenhain_.write(out, b);
-      case dialect::iso: return iso_.write(out, b);
-      case dialect::apt: return apt_.write(out, b);
-    }
+    std::visit([&](auto& w) { w.write(out, b); }, writer_);
   }
 
  private:
-  dialect language_;
-  siemens::writer siemens_;
-  heidenhain::writer heidenhain_;
-  iso::writer iso_;
-  apt::writer apt_;
+  using any_writer = typename detail::writer_of<dialects>::type;
+  any_writer writer_;
+
+  static any_writer make(dialect d, dialect source, std::string file, const write_settings& settings) {
+    return visit_dialect(
+        d,
+        [&]<class D>(std::type_identity<D>) {
+          return any_writer(std::in_place_type<typename D::writer>, source, std::move(file), settings.of<D>());
+        },
+        []() -> any_writer { throw std::invalid_argument("block_writer: no such dialect"); });
+  }
 };
 
 /// The dialect the controller of catalog machine `machine_id` reads, or nothing for an id
@@ -166,40 +179,34 @@ constexpr std::string_view skip_block_number(std::string_view line) {
 
 /// The dialect of `text` when it carries a marker that only one dialect uses, else nothing.
 ///
-/// Markers, each at the start of a block (after an optional block number):
+/// Markers (each dialect's `markers`), at the start of a block (after an optional block number):
 /// `BEGIN PGM` (heidenhain), `%_N_` (siemens), `PARTNO`, `GOTO/`, `FEDRAT/` (apt); and anywhere
 /// in a line: `TRAORI`, `TRAFOOF` (siemens), `M128`, `FUNCTION TCPM` (heidenhain), `G43.4`,
 /// `G43.5` (iso). Text with markers of two dialects, or none, gives nothing: the caller then
 /// decides (for example with `default_dialect`). Cost: one pass over the first 200 lines.
 constexpr std::optional<dialect> guess_dialect(std::string_view text) {
-  bool seen[4] = {false, false, false, false};
-  auto mark = [&](dialect d) { seen[static_cast<int>(d)] = true; };
+  std::array<bool, dialect_count> seen{};
   std::size_t start = 0, lines = 0;
   while (start < text.size() && lines < 200) {
     std::size_t end = start;
     while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
     const std::string_view line = text.substr(start, end - start);
     const std::string_view statement = detail::skip_block_number(line);
-    if (starts_with_keyword(statement, "BEGIN PGM")) mark(dialect::heidenhain);
-    if (starts_with_keyword(statement, "%_N_")) mark(dialect::siemens);
-    if (starts_with_keyword(statement, "PARTNO") || starts_with_keyword(statement, "GOTO/") ||
-        starts_with_keyword(statement, "FEDRAT/"))
-      mark(dialect::apt);
-    if (detail::contains_keyword(line, "TRAORI") || detail::contains_keyword(line, "TRAFOOF"))
-      mark(dialect::siemens);
-    if (detail::contains_keyword(line, "M128") || detail::contains_keyword(line, "FUNCTION TCPM"))
-      mark(dialect::heidenhain);
-    if (detail::contains_keyword(line, "G43.4") || detail::contains_keyword(line, "G43.5")) mark(dialect::iso);
+    for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t i) {
+      for (const marker& m : D::markers)
+        if (m.where == marker::place::block_start ? starts_with_keyword(statement, m.keyword)
+                                                  : detail::contains_keyword(line, m.keyword))
+          seen[i] = true;
+    });
     start = end + 1;
     ++lines;
   }
   std::optional<dialect> found;
-  for (dialect d : {dialect::siemens, dialect::heidenhain, dialect::iso, dialect::apt}) {
-    if (!seen[static_cast<int>(d)]) continue;
-    if (found) return std::nullopt;
-    found = d;
-  }
-  return found;
+  std::size_t count = 0;
+  for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t i) {
+    if (seen[i]) found = D::id, ++count;
+  });
+  return count == 1 ? found : std::nullopt;
 }
 
 }  // namespace kin5::program

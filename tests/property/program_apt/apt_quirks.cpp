@@ -3,7 +3,7 @@
 
 #include <catch2/catch.hpp>
 
-#include <kin5/program/apt.hpp>
+#include <kin5/program/apt/dialect.hpp>
 
 using namespace kin5::program;
 

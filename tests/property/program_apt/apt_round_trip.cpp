@@ -7,7 +7,7 @@
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
-#include <kin5/program/apt.hpp>
+#include <kin5/program/apt/dialect.hpp>
 
 #include "same_model.hpp"
 #include "text_gen.hpp"

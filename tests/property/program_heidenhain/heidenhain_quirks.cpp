@@ -6,7 +6,7 @@
 
 #include <catch2/catch.hpp>
 
-#include <kin5/program/heidenhain.hpp>
+#include <kin5/program/heidenhain/dialect.hpp>
 
 using namespace kin5::program;
 using kin5::vec3;

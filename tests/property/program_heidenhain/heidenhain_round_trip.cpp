@@ -10,7 +10,7 @@
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
-#include <kin5/program/heidenhain.hpp>
+#include <kin5/program/heidenhain/dialect.hpp>
 
 #include "same_model.hpp"
 

@@ -4,7 +4,7 @@
 
 #include <catch2/catch.hpp>
 
-#include <kin5/program/iso.hpp>
+#include <kin5/program/iso/dialect.hpp>
 
 using namespace kin5::program;
 

@@ -5,7 +5,7 @@
 
 #include <catch2/catch.hpp>
 
-#include <kin5/program/iso.hpp>
+#include <kin5/program/iso/dialect.hpp>
 
 using namespace kin5::program;
 

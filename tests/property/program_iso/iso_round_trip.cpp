@@ -7,7 +7,7 @@
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
-#include <kin5/program/iso.hpp>
+#include <kin5/program/iso/dialect.hpp>
 
 #include "../program_apt/same_model.hpp"
 #include "../program_apt/text_gen.hpp"

@@ -6,7 +6,7 @@
 
 #include <catch2/catch.hpp>
 
-#include <kin5/program/siemens.hpp>
+#include <kin5/program/siemens/dialect.hpp>
 
 namespace {
 

@@ -1,15 +1,15 @@
 // The one-scan reader of plain motion lines (`detail::read_plain_motion`) says exactly what the
-// full word-by-word reader says: on lines of N, G0-G3, axis and F words, written well or badly
-// (lower case, words twice, signs, points, exponents, letters run together, stray text), after
-// any modal motion, either it declines or both give the same block and the same modal state,
-// and the full reader finds no problem.
+// full word-by-word reader (`detail::line_reader::read_words`) says: on lines of N, G0-G3, axis
+// and F words, written well or badly (lower case, words twice, signs, points, exponents, letters
+// run together, stray text), after any modal motion, either it declines or both give the same
+// block and the same modal state, and the full reader finds no problem.
 #include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
-#include <kin5/program/siemens.hpp>
+#include <kin5/program/siemens/dialect.hpp>
 
 namespace {
 
@@ -81,17 +81,17 @@ TEST_CASE("siemens: plain motion lines read in one scan as the full reader reads
       RC_ASSERT(fast_state.position_mm == before.position_mm);
       return;
     }
-    sd::line_parse p;
-    p.b.where = {"p.mpf", 7, 1};
-    p.b.text = text;
-    sd::modal_state full_state = before;
+    block full;
+    full.where = {"p.mpf", 7, 1};
+    full.text = text;
+    sd::line_reader reader("p.mpf");
+    reader.state() = before;
     read_result diagnostics;
-    const kin5::program::file_name file("p.mpf");
-    sd::line_reader(text, 7, file, p).run();
-    sd::finish(p, full_state, diagnostics);
+    full = reader.read_words(text_line{text, 7}, std::move(full), diagnostics);
+    const sd::modal_state& full_state = reader.state();
     RC_ASSERT(diagnostics.errors.empty());
     RC_ASSERT(diagnostics.warnings.empty());
-    RC_ASSERT(p.b == fast);
+    RC_ASSERT(full == fast);
     RC_ASSERT(full_state.motion == fast_state.motion);
     RC_ASSERT(full_state.position_mm == fast_state.position_mm);
   });

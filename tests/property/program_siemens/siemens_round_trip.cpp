@@ -12,7 +12,7 @@
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
-#include <kin5/program/siemens.hpp>
+#include <kin5/program/siemens/dialect.hpp>
 
 #include "model_difference.hpp"
 

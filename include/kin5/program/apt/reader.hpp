@@ -1,0 +1,241 @@
+/// @file program/apt/reader.hpp
+/// The second stage of the APT reader: a statement (lexer.hpp) becomes a `block`.
+/// `GOTO/x,y,z[,i,j,k]` (tool tip in mm, tool-axis vector), `RAPID` (the next GOTO is rapid),
+/// `FEDRAT/[MMPM,|INVERS,]f`, `SPINDL/[RPM,]n[,CLW|CCLW]`, `SPINDL/ON|OFF|CLW|CCLW`, `LOADTL/n`,
+/// `COOLNT/ON|FLOOD|MIST|OFF`, `STOP`, `OPSTOP`, `UNITS/MM`, `PARTNO name`, `FINI`, `PPRINT/text`
+/// and `$$ text` comments. `MULTAX`, `INSERT` and unknown statements pass through. Rejected:
+/// `UNITS/INCHES`, inch and per-revolution feeds, `CIRCLE`, GOTO with other than 3 or 6 values.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "../block.hpp"
+#include "../lexing.hpp"
+#include "../number.hpp"
+#include "../text.hpp"
+#include "lexer.hpp"
+
+namespace kin5::program::apt::detail {
+
+/// Reads one statement into a block; remembers whether a RAPID is pending.
+class statement_reader {
+ public:
+  statement_reader(const file_name& file, bool& rapid_pending, std::vector<diagnostic>& errors)
+      : file_(file), rapid_pending_(rapid_pending), errors_(errors) {}
+
+  block read(const statement& st) {
+    st_ = &st;
+    block b;
+    b.where = st.at(file_, 0);
+    b.text = st.text;
+    if (st.has_comment) b.comment = st.comment;
+    c_ = split_code(st.content);
+    // Free text after PARTNO / PPRINT / INSERT may hold any byte; elsewhere control bytes are errors.
+    const bool free_text = c_.major == "PARTNO" || c_.major == "PPRINT" || c_.major == "INSERT";
+    if (control_byte(free_text ? c_.major_at : st.content.size())) return b;
+    if (c_.major.empty()) {
+      b.passthrough = !st.has_comment;  // a `$$` comment line, or something else kept as written
+      return b;
+    }
+    // In APT a trailing '$' continues the statement and '$$' starts a comment, so a '$' kept in
+    // free text could not be written back with the same meaning: reject it rather than guess.
+    if (free_text) {
+      const std::size_t dollar = st.content.find('$', c_.rest);
+      if (dollar != std::string::npos) {
+        error(dollar, "'$' in " + c_.major + " text is ambiguous (continuation or comment in APT)");
+        return b;
+      }
+    }
+    args_ = arguments(st.content, c_.rest);
+    major(b);
+    return b;
+  }
+
+ private:
+  const file_name& file_;
+  bool& rapid_pending_;
+  std::vector<diagnostic>& errors_;
+  const statement* st_ = nullptr;
+  code c_;
+  std::vector<argument> args_;
+
+  void error(std::size_t offset, std::string message) { errors_.push_back({st_->at(file_, offset), std::move(message)}); }
+
+  /// Reports the first control byte before `end`; true if there is one.
+  bool control_byte(std::size_t end) {
+    for (std::size_t k = 0; k < end; ++k) {
+      const char ch = st_->content[k];
+      const auto u = static_cast<unsigned char>(ch);
+      if ((u < 0x20 && ch != '\t') || u == 0x7f) {
+        error(k, "unexpected byte " + lexing::hex_byte(ch, true));
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /// Nothing after the major word; else reported.
+  bool no_values() {
+    if (c_.tail.empty()) return true;
+    error(c_.rest, "unexpected '" + std::string(c_.tail) + "' after " + c_.major);
+    return false;
+  }
+
+  /// Argument `a` as a plain number into `v`; false, reported, if it is not one.
+  bool number(const argument& a, double& v) {
+    const parsed_number n = read_number(a.text);
+    if (n.error == number_error::too_large) {
+      error(a.offset, "value out of range");
+      return false;
+    }
+    if (n.error != number_error::none || n.length != a.text.size()) {
+      const bool malformed =
+          n.length > 0 && a.text.substr(n.length).find_first_not_of("0123456789.eE+-") == std::string_view::npos;
+      if (a.text.empty()) error(a.offset, c_.major + " value is missing");
+      else if (malformed) error(a.offset, "malformed number '" + std::string(a.text) + "'");  // `1.2.3`, `1E5`
+      else error(a.offset, "'" + std::string(a.text) + "' is not a number");
+      return false;
+    }
+    v = n.value;
+    return true;
+  }
+
+  void major(block& b) {
+    const std::string& m = c_.major;
+    const std::string word = lexing::upper(c_.tail);
+    if (m == "GOTO") return go_to(b);
+    if (m == "RAPID") {
+      if (!no_values()) return;
+      b.motion = motion_kind::rapid;
+      b.feed_rapid = true;
+      rapid_pending_ = true;
+    } else if (m == "FEDRAT") {
+      feed_rate(b);
+    } else if (m == "SPINDL") {
+      spindle(b);
+    } else if (m == "LOADTL") {
+      load_tool(b);
+    } else if (m == "COOLNT") {
+      if (word == "ON" || word == "FLOOD") b.m_codes.push_back(8);
+      else if (word == "MIST") b.m_codes.push_back(7);
+      else if (word == "OFF") b.m_codes.push_back(9);
+      else b.passthrough = true;
+    } else if (m == "STOP" || m == "OPSTOP") {
+      if (no_values()) b.m_codes.push_back(m == "STOP" ? 0 : 1);
+    } else {
+      other(b, word);
+    }
+  }
+
+  /// UNITS, PARTNO, FINI, PPRINT, CIRCLE; anything else passes through.
+  void other(block& b, const std::string& word) {
+    const std::string& m = c_.major;
+    if (m == "UNITS") {
+      if (word == "MM") b.metric = true;
+      else if (word == "INCHES" || word == "INCH") error(c_.rest, "inch programs are not supported");
+      else b.passthrough = true;
+    } else if (m == "PARTNO") {
+      b.program_begin = std::string(c_.tail);
+    } else if (m == "FINI") {
+      if (no_values()) b.program_end = std::string();
+    } else if (m == "PPRINT") {
+      std::string text(c_.tail);
+      if (b.comment) text += (text.empty() ? "$$ " : " $$ ") + *b.comment;
+      b.comment = std::string(lexing::trim(text));
+    } else if (m == "CIRCLE") {
+      error(c_.major_at, "circular CL data (CIRCLE) is not supported");
+    } else {
+      b.passthrough = true;  // MULTAX, INSERT, TLAXIS, unknown: kept as written
+    }
+  }
+
+  /// `GOTO/x,y,z[,i,j,k]`: rapid when a RAPID came before it.
+  void go_to(block& b) {
+    b.motion = rapid_pending_ ? motion_kind::rapid : motion_kind::linear;
+    rapid_pending_ = false;
+    if (!c_.slash || (args_.size() != 3 && args_.size() != 6)) return error(c_.major_at, "GOTO needs 3 or 6 values");
+    double v[6] = {};
+    bool good = true;
+    for (std::size_t a = 0; a < args_.size(); ++a) good = number(args_[a], v[a]) && good;
+    if (!good) return;
+    b.axes.x_mm = v[0], b.axes.y_mm = v[1], b.axes.z_mm = v[2];
+    if (args_.size() == 6) b.axes.tool_axis = vec3{v[3], v[4], v[5]};
+  }
+
+  /// `FEDRAT/[MMPM,|INVERS,]f`.
+  void feed_rate(block& b) {
+    if (!c_.slash || c_.tail.empty()) return error(c_.major_at, "FEDRAT needs a feed value");
+    std::optional<feed_unit> mode = feed_unit::per_minute;
+    const argument* value = nullptr;
+    for (const argument& a : args_) {
+      const std::string word = lexing::upper(a.text);
+      if (word == "MMPM") mode = feed_unit::per_minute;
+      else if (word == "INVERS") mode = feed_unit::inverse_time;
+      else if (word == "IPM") return error(a.offset, "inch programs are not supported");
+      else if (word == "MMPR" || word == "IPR") return error(a.offset, "feed per revolution is not supported");
+      else if (!value) value = &a;
+      else return error(a.offset, "unexpected '" + std::string(a.text) + "' after FEDRAT");
+    }
+    double f = 0;
+    if (!value) return error(c_.major_at, "FEDRAT needs a feed value");
+    if (!number(*value, f)) return;
+    b.feed = f;
+    b.feed_mode = mode;
+  }
+
+  /// `SPINDL/[RPM,]n[,CLW|CCLW]`, `SPINDL/ON|OFF|CLW|CCLW`.
+  void spindle(block& b) {
+    const std::string message = "SPINDL needs a speed, ON, OFF, CLW or CCLW";
+    if (!c_.slash || c_.tail.empty()) return error(c_.major_at, message);
+    const argument* value = nullptr;
+    int direction = 0;
+    for (const argument& a : args_) {
+      const std::string word = lexing::upper(a.text);
+      if (word == "OFF" && args_.size() == 1) b.m_codes.push_back(5);
+      else if (word == "ON" || word == "CLW") direction = 3;
+      else if (word == "CCLW") direction = 4;
+      else if (word == "RPM") continue;
+      else if (word == "SFM" || word == "SMM") return error(a.offset, "constant surface speed is not supported");
+      else if (!value && !a.text.empty() && !is_letter(a.text.front())) value = &a;
+      else return error(a.offset, "unexpected '" + std::string(a.text) + "' after SPINDL");
+    }
+    if (!value && !direction && b.m_codes.empty()) return error(c_.major_at, message);
+    if (value) {
+      double s = 0;
+      if (!number(*value, s)) return;
+      b.spindle_rpm = s;
+    }
+    if (direction) b.m_codes.push_back(direction);
+  }
+
+  /// `LOADTL/n`.
+  void load_tool(block& b) {
+    double t = 0;
+    if (!c_.slash || args_.size() != 1) return error(c_.major_at, "LOADTL needs one tool number");
+    if (!number(args_[0], t)) return;
+    if (t < 0 || t != static_cast<double>(static_cast<long long>(t)))
+      return error(args_[0].offset, "tool number must be a whole number");
+    b.tool = static_cast<long long>(t);
+  }
+};
+
+}  // namespace kin5::program::apt::detail
+
+namespace kin5::program::apt {
+
+/// Reads APT CL data statement by statement: `on_block` receives each block in file order as soon
+/// as it is read; errors go to `diagnostics` (its `parsed` is not touched).
+inline void read_blocks(std::string_view text, const std::string& file_path, read_result& diagnostics,
+                        const block_sink& on_block) {
+  const file_name file(file_path);  // one string for every location in the file
+  bool rapid_pending = false;
+  detail::statement_reader reader(file, rapid_pending, diagnostics.errors);
+  for_each_statement(text, [&](statement&& st) { on_block(reader.read(st)); });
+}
+
+}  // namespace kin5::program::apt

@@ -1,0 +1,164 @@
+/// @file program/apt/writer.hpp
+/// Blocks written as APT CL data, one statement per line, no continuations. Axis-word rotary
+/// angles, arcs and inch programs cannot be written (std::invalid_argument naming the block);
+/// anything else without an APT form becomes a `$$` comment carrying the block's text.
+#pragma once
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "../block.hpp"
+#include "../number.hpp"
+
+namespace kin5::program::apt {
+
+/// Decimals written for each kind of number.
+struct write_options {
+  int linear_decimals = 3;   ///< GOTO x, y, z (mm)
+  int angle_decimals = 3;    ///< unused: APT has no angle words
+  int feed_decimals = 1;     ///< FEDRAT and SPINDL values
+  int vector_decimals = 7;   ///< GOTO i, j, k
+};
+
+/// Writes blocks as APT CL data one at a time, remembering whether a RAPID is pending, so a
+/// program of any length is written in constant memory. `write(program)` below is this writer
+/// applied to every block.
+class writer {
+ public:
+  /// A writer for blocks read from `source` (another dialect's blocks keep their text in `$$`
+  /// comments). Blocks name themselves in messages: `file` is not needed.
+  explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
+      : same_(source == dialect_id::apt), options_(chosen) {
+    static_cast<void>(file);
+  }
+
+  /// Appends the statements of block `b` to `out`. Throws `std::invalid_argument` naming the
+  /// block's `file:line` when it cannot be written in APT.
+  void write(std::string& out, const block& b) {
+    if (b.passthrough) {
+      if (same_) out += b.text + '\n';
+      else out += "$$ " + one_line(b, b.text) + '\n';
+      if (b.comment && !same_) out += "$$ " + one_line(b, *b.comment) + '\n';
+      return;
+    }
+    lines_.clear();
+    foreign_note_ = false;
+    setup(b);
+    machine_functions(b);
+    feed(b);
+    motion(b);
+    if (b.program_end) lines_.push_back("FINI");
+    if (foreign_note_) lines_.insert(lines_.begin(), "$$ " + one_line(b, b.text));
+    if (b.comment) {
+      if (lines_.empty() || (foreign_note_ && lines_.size() == 1)) lines_.push_back("$$ " + one_line(b, *b.comment));
+      else lines_.back() += " $$ " + one_line(b, *b.comment);
+    }
+    if (lines_.empty() && !b.text.empty() && !same_) lines_.push_back("$$ " + one_line(b, b.text));
+    for (const std::string& l : lines_) out += l + '\n';
+  }
+
+ private:
+  bool same_;  // the blocks were read as APT
+  write_options options_;
+  bool rapid_pending_ = false;
+  std::vector<std::string> lines_;  // the block's statements
+  bool foreign_note_ = false;       // something without an APT form: carry the block's text
+
+  [[noreturn]] static void fail(const block& b, const std::string& why) {
+    throw std::invalid_argument(b.where.file + ":" + std::to_string(b.where.line) + ": block cannot be written in APT: " + why);
+  }
+
+  static const std::string& one_line(const block& b, const std::string& s) {
+    if (s.find_first_of("\r\n") != std::string::npos) fail(b, "line break in text");
+    return s;
+  }
+
+  /// PARTNO, UNITS/MM, LOADTL.
+  void setup(const block& b) {
+    if (b.program_begin) {
+      const std::string& name = one_line(b, *b.program_begin);
+      lines_.push_back(name.empty() ? "PARTNO" : name.front() == '/' ? "PARTNO/" + name : "PARTNO " + name);
+    }
+    if (b.metric) {
+      if (!*b.metric) fail(b, "inch units");
+      lines_.push_back("UNITS/MM");
+    }
+    if (b.tool) lines_.push_back("LOADTL/" + std::to_string(*b.tool));
+  }
+
+  /// SPINDL, COOLNT, STOP, OPSTOP from S and the M codes APT has a statement for.
+  void machine_functions(const block& b) {
+    const std::string rpm = b.spindle_rpm ? format_number(*b.spindle_rpm, options_.feed_decimals) : "";
+    bool rpm_written = !b.spindle_rpm;
+    for (int m : b.m_codes) {
+      if (m == 3 || m == 4) {
+        lines_.push_back("SPINDL/" + (rpm_written ? "" : rpm + ",") + (m == 3 ? "CLW" : "CCLW"));
+        rpm_written = true;
+      } else if (m == 5) lines_.push_back("SPINDL/OFF");
+      else if (m == 8) lines_.push_back("COOLNT/ON");
+      else if (m == 7) lines_.push_back("COOLNT/MIST");
+      else if (m == 9) lines_.push_back("COOLNT/OFF");
+      else if (m == 0) lines_.push_back("STOP");
+      else if (m == 1) lines_.push_back("OPSTOP");
+      else if (m == 6 && b.tool) continue;  // LOADTL is the tool change: no M6 beside it
+      else foreign_note_ = true;
+    }
+    if (!rpm_written) lines_.push_back("SPINDL/" + rpm);
+  }
+
+  /// FEDRAT/MMPM,f or FEDRAT/INVERS,f.
+  void feed(const block& b) {
+    if (b.feed) {
+      const bool inverse = b.feed_mode == feed_unit::inverse_time;
+      lines_.push_back(std::string("FEDRAT/") + (inverse ? "INVERS," : "MMPM,") + format_number(*b.feed, options_.feed_decimals));
+    } else if (b.feed_mode) {
+      foreign_note_ = true;
+    }
+    if (b.tcp || !b.kept_words.empty()) foreign_note_ = true;
+  }
+
+  /// RAPID and GOTO/x,y,z[,i,j,k].
+  void motion(const block& b) {
+    const bool rapid = b.motion == motion_kind::rapid || b.feed_rapid;
+    if (b.machine_coordinates && b.moves()) {
+      foreign_note_ = true;
+    } else if (b.moves()) {
+      if (b.axes.has_rotary()) fail(b, "rotary axis words (A, B, C) have no APT form");
+      if (b.arc || b.motion == motion_kind::arc_cw || b.motion == motion_kind::arc_ccw) fail(b, "arcs have no APT form");
+      if (!b.axes.x_mm || !b.axes.y_mm || !b.axes.z_mm) fail(b, "GOTO needs x, y and z");
+      if (rapid && !rapid_pending_) lines_.push_back("RAPID");
+      if (!rapid && rapid_pending_) fail(b, "a linear move cannot follow RAPID");
+      std::string go = "GOTO/" + format_number(*b.axes.x_mm, options_.linear_decimals) + "," +
+                       format_number(*b.axes.y_mm, options_.linear_decimals) + "," +
+                       format_number(*b.axes.z_mm, options_.linear_decimals);
+      if (b.axes.tool_axis) {
+        const vec3& v = *b.axes.tool_axis;
+        go += "," + format_number(v.x, options_.vector_decimals) + "," + format_number(v.y, options_.vector_decimals) +
+              "," + format_number(v.z, options_.vector_decimals);
+      }
+      lines_.push_back(std::move(go));
+      rapid_pending_ = false;
+    } else if (rapid) {
+      lines_.push_back("RAPID");
+      rapid_pending_ = true;
+    } else if (b.motion || b.arc) {
+      foreign_note_ = true;
+    }
+  }
+};
+
+/// Writes `p` as APT CL data, one statement per line. Throws std::invalid_argument naming the
+/// block's `file:line` when a block has rotary axis words, an arc, inch units, a move missing
+/// one of x, y, z, a linear move right after a rapid-only block, or a line break in a text field.
+inline std::string write(const program& p, const write_options& options = {}) {
+  writer w(p.language, p.file, options);
+  std::string out;
+  for (const block& b : p.blocks) w.write(out, b);
+  return out;
+}
+
+}  // namespace kin5::program::apt

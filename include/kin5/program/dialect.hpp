@@ -1,0 +1,110 @@
+/// @file program/dialect.hpp
+/// The NC dialects kin5 reads and writes, as a type list (`dialects`), and the concept each entry
+/// satisfies (`nc_dialect`). Everything that works "for every dialect" — `read`, `write`,
+/// `block_writer`, `guess_dialect` (io.hpp), the dialect law suite, the fuzz targets — folds
+/// over this list, so adding a dialect is one folder `program/<name>/` and one entry here.
+///
+/// A dialect is one type with static members:
+/// | member | what |
+/// |---|---|
+/// | `id` | the value that names it at run time (`program::dialect`) |
+/// | `can` | its `capabilities` (program/dialect_id.hpp) |
+/// | `markers` | an array of `marker`s only it writes, for `guess_dialect` |
+/// | `read_blocks(text, file, diagnostics, on_block)` | its streaming reader |
+/// | `write_options`, `write(program, options)` | its writer's settings, and the whole-program writer |
+/// | `writer` | its block-by-block writer: `writer(source, file, options)`, `write(out, block)` |
+#pragma once
+
+#include <concepts>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+#include "apt/dialect.hpp"
+#include "block.hpp"
+#include "dialect_id.hpp"
+#include "heidenhain/dialect.hpp"
+#include "iso/dialect.hpp"
+#include "siemens/dialect.hpp"
+
+namespace kin5::program {
+
+/// What an entry of `dialects` provides (see the table above).
+template <class D>
+concept nc_dialect = requires(std::string_view text, const std::string& file, read_result& diagnostics,
+                              const block_sink& on_block, const program& p, std::string& out, const block& b,
+                              typename D::writer& w) {
+  { D::id } -> std::convertible_to<dialect_id>;
+  { D::can } -> std::convertible_to<capabilities>;
+  { D::markers.size() } -> std::convertible_to<std::size_t>;
+  { D::markers[0] } -> std::convertible_to<marker>;
+  D::read_blocks(text, file, diagnostics, on_block);
+  { D::write(p, typename D::write_options{}) } -> std::same_as<std::string>;
+  requires std::constructible_from<typename D::writer, dialect_id, std::string, const typename D::write_options&>;
+  w.write(out, b);
+};
+
+/// Every dialect, in the order `kin5 --help` lists them.
+using dialects = std::tuple<siemens::dialect, heidenhain::dialect, iso::dialect, apt::dialect>;
+
+/// How many dialects there are.
+inline constexpr std::size_t dialect_count = std::tuple_size_v<dialects>;
+
+/// Calls `f(std::type_identity<D>{}, index)` for every dialect D of the list, in order.
+template <class F>
+constexpr void for_each_dialect(F&& f) {
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    (f(std::type_identity<std::tuple_element_t<I, dialects>>{}, I), ...);
+  }(std::make_index_sequence<dialect_count>{});
+}
+
+/// `f(std::type_identity<D>{})` for the dialect D whose id is `d`; `otherwise()` if none is.
+template <class F, class Otherwise>
+constexpr auto visit_dialect(dialect d, F&& f, Otherwise&& otherwise) -> decltype(otherwise()) {
+  std::optional<decltype(otherwise())> result;
+  for_each_dialect([&]<class D>(std::type_identity<D> type, std::size_t) {
+    if (!result && D::id == d) result.emplace(f(type));
+  });
+  return result ? std::move(*result) : otherwise();
+}
+
+namespace detail {
+template <class List>
+struct all_dialects;
+template <class... D>
+struct all_dialects<std::tuple<D...>> : std::bool_constant<(nc_dialect<D> && ...)> {};
+
+/// Whether no two entries share an id or a name.
+constexpr bool distinct_ids() {
+  bool distinct = true;
+  for_each_dialect([&]<class A>(std::type_identity<A>, std::size_t i) {
+    for_each_dialect([&]<class B>(std::type_identity<B>, std::size_t j) {
+      if (i != j && (A::id == B::id || name(A::id) == name(B::id))) distinct = false;
+    });
+  });
+  return distinct;
+}
+}  // namespace detail
+
+static_assert(detail::all_dialects<dialects>::value, "every entry of program::dialects is an nc_dialect");
+static_assert(detail::distinct_ids(), "every dialect has its own id and name");
+
+/// The capabilities of dialect `d` (all false for a value that names no dialect).
+constexpr capabilities capabilities_of(dialect d) {
+  return visit_dialect(d, []<class D>(std::type_identity<D>) { return D::can; }, [] { return capabilities{}; });
+}
+
+/// The dialect named `s` ("siemens", "heidenhain", …), if any.
+constexpr std::optional<dialect> parse_dialect(std::string_view s) {
+  std::optional<dialect> found;
+  for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t) {
+    if (name(D::id) == s) found = D::id;
+  });
+  return found;
+}
+
+}  // namespace kin5::program

@@ -1,0 +1,36 @@
+/// @file program/dialect_id.hpp
+/// What every dialect declares of itself, as data: what its writer can express
+/// (`capabilities`) and the text that gives a file away as written in it (`marker`).
+///
+/// Each entry of `program::dialects` (program/dialect.hpp) carries one `capabilities` value and
+/// an array of `marker`s; the translation asks the capabilities (can the target write G93? does it
+/// need a separate circle-centre block?), and `guess_dialect` looks for the markers.
+#pragma once
+
+#include <string_view>
+
+namespace kin5::program {
+
+/// What a dialect's writer can express. Each flag is checked against the writer by the dialect
+/// law suite: a capability that is false makes the writer refuse (or, for TCP switches, note) the
+/// construct; one that is true writes it so that the dialect's reader reads it back.
+struct capabilities {
+  bool cl_data = false;            ///< cutter-location data: tool tip and tool axis, no machine axes (APT)
+  bool inverse_time_feed = false;  ///< feed as 1 / block time (G93, FEDRAT/INVERS)
+  bool tcp_switch = false;         ///< words that switch tool-tip tracking on and off (TRAORI, M128, G43.4)
+  bool rotary_axis_words = false;  ///< A B C axis words
+  bool tool_axis_vectors = false;  ///< a tool-axis vector in a motion block (A3=, TX, G43.5 I J K, GOTO/…,i,j,k)
+  bool arcs = false;               ///< circular moves
+  bool arc_centre_block = false;   ///< an arc's centre is a modal block of its own (Heidenhain CC)
+};
+
+/// Text only one dialect writes, as `guess_dialect` looks for it: an upper-case keyword matched
+/// case-insensitively, either at the start of a block (after an optional block number) or as a
+/// word anywhere in a line (not glued to a letter or digit before it, nor to a digit after it).
+struct marker {
+  enum class place { block_start, anywhere };
+  std::string_view keyword;
+  place where = place::anywhere;
+};
+
+}  // namespace kin5::program

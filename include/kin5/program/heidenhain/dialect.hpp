@@ -1,0 +1,47 @@
+/// @file program/heidenhain/dialect.hpp
+/// Heidenhain conversational (Klartext) programs, as an entry of `program::dialects`: the reader
+/// (lexer.hpp → reader.hpp, motion.hpp), the writer (writer.hpp), and what the dialect declares
+/// of itself. The full description, with examples, is docs/dialects/heidenhain.md.
+///
+/// ```cpp
+/// namespace hh = kin5::program::heidenhain;
+/// auto r = hh::read("15 L X+34.983 Y+118.526 Z+9.1 B+17.067 C+87.479 R0 F1137 M128\n", "part.h");
+/// if (r.ok()) std::string text = hh::write(r.parsed);  // "0 L X+34.983 … M128\n"
+/// ```
+#pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
+
+#include "../block.hpp"
+#include "../dialect_id.hpp"
+#include "reader.hpp"
+#include "writer.hpp"
+
+namespace kin5::program::heidenhain {
+
+/// Reads a Heidenhain conversational program. Never throws on bad input: problems are in
+/// `errors` (and `warnings`), each at the offending word's line and column.
+inline read_result read(std::string_view text, std::string file_name) {
+  return read_whole(dialect_id::heidenhain, text, std::move(file_name), &read_blocks);
+}
+
+/// The Heidenhain conversational dialect: its id, capabilities, file markers, reader and writer.
+struct dialect {
+  static constexpr dialect_id id = dialect_id::heidenhain;
+  static constexpr capabilities can{.tcp_switch = true, .rotary_axis_words = true, .tool_axis_vectors = true,
+                                    .arcs = true, .arc_centre_block = true};
+  static constexpr std::array<marker, 3> markers{{{"BEGIN PGM", marker::place::block_start},
+                                                  {"M128", marker::place::anywhere},
+                                                  {"FUNCTION TCPM", marker::place::anywhere}}};
+  using write_options = heidenhain::write_options;
+  using writer = heidenhain::writer;
+  static void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
+                          const block_sink& on_block) {
+    heidenhain::read_blocks(text, file_name, diagnostics, on_block);
+  }
+  static std::string write(const program& p, const write_options& options) { return heidenhain::write(p, options); }
+};
+
+}  // namespace kin5::program::heidenhain

@@ -1,0 +1,201 @@
+/// @file program/heidenhain/motion.hpp
+/// The Heidenhain motion blocks, read from their words: `L` and `LN` (a straight line, `LN` with a
+/// tool-axis vector `TX TY TZ`), `CC` (a circle centre: two coordinates give the plane, a missing
+/// one comes from the last position), `C` (an arc around the last `CC`) and `CR` (an arc of
+/// radius `R`), with `R0/RL/RR`, `F`, `FMAX`, `FAUTO`, `DR±` and M functions.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "../block.hpp"
+#include "../number.hpp"
+#include "lexer.hpp"
+
+namespace kin5::program::heidenhain::detail {
+
+/// What the reader carries from block to block: the last position (for CC's missing axes), the
+/// working plane, the last circle centre, and the program's name (for END PGM).
+struct reader_state {
+  std::optional<double> last[3];
+  arc_plane plane = arc_plane::xy;
+  std::optional<vec3> centre;
+  std::optional<std::string> begin_name;
+};
+
+/// Diagnostics at offsets of a block's text, and the checks every word goes through.
+class word_checks {
+ public:
+  word_checks(const block_text& text, read_result& out) : t_(text), s_(text.content), scan_(text), out_(out) {}
+
+ protected:
+  const block_text& t_;
+  const std::string& s_;
+  scanner scan_;
+  read_result& out_;
+
+  void error(std::size_t pos, std::string message) { out_.errors.push_back({t_.where(pos), std::move(message)}); }
+  void warning(std::size_t pos, std::string message) { out_.warnings.push_back({t_.where(pos), std::move(message)}); }
+
+  /// Reports a word's number problem; true when the word is usable.
+  bool value_ok(word& w) {
+    if (w.bad) return false;
+    if (w.expression) error(w.pos, "expressions and parameters in axis words are not supported");
+    else if (w.error == number_error::too_large) error(w.pos, "value out of range");
+    else if (!w.malformed.empty()) error(w.pos, "malformed number '" + w.malformed + "'");
+    else if (w.error != number_error::none) error(w.pos, "word '" + w.key + "' has a malformed value");
+    else if (!w.value) error(w.pos, "word '" + w.key + "' has no value");
+    else return true;
+    w.bad = true;
+    return false;
+  }
+
+  /// A whole number that is not negative (a tool or M number) into `n`; false, reported, if not.
+  bool integer_word(word& w, long long& n) {
+    if (!value_ok(w)) return false;
+    if (*w.value != static_cast<double>(static_cast<long long>(*w.value)) || *w.value < 0) {
+      error(w.pos, "word '" + w.key + "' needs a whole number");
+      return false;
+    }
+    n = static_cast<long long>(*w.value);
+    return true;
+  }
+
+  /// M128 / M129 switch TCP; M91 / M92 mean machine coordinates; all others are kept as M codes.
+  static void set_m(block& t, long long m) {
+    if (m == 128) t.tcp = true;
+    else if (m == 129) t.tcp = false;
+    else {
+      if (m == 91 || m == 92) t.machine_coordinates = true;
+      t.m_codes.push_back(static_cast<int>(m));
+    }
+  }
+};
+
+/// Reads one L, LN, C, CC or CR block into `b`.
+class motion_reader : public word_checks {
+ public:
+  motion_reader(const block_text& text, reader_state& state, read_result& out, block& b, std::vector<std::size_t>& stray)
+      : word_checks(text, out), state_(state), b_(b), stray_(stray) {}
+
+  void read(std::size_t i, const std::string& head) {
+    head_ = head;
+    arc_ = head == "C" || head == "CR";
+    std::vector<word> ws = scan_.words(i + head.size(), b_.comment, stray_);
+    if (head != "CC") b_.motion = motion_kind::linear;
+    for (word& w : ws) take(w);
+    if (head == "CC") centre(i);
+    else end_point(i);
+    if (b_.feed && b_.feed_rapid) error(i, "F and FMAX in one block");
+  }
+
+ private:
+  reader_state& state_;
+  block& b_;
+  std::vector<std::size_t>& stray_;
+  std::string head_;
+  bool arc_ = false;
+  std::optional<double> radius_;
+  char direction_ = 0;
+  std::optional<double> axis_[6], tool_axis_[3];
+
+  void take(word& w) {
+    const std::string& key = w.key;
+    if (w.expression) {
+      value_ok(w);
+    } else if (key.empty()) {
+      error(w.pos, w.error == number_error::too_large ? "value out of range" : "number without an address letter");
+    } else if (key.size() == 1 && is_axis_letter(key[0])) {
+      axis_word(w);
+    } else if (key.size() == 2 && key[0] == 'I' && is_axis_letter(key[1])) {
+      error(w.pos, "incremental positioning (" + key + ") is not supported");
+    } else if (head_ == "LN" && key.size() == 2 && key[0] == 'T' && (key[1] == 'X' || key[1] == 'Y' || key[1] == 'Z')) {
+      if (!value_ok(w)) return;
+      const std::size_t a = static_cast<std::size_t>(key[1] - 'X');
+      if (tool_axis_[a]) error(w.pos, "word '" + key + "' given twice");
+      else tool_axis_[a] = *w.value;
+    } else if (head_ == "LN" && key.size() == 2 && key[0] == 'N' && (key[1] == 'X' || key[1] == 'Y' || key[1] == 'Z')) {
+      if (value_ok(w)) b_.kept_words.push_back(w.written);
+    } else if (head_ == "CC") {
+      error(w.pos, "unknown word '" + w.written + "'");
+    } else {
+      other_word(w);
+    }
+  }
+
+  void axis_word(word& w) {
+    if (!value_ok(w)) return;
+    const std::size_t a = std::string_view("XYZABC").find(w.key[0]);
+    if (axis_[a]) return error(w.pos, "axis '" + w.key + "' given twice");
+    axis_[a] = *w.value;
+  }
+
+  /// R, R0, RL/RR, DR±, F, FMAX, FAUTO, M.
+  void other_word(word& w) {
+    const std::string& key = w.key;
+    const bool bare = !w.value && !w.sign;
+    if (key == "R" && head_ == "CR" && !radius_ && !w.sign) {
+      if (value_ok(w)) radius_ = *w.value;
+    } else if (key == "R" && w.value && *w.value == 0 && w.error == number_error::none) {
+      b_.kept_words.push_back("R0");
+    } else if ((key == "RL" || key == "RR") && bare && w.error == number_error::none) {
+      b_.kept_words.push_back(key);
+    } else if (key == "DR" && arc_ && w.sign && !direction_) {
+      direction_ = w.sign;
+    } else if (key == "F") {
+      if (value_ok(w)) b_.feed = *w.value;
+    } else if (key == "FMAX" && bare) {
+      b_.feed_rapid = true;
+      b_.motion = arc_ ? b_.motion : motion_kind::rapid;
+    } else if (key == "FAUTO" && bare) {
+      b_.kept_words.push_back(key);
+    } else if (key == "M") {
+      long long m = 0;
+      if (integer_word(w, m)) set_m(b_, m);
+    } else {
+      error(w.pos, "unknown word '" + (w.written.empty() ? key : w.written) + "'");
+    }
+  }
+
+  /// CC: two coordinates give the plane; missing ones come from the last position.
+  void centre(std::size_t i) {
+    const int given = (axis_[0] ? 1 : 0) + (axis_[1] ? 1 : 0) + (axis_[2] ? 1 : 0);
+    if (axis_[3] || axis_[4] || axis_[5]) error(i, "CC takes linear axes only");
+    if (given == 3) error(i, "CC takes at most two coordinates");
+    if (given == 2) state_.plane = !axis_[2] ? arc_plane::xy : !axis_[1] ? arc_plane::zx : arc_plane::yz;
+    vec3 c{};
+    double* cs[3] = {&c.x, &c.y, &c.z};
+    for (std::size_t a = 0; a < 3; ++a) {
+      if (axis_[a]) *cs[a] = *axis_[a];
+      else if (state_.last[a]) *cs[a] = *state_.last[a];
+      else if (given < 3) warning(i, std::string("CC: last ") + "XYZ"[a] + " position unknown, 0 assumed");
+    }
+    b_.arc = arc_words{state_.plane, c, std::nullopt};
+    state_.centre = c;
+  }
+
+  /// L, LN, C, CR: the end point, the tool-axis vector, and the arc.
+  void end_point(std::size_t i) {
+    axis_words& ax = b_.axes;
+    ax.x_mm = axis_[0], ax.y_mm = axis_[1], ax.z_mm = axis_[2];
+    ax.a_deg = axis_[3], ax.b_deg = axis_[4], ax.c_deg = axis_[5];
+    if (tool_axis_[0] || tool_axis_[1] || tool_axis_[2])
+      ax.tool_axis = vec3{tool_axis_[0].value_or(0.0), tool_axis_[1].value_or(0.0), tool_axis_[2].value_or(0.0)};
+    if (!arc_) return;
+    b_.motion = direction_ == '-' ? motion_kind::arc_cw : motion_kind::arc_ccw;
+    if (!direction_) error(i, "arc needs a direction (DR+ or DR-)");
+    if (head_ == "CR") {
+      if (!radius_) error(i, "CR needs a radius (R)");
+      b_.arc = arc_words{state_.plane, std::nullopt, radius_};
+    } else {
+      if (!state_.centre) error(i, "arc C needs a circle centre (CC) before it");
+      b_.arc = arc_words{state_.plane, state_.centre, std::nullopt};
+    }
+  }
+};
+
+}  // namespace kin5::program::heidenhain::detail

@@ -1,0 +1,324 @@
+/// @file program/heidenhain/reader.hpp
+/// The second stage of the Heidenhain reader: a block's words (lexer.hpp) become a `block`, by
+/// the block's keyword — `L` `LN` `C` `CC` `CR` (motion.hpp), `TOOL CALL`, M lines,
+/// `BEGIN PGM`/`END PGM … MM`, `;` and `*` comments, `FUNCTION TCPM`/`FUNCTION RESET TCPM`.
+/// `BLK FORM`, cycles and other lines without axis words pass through. Rejected: Q parameters in
+/// axis words, incremental `IX`…, INCH programs, active frame changes (`PLANE SPATIAL`…,
+/// `CYCL DEF 7/8/10/11/19/26`, `TRANS`). Block numbers are kept as written (repeated or missing
+/// is fine).
+#pragma once
+
+#include <charconv>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "../block.hpp"
+#include "../lexing.hpp"
+#include "../number.hpp"
+#include "../text.hpp"
+#include "lexer.hpp"
+#include "motion.hpp"
+
+namespace kin5::program::heidenhain::detail {
+
+/// Reads one block: the keyword decides which words it takes.
+class block_reader : public word_checks {
+ public:
+  block_reader(const block_text& text, reader_state& state, read_result& out)
+      : word_checks(text, out), state_(state) {}
+
+  block read() {
+    std::size_t i = scan_.skip_spaces(0);
+    b_.text = t_.raw;
+    b_.where = t_.where(i);
+    control_bytes(i);
+    i = block_number(i);
+    dispatch(i);
+    if (!b_.passthrough) {
+      for (std::size_t k : stray_) stray_error(k);
+      if (b_.axes.x_mm) state_.last[0] = b_.axes.x_mm;
+      if (b_.axes.y_mm) state_.last[1] = b_.axes.y_mm;
+      if (b_.axes.z_mm) state_.last[2] = b_.axes.z_mm;
+    }
+    return std::move(b_);
+  }
+
+ private:
+  reader_state& state_;
+  block b_;
+  std::vector<std::size_t> stray_;  // bytes that start no word: errors unless the block passes through
+
+  void stray_error(std::size_t k) {
+    const char c = s_[k];
+    if (lexing::is_control(c)) return;  // reported with the control bytes
+    error(k, static_cast<unsigned char>(c) >= 0x80 ? "unexpected byte " + lexing::hex_byte(c, true)
+                                                   : std::string("unexpected character '") + c + "'");
+  }
+
+  /// Control bytes outside comments (and outside `*` section lines), one diagnostic each.
+  void control_bytes(std::size_t i) {
+    std::size_t k = i;
+    while (k < s_.size() && is_digit(s_[k])) ++k;
+    if (scan_.skip_spaces(k) < s_.size() && s_[scan_.skip_spaces(k)] == '*') return;
+    for (k = 0; k < s_.size() && s_[k] != ';'; ++k)
+      if (lexing::is_control(s_[k])) error(k, "unexpected byte " + lexing::hex_byte(s_[k], true));
+  }
+
+  std::size_t block_number(std::size_t i) {
+    if (i >= s_.size() || !is_digit(s_[i])) return i;
+    std::size_t k = i;
+    while (k < s_.size() && is_digit(s_[k])) ++k;
+    long long n = 0;
+    const auto r = std::from_chars(s_.data() + i, s_.data() + k, n);
+    if (r.ec != std::errc{}) error(i, "block number out of range");
+    else b_.number = n;
+    return scan_.skip_spaces(k);
+  }
+
+  void dispatch(std::size_t i) {
+    const std::string head = scan_.letters(i);
+    if (i >= s_.size()) return;  // a block number alone
+    if (s_[i] == ';' || s_[i] == '*') {
+      b_.comment = s_.substr(i + 1);
+    } else if (auto begin = scan_.keywords(i, {"BEGIN", "PGM"})) {
+      program_line(i, *begin, true);
+    } else if (auto end = scan_.keywords(i, {"END", "PGM"})) {
+      program_line(i, *end, false);
+    } else if (auto call = scan_.keywords(i, {"TOOL", "CALL"})) {
+      tool_call(*call);
+    } else if (head == "L" || head == "LN" || head == "C" || head == "CC" || head == "CR") {
+      motion_reader(t_, state_, out_, b_, stray_).read(i, head);
+    } else if (head == "M" && i + 1 < s_.size() && (is_digit(s_[i + 1]) || is_space(s_[i + 1]))) {
+      m_line(i);
+    } else if (auto f = scan_.keywords(i, {"FUNCTION", "TCPM"})) {
+      function_tcpm(*f);
+    } else if (auto r = scan_.keywords(i, {"FUNCTION", "RESET", "TCPM"})) {
+      b_.tcp = false;
+      const std::size_t c = scan_.skip_spaces(*r);
+      if (c < s_.size() && s_[c] == ';') b_.comment = s_.substr(c + 1);
+      else if (c < s_.size()) b_.passthrough = true, b_.tcp.reset();
+    } else if (auto cycle = scan_.keywords(i, {"CYCL", "DEF"})) {
+      cycle_definition(i, *cycle);
+    } else {
+      other(i, head);
+    }
+  }
+
+  /// `BEGIN PGM name MM`, `END PGM name MM`.
+  void program_line(std::size_t i, std::size_t after, bool begin) {
+    const std::size_t p = scan_.skip_spaces(after);
+    const std::size_t e = scan_.run_end(p);
+    const std::string name = s_.substr(p, e - p);
+    const std::size_t u = scan_.skip_spaces(e);
+    const std::size_t ue = scan_.run_end(u);
+    const std::string unit = t_.upper.substr(u, ue - u);
+    if (name.empty() || unit.empty()) {
+      error(i, std::string(begin ? "BEGIN" : "END") + " PGM needs a name and a unit");
+    } else if (unit == "INCH") {
+      error(u, "inch programs are not supported");
+      b_.metric = false;
+    } else if (unit != "MM") {
+      error(u, "unknown unit '" + s_.substr(u, ue - u) + "'");
+    } else {
+      b_.metric = true;
+    }
+    if (!name.empty() && begin) {
+      b_.program_begin = name;
+      state_.begin_name = name;
+    } else if (!name.empty()) {
+      b_.program_end = name;
+      if (state_.begin_name && *state_.begin_name != name)
+        warning(p, "END PGM name '" + name + "' differs from BEGIN PGM '" + *state_.begin_name + "'");
+    }
+    const std::size_t c = scan_.skip_spaces(ue);
+    if (c < s_.size() && s_[c] == ';') b_.comment = s_.substr(c + 1);
+  }
+
+  /// `TOOL CALL 5 Z S6000 F… DL… DR…`; anything else passes through.
+  void tool_call(std::size_t after) {
+    std::vector<word> ws = scan_.words(after, b_.comment, stray_);
+    bool understood = !ws.empty();
+    block t = b_;
+    for (word& w : ws) {
+      if (w.key.empty() && w.value && !t.tool && !t.spindle_rpm && t.kept_words.empty()) {
+        long long n = 0;
+        if (!integer_word(w, n)) understood = false;
+        t.tool = n;
+      } else if (w.key.size() == 1 && (w.key == "X" || w.key == "Y" || w.key == "Z") && !w.value && !w.sign &&
+                 !w.expression && w.error == number_error::none) {
+        t.kept_words.push_back(w.key);
+      } else if (w.key == "S" && w.value && !t.spindle_rpm) {
+        t.spindle_rpm = *w.value;
+      } else if (w.key == "F" && w.value && !t.feed) {
+        t.feed = *w.value;
+      } else if ((w.key == "DL" || w.key == "DR" || w.key == "DR2") && w.value) {
+        t.kept_words.push_back(w.written);
+      } else {
+        understood = false;
+      }
+    }
+    if (!understood || !(t.tool || t.spindle_rpm)) {
+      b_.comment.reset();
+      b_.passthrough = true;
+      return;
+    }
+    b_ = std::move(t);
+    for (const std::string& w : b_.kept_words)  // the tool axis sets the working plane
+      if (w == "X" || w == "Y" || w == "Z") state_.plane = w == "Z" ? arc_plane::xy : w == "Y" ? arc_plane::zx : arc_plane::yz;
+  }
+
+  /// A line of M functions; with other words it passes through (axis words are an error).
+  void m_line(std::size_t i) {
+    std::vector<word> ws = scan_.words(i, b_.comment, stray_);
+    block m = b_;
+    bool understood = true;
+    for (word& w : ws) {
+      long long n = 0;
+      if (w.key == "M" && w.value && *w.value >= 0 && *w.value <= 9999 &&
+          *w.value == static_cast<double>(static_cast<long long>(*w.value)) && integer_word(w, n)) {
+        set_m(m, n);
+      } else {
+        understood = false;
+      }
+    }
+    if (understood) {
+      b_ = std::move(m);
+      return;
+    }
+    for (const word& w : ws)
+      if (!w.key.empty() && w.key.size() <= 2 && is_axis_letter(w.key.back()) && (w.key.size() == 1 || w.key[0] == 'I') &&
+          (w.value || w.expression || w.error != number_error::none)) {
+        error(w.pos, "axis word '" + w.key + "' without a motion keyword");
+        break;
+      }
+    b_.comment.reset();
+    b_.passthrough = true;
+  }
+
+  /// `FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS`: TCP on, the option pairs kept.
+  void function_tcpm(std::size_t k) {
+    b_.tcp = true;
+    std::vector<std::string> tokens;
+    std::vector<std::size_t> at;
+    for (;;) {
+      k = scan_.skip_spaces(k);
+      if (k >= s_.size()) break;
+      if (s_[k] == ';') {
+        b_.comment = s_.substr(k + 1);
+        break;
+      }
+      const std::size_t e = scan_.run_end(k);
+      tokens.push_back(t_.upper.substr(k, e - k));
+      at.push_back(k);
+      k = e;
+    }
+    for (std::size_t t = 0; t < tokens.size(); t += 2) {
+      std::string kw = tokens[t] + (t + 1 < tokens.size() ? " " + tokens[t + 1] : "");
+      if (kw == "AXIS SPAT") error(at[t], "FUNCTION TCPM AXIS SPAT is not supported");
+      b_.kept_words.push_back(std::move(kw));
+    }
+  }
+
+  /// `CYCL DEF n.m …`: passes through; the frame cycles (7, 8, 10, 11, 19, 26) are errors unless
+  /// every value is the identity.
+  void cycle_definition(std::size_t i, std::size_t after) {
+    const std::size_t k = scan_.skip_spaces(after);
+    std::size_t e = k;
+    while (e < s_.size() && is_digit(s_[e])) ++e;
+    const std::string number = s_.substr(k, e - k);
+    std::string part;
+    if (e < s_.size() && s_[e] == '.') {
+      std::size_t p = e + 1;
+      while (p < s_.size() && is_digit(s_[p])) ++p;
+      part = s_.substr(e + 1, p - e - 1);
+      e = p;
+    }
+    b_.passthrough = true;
+    const bool frame = number == "7" || number == "8" || number == "10" || number == "11" || number == "19" ||
+                       number == "26";
+    if (number == "247") warning(i, "CYCL DEF 247 selects a datum preset; passed through unchanged");
+    const double identity = (number == "11" || number == "26") ? 1.0 : 0.0;
+    if (frame && !part.empty() && part != "0" && cycle_values_active(e, identity))
+      error(i, "CYCL DEF " + number + " changes the working frame; kin5 does not model frame changes");
+  }
+
+  /// Whether any value of a frame cycle from `p` on differs from `identity` (0, or scale 1).
+  bool cycle_values_active(std::size_t p, double identity) const {
+    bool active = false;
+    while (p < s_.size() && s_[p] != ';') {
+      if (is_letter(s_[p]) && (p == 0 || !is_letter(s_[p - 1]))) {
+        const std::string key = scan_.letters(p);
+        const std::size_t v = p + key.size();
+        if (key == "F" || key == "ABST" || key == "DATUM" || key == "SHIFT" || key == "WORKING" || key == "PLANE" ||
+            key == "ROTATION" || key == "SCALING" || key == "IROT") {
+          p = v;
+        } else if (starts_number(s_, v)) {
+          const parsed_number n = read_number(std::string_view(s_).substr(v));
+          if (n.error != number_error::none || n.value != identity) active = true;
+          p = v + std::max<std::size_t>(n.length, 1);
+        } else {
+          active = true;  // a mirrored axis, or a parameter
+          p = v;
+        }
+        continue;
+      }
+      if (s_[p] == '#' || s_[p] == 'Q') active = true;
+      ++p;
+    }
+    return active;
+  }
+
+  /// PLANE, TRANS, BLK, the contour functions kin5 does not read, stray axis words, the rest.
+  void other(std::size_t i, const std::string& head) {
+    if (head == "PLANE" || head == "TRANS") {
+      const std::size_t k = scan_.skip_spaces(i + head.size());
+      const std::string kind = scan_.letters(k);
+      const bool reset = head == "PLANE" ? kind == "RESET" : scan_.letters(scan_.skip_spaces(k + kind.size())) == "RESET";
+      if (!reset) error(i, head + " " + kind + " changes the working frame; kin5 does not model frame changes");
+      b_.passthrough = true;
+    } else if (head == "BLK") {
+      b_.passthrough = true;
+    } else if (head == "CT" || head == "CP" || head == "LP" || head == "CTP" || head == "RND" || head == "CHF" ||
+               head == "APPR" || head == "DEP" || head == "FL" || head == "FLT" || head == "FC" || head == "FCT" ||
+               head == "FPOL" || head == "CCA") {
+      error(i, "'" + head + "' is not supported");
+    } else if (head.size() == 1 && is_axis_letter(head[0]) && scan_.has_axis_word(i)) {
+      error(i, "axis word '" + head + "' without a motion keyword");
+    } else if (head.size() == 2 && head[0] == 'I' && is_axis_letter(head[1]) && scan_.has_axis_word(i)) {
+      error(i, "incremental positioning (" + head + ") is not supported");
+    } else if (scan_.has_axis_word(i)) {
+      error(i, "unknown keyword '" + t_.upper.substr(i, scan_.run_end(i) - i) + "' in a block with axis words");
+      b_.passthrough = true;
+    } else {
+      b_.passthrough = true;
+    }
+  }
+};
+
+}  // namespace kin5::program::heidenhain::detail
+
+namespace kin5::program::heidenhain {
+
+/// Reads a Heidenhain conversational program block by block: `on_block` receives each block in
+/// file order as soon as it is read; errors and warnings go to `out` (its `parsed` is not
+/// touched).
+inline void read_blocks(std::string_view text, const std::string& file_path, read_result& out,
+                        const block_sink& on_block) {
+  const file_name file(file_path);  // one string for every location in the file
+  detail::reader_state state;
+  const std::vector<text_line> lines = split_lines(text);
+  for (std::size_t li = 0; li < lines.size(); ++li) {
+    if (lexing::is_blank(lines[li].text)) continue;
+    block_text source;
+    source.file = file;
+    li = detail::join_block(lines, li, source);
+    on_block(detail::block_reader(source, state, out).read());
+  }
+}
+
+}  // namespace kin5::program::heidenhain

@@ -1,0 +1,310 @@
+/// @file program/heidenhain/writer.hpp
+/// Blocks written as Heidenhain conversational text: one line per block (a `TOOL CALL` or `CC`
+/// line first when another dialect's block needs one), numbered 0, 1, 2, … as the control
+/// requires; source block numbers are not written. A block without coordinates is never an `L`
+/// (the control's L needs its end point): a feed-only block's F goes to the next move without an
+/// F, a rapid-only block's FMAX to the next move; a block left with nothing Heidenhain can say
+/// (APT `UNITS/MM`, `RAPID`, a read `L F800`) becomes a comment carrying its source text.
+/// Round trip: `read(write(p))` equals `p` except `where`, `text` and `number`, for programs whose
+/// L blocks all have coordinates.
+#pragma once
+
+#include <algorithm>
+#include <charconv>
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "../block.hpp"
+#include "../lexing.hpp"
+#include "../number.hpp"
+#include "../text.hpp"
+
+namespace kin5::program::heidenhain {
+
+/// Decimals written for each kind of number.
+struct write_options {
+  int linear_decimals = 3;  ///< X Y Z, CC, CR radius (mm)
+  int angle_decimals = 3;   ///< A B C (degrees)
+  int feed_decimals = 1;    ///< F (mm/min) and S (1/min)
+  int vector_decimals = 7;  ///< TX TY TZ
+};
+
+/// Writes blocks as Heidenhain conversational text one at a time, numbering them from 0 and
+/// remembering the working plane, the last circle centre and the program name, so a program of
+/// any length is written in constant memory. `write(program)` below is this writer applied to
+/// every block.
+class writer {
+ public:
+  /// A writer for blocks read from `source` (another dialect's passthrough text and kept words
+  /// go into comments); `file` names the program in messages for blocks without a location.
+  explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
+      : same_(source == dialect_id::heidenhain), program_file_(std::move(file)), options_(chosen) {}
+
+  /// Appends the lines of block `b` to `out`. Throws `std::invalid_argument` naming the block
+  /// (`file:line`) when it cannot be written in Heidenhain.
+  void write(std::string& out, const block& b) {
+    const std::size_t bi = index_++;
+    line_count_ = 0;
+    if (b.passthrough) return passthrough(out, b);
+    if (b.metric && !*b.metric) fail(b, bi, "inch units");
+    if (b.feed_mode == feed_unit::inverse_time) fail(b, bi, "inverse-time feed (G93)");
+    if (b.program_begin) {
+      begin_name_ = program_name(b.program_begin);
+      add("BEGIN PGM " + *begin_name_ + " MM");
+    }
+    const bool dropped = carry_feed(b);
+    const bool moves = is_move(b);
+    std::vector<std::string> kept = b.kept_words;  // written verbatim (same dialect) or into the comment
+    std::vector<std::string> foreign;
+    if (!same_) foreign.swap(kept);
+    if (b.tool || b.spindle_rpm) tool_call(b, moves, kept, bi);
+    const std::string m_words = m_functions(b);
+    const bool arc = b.motion == motion_kind::arc_cw || b.motion == motion_kind::arc_ccw;
+    if (b.arc && b.arc->centre_mm && !b.motion && b.axes.empty()) {
+      add(cc_line(*b.arc));
+    } else if (moves) {
+      motion_line(b, kept, m_words, bi);
+    } else if (b.tcp && *b.tcp && same_ && !kept.empty() && b.m_codes.empty() && !b.machine_coordinates) {
+      std::string l = "FUNCTION TCPM";
+      for (const std::string& w : kept) l += " " + w;
+      kept.clear();
+      add(l);
+    } else if (!m_words.empty()) {
+      add(std::string_view(m_words).substr(1));
+    }
+    if (b.arc && b.arc->centre_mm && !arc && (b.motion || !b.axes.empty()))
+      fail(b, bi, "circle centre on a block that is not an arc");
+    if (b.program_end) add("END PGM " + program_name(b.program_end) + " MM");
+    kept.insert(kept.end(), foreign.begin(), foreign.end());
+    emit(out, b, kept, dropped);
+  }
+
+ private:
+  bool same_;  // the blocks were read as Heidenhain
+  std::string program_file_;
+  write_options options_;
+  std::size_t index_ = 0;  // of the next block, for messages about blocks without a location
+  long long number_ = 0;   // the next block number written
+  arc_plane plane_ = arc_plane::xy;
+  std::optional<vec3> centre_;
+  std::optional<std::string> begin_name_;
+  // From a coordinate-less block of another dialect, for the next move that has no F of its own.
+  std::optional<double> pending_feed_;
+  bool pending_rapid_ = false;
+  std::vector<std::string> lines_;  // the block's lines, reused from block to block (see `add`)
+  std::size_t line_count_ = 0;
+  std::string line_;                // the motion line being built
+
+  [[noreturn]] void fail(const block& b, std::size_t bi, const std::string& what) const {
+    const std::string at = b.where.line ? b.where.file + ":" + std::to_string(b.where.line)
+                                        : (program_file_.empty() ? "block " : program_file_ + ": block ") +
+                                              std::to_string(bi);
+    throw std::invalid_argument(at + ": block cannot be written in heidenhain: " + what);
+  }
+
+  void add(std::string_view text) {
+    if (line_count_ == lines_.size()) lines_.emplace_back();
+    lines_[line_count_++].assign(text);
+  }
+
+  /// Appends ` X+1.5` to a line.
+  static void put(std::string& l, std::string_view letters, double v, int decimals) {
+    l += ' ';
+    l.append(letters.data(), letters.size());
+    append_number(l, v, decimals, true);
+  }
+
+  /// A passthrough block: its text (same dialect, without its block number) or a comment.
+  void passthrough(std::string& out, const block& b) {
+    std::string body = b.text;
+    if (same_) {
+      std::size_t k = lexing::skip_blanks(body, 0);
+      std::size_t d = k;
+      while (d < body.size() && is_digit(body[d])) ++d;
+      if (d > k) k = lexing::skip_blanks(body, d);
+      body.erase(0, k);
+    } else {
+      std::replace(body.begin(), body.end(), '\n', ' ');
+      std::replace(body.begin(), body.end(), '\r', ' ');
+      body = ";" + body;
+    }
+    out += std::to_string(number_++) + " " + body + "\n";
+  }
+
+  /// A program name: one word (`program_end` of a G-code dialect may hold its end word, no name).
+  std::string program_name(const std::optional<std::string>& n) const {
+    const bool named = n && !n->empty() && *n != "M2" && *n != "M30";
+    std::string name = named ? *n : begin_name_.value_or("");
+    if (name.empty()) name = "PGM";
+    for (char& c : name)  // blanks and `;` become `_`
+      if (is_space(c) || c == ';' || lexing::is_control(c)) c = '_';
+    return name;
+  }
+
+  /// A block that moves: coordinates, or an arc, with a motion word, a rapid or a feed.
+  static bool is_move(const block& b) {
+    const bool coordless = b.axes.empty() && !b.arc;
+    return !coordless && (b.motion || !b.axes.empty() || b.feed_rapid || (b.feed && !(b.tool || b.spindle_rpm)));
+  }
+
+  /// An L needs end-point coordinates: a feed-only or rapid-only block (APT `FEDRAT/…`, `RAPID`;
+  /// a lone G0 or F; a read `L F800`) is not written as `L F…` / `L FMAX`. Its F, modal here too,
+  /// goes to the next move without one; its rapid to the next move as FMAX. True for such a block.
+  bool carry_feed(const block& b) {
+    const bool coordless = b.axes.empty() && !b.arc;
+    if (!coordless) return false;
+    if (b.feed && !(b.tool || b.spindle_rpm)) pending_feed_ = b.feed;
+    if (b.motion == motion_kind::rapid || b.feed_rapid) pending_rapid_ = true;
+    else if (b.motion || b.feed) pending_rapid_ = false;
+    return b.motion || b.feed_rapid || (b.feed && !(b.tool || b.spindle_rpm));
+  }
+
+  void tool_call(const block& b, bool moves, std::vector<std::string>& kept, std::size_t bi) {
+    std::string l = "TOOL CALL";
+    if (b.tool) {
+      if (*b.tool < 0) fail(b, bi, "tool number " + std::to_string(*b.tool) + " cannot be written");
+      l += " " + std::to_string(*b.tool);
+    }
+    if (!moves) {
+      for (const std::string& w : kept) {
+        l += " " + w;
+        if (w == "Z") plane_ = arc_plane::xy;
+        if (w == "Y") plane_ = arc_plane::zx;
+        if (w == "X") plane_ = arc_plane::yz;
+      }
+      kept.clear();
+    }
+    if (b.spindle_rpm) l += " S" + format_number(*b.spindle_rpm, options_.feed_decimals);
+    if (b.feed && !moves) l += " F" + format_number(*b.feed, options_.feed_decimals);
+    add(l);
+  }
+
+  /// ` M3 M8 M91 M128`: the block's M functions, M91 for machine coordinates, M128/M129 for TCP.
+  std::string m_functions(const block& b) const {
+    std::string m_words;
+    for (int m : b.m_codes)
+      if (!(m == 6 && b.tool && !same_)) m_words += " M" + std::to_string(m);  // TOOL CALL is the change: no M6 twice
+    if (b.machine_coordinates &&
+        std::find_if(b.m_codes.begin(), b.m_codes.end(), [](int m) { return m == 91 || m == 92; }) == b.m_codes.end())
+      m_words += " M91";
+    if (b.tcp) m_words += *b.tcp ? " M128" : " M129";
+    return m_words;
+  }
+
+  std::string cc_line(const arc_words& a) {
+    const vec3& c = *a.centre_mm;
+    std::string l = "CC";
+    if (a.plane != arc_plane::yz) put(l, "X", c.x, options_.linear_decimals);
+    if (a.plane != arc_plane::zx) put(l, "Y", c.y, options_.linear_decimals);
+    if (a.plane != arc_plane::xy) put(l, "Z", c.z, options_.linear_decimals);
+    plane_ = a.plane;
+    centre_ = c;
+    return l;
+  }
+
+  /// The L, LN, C or CR line of a move (with a CC line first when the centre is new).
+  void motion_line(const block& b, std::vector<std::string>& kept, const std::string& m_words, std::size_t bi) {
+    std::string& l = line_;
+    const bool arc = b.motion == motion_kind::arc_cw || b.motion == motion_kind::arc_ccw;
+    l = arc ? arc_keyword(b, bi) : b.axes.tool_axis || has_normal(kept) ? "LN" : "L";
+    const axis_words& a = b.axes;
+    if (a.x_mm) put(l, "X", *a.x_mm, options_.linear_decimals);
+    if (a.y_mm) put(l, "Y", *a.y_mm, options_.linear_decimals);
+    if (a.z_mm) put(l, "Z", *a.z_mm, options_.linear_decimals);
+    if (a.a_deg) put(l, "A", *a.a_deg, options_.angle_decimals);
+    if (a.b_deg) put(l, "B", *a.b_deg, options_.angle_decimals);
+    if (a.c_deg) put(l, "C", *a.c_deg, options_.angle_decimals);
+    for (const std::string& w : kept)
+      if (!w.empty() && to_upper(w[0]) == 'N') l += " " + w;
+    if (a.tool_axis) {
+      put(l, "TX", a.tool_axis->x, options_.vector_decimals);
+      put(l, "TY", a.tool_axis->y, options_.vector_decimals);
+      put(l, "TZ", a.tool_axis->z, options_.vector_decimals);
+    }
+    if (arc && b.arc->radius_mm) put(l, "R", *b.arc->radius_mm, options_.linear_decimals);
+    if (arc) l += b.motion == motion_kind::arc_cw ? " DR-" : " DR+";
+    for (const std::string& w : kept)
+      if (w.empty() || to_upper(w[0]) != 'N') l += " " + w;
+    kept.clear();
+    feed_word(l, b, bi);
+    l += m_words;
+    add(l);
+  }
+
+  static bool has_normal(const std::vector<std::string>& kept) {
+    return std::any_of(kept.begin(), kept.end(), [](const std::string& w) { return !w.empty() && to_upper(w[0]) == 'N'; });
+  }
+
+  /// `C` (with a CC line first when the centre or plane is new) or `CR`.
+  std::string arc_keyword(const block& b, std::size_t bi) {
+    if (!b.arc || (!b.arc->centre_mm && !b.arc->radius_mm)) fail(b, bi, "arc has neither a centre nor a radius");
+    if (b.axes.tool_axis) fail(b, bi, "an arc cannot carry a tool-axis vector");
+    if (b.arc->radius_mm) {
+      if (b.arc->plane != plane_) fail(b, bi, "radius arc outside the working plane");
+      return "CR";
+    }
+    if (!centre_ || !(*centre_ == *b.arc->centre_mm) || plane_ != b.arc->plane) add(cc_line(*b.arc));
+    return "C";
+  }
+
+  /// ` F…`, ` FMAX`, or the F carried from a coordinate-less block.
+  void feed_word(std::string& l, const block& b, std::size_t bi) {
+    if (b.feed && (b.feed_rapid || b.motion == motion_kind::rapid)) fail(b, bi, "block has both a feed and rapid traverse");
+    const bool rapid = b.feed_rapid || b.motion == motion_kind::rapid || (pending_rapid_ && !b.motion && !b.feed);
+    if (b.feed) l += " F", append_number(l, *b.feed, options_.feed_decimals);
+    else if (rapid) l += " FMAX";
+    else if (pending_feed_) l += " F", append_number(l, *pending_feed_, options_.feed_decimals);
+    if (!rapid) pending_feed_.reset();
+    pending_rapid_ = false;
+  }
+
+  /// The block's lines, numbered, the comment (and kept words) on the last.
+  void emit(std::string& out, const block& b, const std::vector<std::string>& kept, bool dropped_move) {
+    std::string comment = b.comment.value_or("");
+    std::replace(comment.begin(), comment.end(), '\n', ' ');
+    std::replace(comment.begin(), comment.end(), '\r', ' ');
+    if (!kept.empty()) {
+      std::string k;
+      for (const std::string& w : kept) k += (k.empty() ? "" : " ") + w;
+      comment += (b.comment ? " " : "") + std::string("kept: ") + k;
+    }
+    bool has_comment = b.comment || !kept.empty();
+    // A block that says something (units, a feed mode, a move without coordinates) with nothing
+    // Heidenhain can write for it — APT `UNITS/MM`, a lone `RAPID` — becomes its source text as a
+    // comment; a translated program's blocks keep their source text, whatever the dialect.
+    const bool unsaid = !same_ || dropped_move || b.metric || b.feed_mode;
+    if (line_count_ == 0 && !has_comment && unsaid && !b.text.empty()) {
+      std::size_t k = 0;  // without a Heidenhain block number
+      if (same_)
+        while (k < b.text.size() && (is_digit(b.text[k]) || is_space(b.text[k]))) ++k;
+      comment = b.text.substr(k);
+      std::replace(comment.begin(), comment.end(), '\n', ' ');
+      std::replace(comment.begin(), comment.end(), '\r', ' ');
+      has_comment = true;
+    }
+    if (line_count_ == 0) add("");
+    for (std::size_t k = 0; k < line_count_; ++k) {
+      char digits[24];
+      out.append(digits, std::to_chars(digits, digits + sizeof digits, number_++).ptr);
+      if (!lines_[k].empty()) out += ' ', out += lines_[k];
+      if (k + 1 == line_count_ && has_comment) out += " ;", out += comment;
+      out += '\n';
+    }
+  }
+};
+
+/// Writes `p` as a Heidenhain conversational program, blocks numbered from 0.
+/// Throws std::invalid_argument naming the block (`file:line`) when a block cannot be written.
+inline std::string write(const program& p, const write_options& options = {}) {
+  writer w(p.language, p.file, options);
+  std::string out;
+  for (const block& b : p.blocks) w.write(out, b);
+  return out;
+}
+
+}  // namespace kin5::program::heidenhain

@@ -1,0 +1,118 @@
+/// @file program/iso/lexer.hpp
+/// The first stage of the ISO / Fanuc reader: one line split into address words (`X-450.`,
+/// `G43.4`, `x 10`: a letter, optional blanks, a number) and comments (`( … )` and `;` to the
+/// end of the line). The first problem stops the line: a parameter or expression (`#`, `[`), a
+/// number without a letter, a malformed number, a stray byte. What a word means is the reader's.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "../lexing.hpp"
+#include "../number.hpp"
+#include "../text.hpp"
+
+namespace kin5::program::iso {
+
+/// One address word as written: `X-450.` is letter 'X', value -450, text "X-450.".
+struct word {
+  char letter = 0;  ///< upper case
+  double value = 0;
+  std::string_view text;     ///< as written, letter to last digit
+  std::string_view digits;   ///< the number as written
+  std::size_t column = 0;    ///< 1-based
+};
+
+/// A problem that stops the line: where (1-based column) and what.
+struct lex_problem {
+  std::size_t column = 0;
+  std::string message;
+};
+
+namespace detail {
+
+/// Adds comment text `c` (trimmed) to `comment`, a blank between two non-empty pieces.
+inline void add_comment(std::optional<std::string>& comment, std::string_view c) {
+  c = lexing::trim(c);
+  if (comment && !comment->empty() && !c.empty()) *comment += ' ';
+  comment = comment.value_or("") + std::string(c);
+}
+
+/// An address word at `i` (a letter); its end, or the problem that stops the line.
+inline std::size_t address_word(std::string_view s, std::size_t i, std::size_t end, word& w,
+                                std::optional<lex_problem>& problem) {
+  w.letter = to_upper(s[i]);
+  w.column = i + 1;
+  const std::size_t k = lexing::skip_blanks(s.substr(0, end), i + 1);
+  if (k < end && (s[k] == '#' || s[k] == '[')) {
+    const bool axis = std::string_view("XYZABCIJKR").find(w.letter) != std::string_view::npos;
+    problem = {w.column, axis ? "expressions and parameters in axis words are not supported"
+                              : "expressions and parameters are not supported"};
+    return end;
+  }
+  const parsed_number n = read_number(s.substr(k, end - k));
+  if (n.error == number_error::too_large) problem = {w.column, "value out of range"};
+  else if (n.error != number_error::none) problem = {w.column, std::string("word '") + w.letter + "' has no value"};
+  if (problem) return end;
+  if (k + n.length < end && s[k + n.length] == '.') {  // `1.2.3`
+    std::size_t e = k + n.length;
+    while (e < end && (is_digit(s[e]) || s[e] == '.')) ++e;
+    problem = {w.column, "malformed number '" + std::string(s.substr(k, e - k)) + "'"};
+    return end;
+  }
+  w.value = n.value;
+  w.digits = s.substr(k, n.length);
+  w.text = s.substr(i, k + n.length - i);
+  return k + n.length;
+}
+
+/// A byte that starts no word at `i`: the problem it is.
+inline lex_problem stray(std::string_view s, std::size_t i, bool first_word) {
+  const char c = s[i];
+  const auto u = static_cast<unsigned char>(c);
+  if (c == '#' || c == '[') return {i + 1, "expressions and parameters are not supported"};
+  if (is_digit(c) || c == '.' || c == '+' || c == '-') return {i + 1, "number with no address letter"};
+  if (c == '/' && first_word) return {i + 1, "block delete (/) is not supported"};
+  if (u < 0x20 || u >= 0x7f) return {i + 1, std::string("unexpected byte ") + lexing::hex_byte(c, true)};
+  return {i + 1, std::string("unexpected character '") + c + "'"};
+}
+
+}  // namespace detail
+
+/// Splits `s` from `i` to `end` into `words`, comments into `comment`; the first problem stops it.
+inline std::optional<lex_problem> lex_line(std::string_view s, std::size_t i, std::size_t end, std::vector<word>& words,
+                                           std::optional<std::string>& comment) {
+  std::optional<lex_problem> problem;
+  while (i < end && !problem) {
+    const char c = s[i];
+    if (is_space(c)) {
+      ++i;
+    } else if (c == '(') {
+      const std::size_t close = s.find(')', i);
+      if (close == std::string_view::npos || close >= end) return lex_problem{i + 1, "comment is not closed"};
+      detail::add_comment(comment, s.substr(i + 1, close - i - 1));
+      i = close + 1;
+    } else if (c == ';') {
+      detail::add_comment(comment, s.substr(i + 1, end - i - 1));
+      i = end;
+    } else if (is_letter(c)) {
+      word w;
+      i = detail::address_word(s, i, end, w, problem);
+      if (problem) break;
+      words.push_back(w);
+      if (w.letter == 'O' && words.size() == 1) {  // LinuxCNC `o100 sub`: control flow
+        const std::size_t j = lexing::skip_blanks(s.substr(0, end), i);
+        if (j + 1 < end && is_letter(s[j]) && is_letter(s[j + 1]))
+          problem = lex_problem{w.column, "o-word control flow is not supported"};
+      }
+    } else {
+      problem = detail::stray(s, i, words.empty());
+    }
+  }
+  return problem;
+}
+
+}  // namespace kin5::program::iso

@@ -1,0 +1,347 @@
+/// @file program/iso/reader.hpp
+/// The second stage of the ISO / Fanuc reader: the words of a line (lexer.hpp) become a `block`.
+/// G0–G3 with `I J K` (incremental centre) or `R`, G17/G18/G19, `G43.4` / `G43.5` (tool-tip
+/// tracking; under G43.5 `I J K` in G0/G1 blocks are the tool-axis vector), `G49`, G93/G94, G21,
+/// `G53` / `G28` / `G30` (machine coordinates), M30/M2. Errors: G91 (except in `G91 G28`/`G30`
+/// homing blocks), G95, G20, active frames (G68, G68.2, G51, G52 with offsets), canned cycles.
+/// Harmless modal words (G40, G54, G90, G05.1 Q1, H1, D1, …) are kept as written; a line not
+/// understood that moves nothing passes through.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "../block.hpp"
+#include "../lexing.hpp"
+#include "../text.hpp"
+#include "lexer.hpp"
+#include "vocabulary.hpp"
+
+namespace kin5::program::iso::detail {
+
+/// What the words of one line say beyond the block's own fields.
+struct line_words {
+  bool homing = false, g43_5 = false, uses_pq = false, g52_reset = false;
+  const word* motion = nullptr;
+  std::optional<double> ijk[3];
+  const word* ijk_word[3] = {};
+  std::optional<double> radius;
+  const word* unknown = nullptr;  ///< the first word not understood
+  bool suppress = false;          ///< a cycle's or frame's words: no further diagnostics
+
+  const word* first_ijk() const { return ijk_word[0] ? ijk_word[0] : ijk_word[1] ? ijk_word[1] : ijk_word[2]; }
+  bool any_ijk() const { return ijk[0] || ijk[1] || ijk[2]; }
+};
+
+/// The reader's record across lines, needed to read I J K: motion mode, plane, G43.5, last point.
+struct reader_state {
+  std::optional<motion_kind> motion;
+  arc_plane plane = arc_plane::xy;
+  bool vector_tcp = false;    // G43.5 active
+  bool incremental = false;   // G91 from a homing block, until G90
+  std::size_t incremental_line = 0;
+  std::optional<double> last[3];
+};
+
+/// Reads the lines of one program into blocks.
+class reader {
+ public:
+  reader(const std::string& file, read_result& result, const block_sink& on_block)
+      : file_(file), result_(result), on_block_(on_block) {}
+
+  void run(std::string_view text) {
+    for_each_line(text, [&](const text_line& line) { read_line(line); });
+  }
+
+ private:
+  file_name file_;  // one string for every location in the file
+  read_result& result_;
+  const block_sink& on_block_;
+  reader_state state_;
+  std::size_t line_ = 0;
+  bool failed_ = false;
+  std::vector<word> words_;  // reused from line to line
+
+  void error(std::size_t column, std::string message) {
+    result_.errors.push_back({{file_, line_, column}, std::move(message)});
+    failed_ = true;
+  }
+
+  void read_line(const text_line& line) {
+    const std::string_view s = line.text;
+    const std::size_t first = lexing::skip_blanks(s, 0);
+    if (first == s.size()) return;
+    std::size_t end = s.size();
+    while (end > first && is_space(s[end - 1])) --end;
+    line_ = line.number;
+    failed_ = false;
+    block b;
+    b.where = {file_, line.number, first + 1};
+    b.text = std::string(s.substr(first, end - first));
+    if (s[first] == '%') {
+      b.passthrough = true;
+      on_block_(std::move(b));
+      return;
+    }
+    words_.clear();
+    if (const auto problem = lex_line(s, first, end, words_, b.comment)) error(problem->column, problem->message);
+    if (!failed_) interpret(b);
+    on_block_(std::move(b));
+  }
+
+  /// First pass over the G words: what kind of block this is; false after "two motion words".
+  bool classify(line_words& l) {
+    bool g52 = false;
+    for (const word& w : words_) {
+      if (w.letter != 'G') continue;
+      const int g = g_code(w.value);
+      if (g == 280 || g == 300) l.homing = true;
+      if (g == 435) l.g43_5 = true;
+      if (g == 40 || g == 50 || g == 51 || g == 80 || g == 541) l.uses_pq = true;
+      if (g == 520) g52 = true;
+      if (g >= 0 && g <= 30 && g % 10 == 0) {
+        if (l.motion) {
+          error(w.column, "two motion words in one block");
+          return false;
+        }
+        l.motion = &w;
+      }
+    }
+    l.g52_reset = g52;  // G52 with all offsets zero resets the local frame: harmless
+    if (g52)
+      for (const word& w : words_)
+        if (std::string_view("XYZABC").find(w.letter) != std::string_view::npos && w.value != 0) l.g52_reset = false;
+    return true;
+  }
+
+  void interpret(block& b) {
+    // A block that turns out to be passthrough must leave the reader's record as it was.
+    const reader_state saved = state_;
+    line_words l;
+    if (!classify(l)) return;
+    if (l.motion) {
+      const int g = g_code(l.motion->value) / 10;
+      b.motion = g == 0 ? motion_kind::rapid : g == 1 ? motion_kind::linear : g == 2 ? motion_kind::arc_cw : motion_kind::arc_ccw;
+    }
+    for (const word& w : words_) take(b, w, l);
+    machine_or_incremental(b);
+    if (b.motion) state_.motion = b.motion;
+    centre_or_vector(b, l);
+    if (!b.machine_coordinates) {
+      if (b.axes.x_mm) state_.last[0] = b.axes.x_mm;
+      if (b.axes.y_mm) state_.last[1] = b.axes.y_mm;
+      if (b.axes.z_mm) state_.last[2] = b.axes.z_mm;
+    }
+    // The order the writer uses: G codes first, then the others (H, D, P, Q), each as written.
+    std::stable_partition(b.kept_words.begin(), b.kept_words.end(),
+                          [](const std::string& k) { return to_upper(k.front()) == 'G'; });
+    if (!l.unknown || l.suppress) return;
+    if (b.moves() || b.arc) {
+      error(l.unknown->column, "unknown word '" + std::string(l.unknown->text) + "'");
+    } else if (!failed_) {
+      // Not understood and moving nothing: kept verbatim, never interpreted.
+      block kept;
+      kept.where = b.where;
+      kept.text = b.text;
+      kept.passthrough = true;
+      state_ = saved;
+      b = std::move(kept);
+    }
+  }
+
+  /// The meaning of one word.
+  void take(block& b, const word& w, line_words& l) {
+    const auto keep = [&] { b.kept_words.emplace_back(w.text); };
+    const auto unknown = [&] {
+      if (!l.unknown) l.unknown = &w;
+    };
+    switch (w.letter) {
+      case 'G': return g_word(b, w, l);
+      case 'X': case 'Y': case 'Z': case 'A': case 'B': case 'C': return axis_word(b, w, l);
+      case 'I': case 'J': case 'K': {
+        const int axis = w.letter - 'I';
+        if (l.ijk[axis]) return error(w.column, std::string("word '") + w.letter + "' appears twice");
+        l.ijk[axis] = w.value;
+        l.ijk_word[axis] = &w;
+        return;
+      }
+      case 'R':
+        if (l.radius) error(w.column, "word 'R' appears twice");
+        l.radius = w.value;
+        return;
+      case 'F': b.feed = w.value; return;
+      case 'S': b.spindle_rpm = w.value; return;
+      case 'T': if (whole(w, "tool number")) b.tool = static_cast<long long>(w.value); return;
+      case 'N': if (whole(w, "block number")) b.number = static_cast<long long>(w.value); return;
+      case 'O':
+        if (w.digits.empty() || w.digits.find_first_not_of("0123456789") != std::string_view::npos)
+          error(w.column, "program number must be a whole number");
+        else
+          b.program_begin = std::string(w.digits);
+        return;
+      case 'M': return m_word(b, w, l);
+      case 'H': case 'D': return keep();
+      case 'P': case 'Q': case 'L': return l.uses_pq ? keep() : unknown();
+      default: return unknown();
+    }
+  }
+
+  bool whole(const word& w, const char* what) {
+    if (lexing::is_whole(w.value)) return true;
+    error(w.column, std::string(what) + " must be a whole number");
+    return false;
+  }
+
+  void m_word(block& b, const word& w, line_words& l) {
+    if (!lexing::is_whole(w.value) || w.value > 99999) {
+      if (!l.unknown) l.unknown = &w;
+      return;
+    }
+    const int m = static_cast<int>(w.value);
+    if (m == 30 || m == 2) b.program_end = "M" + std::to_string(m);
+    else b.m_codes.push_back(m);
+  }
+
+  void axis_word(block& b, const word& w, const line_words& l) {
+    std::optional<double>* slot = w.letter == 'X' ? &b.axes.x_mm : w.letter == 'Y' ? &b.axes.y_mm
+                                : w.letter == 'Z' ? &b.axes.z_mm : w.letter == 'A' ? &b.axes.a_deg
+                                : w.letter == 'B' ? &b.axes.b_deg : &b.axes.c_deg;
+    if (*slot) return error(w.column, std::string("word '") + w.letter + "' appears twice");
+    if (l.g52_reset) b.kept_words.emplace_back(w.text);
+    else *slot = w.value;
+  }
+
+  void g_word(block& b, const word& w, line_words& l) {
+    const int g = g_code(w.value);
+    const auto keep = [&] { b.kept_words.emplace_back(w.text); };
+    if (g >= 0 && g <= 30 && g % 10 == 0) return;  // motion, done in `classify`
+    if (g == 170 || g == 180 || g == 190) {
+      state_.plane = g == 170 ? arc_plane::xy : g == 180 ? arc_plane::zx : arc_plane::yz;
+      keep();
+    } else if (g == 900) {
+      state_.incremental = false;
+      keep();
+    } else if (kept_g(g) || (g == 520 && l.g52_reset)) {
+      keep();
+    } else if (g == 910) {
+      if (!l.homing) return error(w.column, "incremental positioning (G91) is not supported");
+      state_.incremental = true, state_.incremental_line = line_;
+      keep();
+    } else if (g == 930 || g == 940) {
+      b.feed_mode = g == 930 ? feed_unit::inverse_time : feed_unit::per_minute;
+    } else if (g == 434 || g == 435 || g == 490) {
+      b.tcp = g != 490;
+      state_.vector_tcp = g == 435;
+    } else if (g == 530 || g == 280 || g == 300) {
+      b.machine_coordinates = true;
+      keep();
+    } else {
+      refused_g(b, w, g, l);
+    }
+  }
+
+  /// G20, G95, cycles and frames are refused (G21 is read); other G codes are not understood.
+  void refused_g(block& b, const word& w, int g, line_words& l) {
+    if (g == 200) {
+      error(w.column, "inch programs are not supported");
+    } else if (g == 210) {
+      b.metric = true;
+    } else if (g == 950) {
+      error(w.column, "feed per revolution (G95) is not supported");
+    } else if (g == 730 || g == 740 || g == 760 || (g >= 810 && g <= 890 && g % 10 == 0)) {
+      error(w.column, "canned cycle G" + std::to_string(g / 10) + " is not supported");
+      l.suppress = true;  // its R, P, Q words are the cycle's: no further diagnostics
+    } else if (g == 680 || g == 682 || g == 683 || g == 684 || g == 510 || g == 511 || g == 520) {
+      const std::string name = "G" + std::to_string(g / 10) + (g % 10 ? "." + std::to_string(g % 10) : "");
+      error(w.column, name + " changes the working frame; kin5 does not model frame changes");
+      l.suppress = true;  // its I J K R P words are the frame's
+    } else if (!l.unknown) {
+      l.unknown = &w;
+    }
+  }
+
+  /// Machine-coordinate and homing blocks: the axis words are not workpiece positions.
+  void machine_or_incremental(const block& b) {
+    if (b.machine_coordinates) {
+      if (b.axes.x_mm) state_.last[0].reset();
+      if (b.axes.y_mm) state_.last[1].reset();
+      if (b.axes.z_mm) state_.last[2].reset();
+    } else if (state_.incremental && b.moves()) {
+      // Posts write `G91 G28 Z0` to home and mean the following moves as absolute; say so once.
+      result_.warnings.push_back({b.where, "G91 of line " + std::to_string(state_.incremental_line) +
+                                               " not cancelled by G90: axis words read as absolute"});
+      state_.incremental = false;
+    }
+  }
+
+  /// I J K and R: arc data, or the G43.5 tool-axis vector.
+  void centre_or_vector(block& b, line_words& l) {
+    const bool arc = !l.g43_5 && !b.machine_coordinates &&
+                     (state_.motion == motion_kind::arc_cw || state_.motion == motion_kind::arc_ccw);
+    if (l.suppress) return;
+    if (l.any_ijk() && !arc && !(state_.vector_tcp || l.g43_5)) {
+      const word* w = l.first_ijk();
+      error(w->column, std::string("word '") + w->letter + "' needs G2, G3 or G43.5");
+    } else if (l.any_ijk() && !arc) {
+      if (!l.ijk[0] || !l.ijk[1] || !l.ijk[2]) error(l.first_ijk()->column, "tool-axis vector needs I, J and K");
+      else b.axes.tool_axis = vec3{*l.ijk[0], *l.ijk[1], *l.ijk[2]};
+    } else if (arc && (l.any_ijk() || l.radius || b.moves())) {
+      b.arc = arc_data(b, l);
+    } else if (l.radius && !l.unknown) {
+      for (const word& w : words_)
+        if (w.letter == 'R') {
+          l.unknown = &w;
+          break;
+        }
+    }
+  }
+
+  /// The arc of an arc block: its radius, or its centre from the last point and I J K.
+  arc_words arc_data(const block& b, const line_words& l) {
+    arc_words a;
+    const arc_plane plane = state_.plane;
+    a.plane = plane;
+    const int first = plane == arc_plane::xy ? 0 : plane == arc_plane::zx ? 2 : 1;
+    const int second = plane == arc_plane::xy ? 1 : plane == arc_plane::zx ? 0 : 2;
+    const int normal = 3 - first - second;
+    const auto& last = state_.last;
+    if (l.radius && l.any_ijk()) {
+      error(l.first_ijk()->column, "arc has both I J K and R");
+    } else if (l.radius) {
+      a.radius_mm = l.radius;
+    } else if (!l.any_ijk()) {
+      error(b.where.column, "arc needs I, J, K or R");
+    } else if (l.ijk[normal]) {
+      error(l.ijk_word[normal]->column, std::string("word '") + l.ijk_word[normal]->letter + "' is not in the arc plane");
+    } else if (!last[0] || !last[1] || !last[2]) {
+      const word* w = l.ijk_word[first] ? l.ijk_word[first] : l.ijk_word[second];
+      error(w->column, "arc centre needs a known start point");
+    } else {
+      double c[3] = {*last[0], *last[1], *last[2]};
+      if (l.ijk[first]) c[first] += *l.ijk[first];
+      if (l.ijk[second]) c[second] += *l.ijk[second];
+      a.centre_mm = vec3{c[0], c[1], c[2]};
+    }
+    return a;
+  }
+};
+
+}  // namespace kin5::program::iso::detail
+
+namespace kin5::program::iso {
+
+/// Reads ISO / Fanuc G code block by block: `on_block` receives each block in file order as soon
+/// as it is read; errors and warnings go to `diagnostics` (its `parsed` is not touched).
+inline void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
+                        const block_sink& on_block) {
+  detail::reader(file_name, diagnostics, on_block).run(text);
+}
+
+}  // namespace kin5::program::iso

@@ -1,0 +1,28 @@
+/// @file program/iso/vocabulary.hpp
+/// ISO / Fanuc G codes as the reader and the writer name them: a G code as ten times its value
+/// (G43.4 → 434), and the codes kin5 keeps as written because they change no geometry.
+#pragma once
+
+#include <cmath>
+
+namespace kin5::program::iso::detail {
+
+/// G code as ten times its value (G43.4 → 434), or -1 if not a multiple of 0.1.
+inline int g_code(double v) {
+  const double t = std::round(v * 10);
+  return (std::abs(v * 10 - t) < 1e-6 && t >= 0 && t < 100000) ? static_cast<int>(t) : -1;
+}
+
+/// G codes kept as written: they change no geometry (times ten).
+inline bool kept_g(int g) {
+  switch (g) {
+    case 40: case 50: case 51: case 80: case 131: case 150: case 170: case 180: case 190: case 400: case 430:
+    case 500: case 501: case 540: case 541: case 550: case 560: case 570: case 580: case 590:
+    case 610: case 611: case 640: case 690: case 800: case 900: case 980: case 990:
+      return true;
+    default:
+      return false;
+  }
+}
+
+}  // namespace kin5::program::iso::detail

@@ -1,0 +1,230 @@
+/// @file program/iso/writer.hpp
+/// Blocks written as ISO / Fanuc G code, one block per line, words in the order
+/// `N  kept G  G0-G3  G43.4/G43.5/G49  G93/G94  G21  X Y Z A B C  I J K  R  F S T M  kept  (comment)`.
+/// A block ISO cannot express (inch units, a tool-axis vector outside G43.5 or with an arc)
+/// throws `std::invalid_argument` naming the block's `file:line`.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "../block.hpp"
+#include "../number.hpp"
+#include "../text.hpp"
+#include "vocabulary.hpp"
+
+namespace kin5::program::iso {
+
+/// Decimals written for each kind of number. Spindle speeds use `feed_decimals`.
+struct write_options {
+  int linear_decimals = 3;   ///< X Y Z, arc I J K, R (mm)
+  int angle_decimals = 3;    ///< A B C (degrees)
+  int feed_decimals = 1;     ///< F (mm/min or 1/min) and S (1/min)
+  int vector_decimals = 7;   ///< tool-axis I J K under G43.5
+};
+
+namespace detail {
+
+/// Whether tool-tip tracking switched on at block `i` is written G43.5 (rather than G43.4): a
+/// block from `i` up to the next switch carries a tool-axis vector.
+inline bool vector_tcp_from(const std::vector<block>& blocks, std::size_t i) {
+  for (std::size_t k = i; k < blocks.size(); ++k) {
+    if (k > i && blocks[k].tcp) break;
+    if (blocks[k].axes.tool_axis) return true;
+  }
+  return false;
+}
+
+inline std::string as_comment(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  if (text.find_first_of("()") != std::string::npos) return ";" + text;
+  return "(" + text + ")";
+}
+
+}  // namespace detail
+
+/// Writes blocks as ISO / Fanuc G code one at a time, remembering the plane, the last point and
+/// whether G43.5 is on, so a program of any length is written in constant memory.
+/// `write(program)` below is this writer applied to every block.
+class writer {
+ public:
+  /// A writer for blocks read from `source` (another dialect's passthrough text and kept words
+  /// go into comments). Blocks name themselves in messages: `file` is not needed.
+  explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
+      : same_(source == dialect_id::iso), options_(chosen) {
+    static_cast<void>(file);
+  }
+
+  /// Appends the line of block `b` to `out`. A block that switches tool-tip tracking on is
+  /// written G43.5 when `vector_tcp_ahead` (a block before the next switch carries a tool-axis
+  /// vector), else G43.4; a tool-axis vector outside G43.5 is an error. Throws
+  /// `std::invalid_argument` naming the block's `file:line` when it cannot be written.
+  void write(std::string& out, const block& b, bool vector_tcp_ahead = false) {
+    if (b.passthrough) {
+      out += (same_ ? b.text : detail::as_comment(b.text)) + '\n';
+      return;
+    }
+    words_.clear();
+    tail_.clear();
+    notes_.clear();
+    head(b);
+    modes(b, vector_tcp_ahead);
+    coordinates(b);
+    codes(b);
+    for (std::string& k : tail_) words_.push_back(std::move(k));
+    if (!notes_.empty()) words_.push_back(detail::as_comment(notes_));
+    if (b.comment) words_.push_back(detail::as_comment(*b.comment));
+    if (words_.empty() && !same_ && !b.text.empty()) words_.push_back(detail::as_comment(b.text));
+    std::string line;
+    for (const std::string& w : words_) line += (line.empty() ? "" : " ") + w;
+    out += line + '\n';
+  }
+
+ private:
+  bool same_;  // the blocks were read as ISO
+  write_options options_;
+  bool vector_tcp_ = false;
+  arc_plane plane_ = arc_plane::xy;
+  std::optional<double> last_[3];
+  bool ended_ = false;              // the last block written had an M2 / M30 M function
+  std::vector<std::string> words_;  // the line's words
+  std::vector<std::string> tail_;   // non-G kept words
+  std::string notes_;               // what another dialect said that ISO cannot: a comment
+
+  [[noreturn]] static void fail(const block& b, const std::string& why) {
+    throw std::invalid_argument(b.where.file + ":" + std::to_string(b.where.line) + ": block cannot be written in ISO: " + why);
+  }
+
+  void put(char letter, double v, int decimals) { words_.push_back(letter + format_number(v, decimals)); }
+  void note(std::string_view text) {
+    if (!notes_.empty()) notes_ += ' ';
+    notes_ += text;
+  }
+  /// `M30`, `N10`, `T5`: a letter and a whole number.
+  static std::string code(char letter, long long n) {
+    std::string w(1, letter);
+    w += std::to_string(n);
+    return w;
+  }
+
+  /// N, O, kept G words (same dialect; the others into a note), G53, the plane of an arc.
+  void head(const block& b) {
+    if (b.number) words_.push_back(code('N', *b.number));
+    if (b.program_begin) {
+      const std::string& name = *b.program_begin;
+      if (!name.empty() && name.find_first_not_of("0123456789") == std::string::npos) words_.push_back("O" + name);
+      else note("program " + name);
+    }
+    bool machine_word = false;
+    for (const std::string& k : b.kept_words) {
+      if (!same_) note(k);
+      else if (k.empty() || to_upper(k.front()) != 'G') tail_.push_back(k);
+      else machine_word = kept_g_word(k) || machine_word;
+    }
+    if (b.machine_coordinates && !machine_word) words_.push_back("G53");
+    if (b.arc && b.arc->plane != plane_) {
+      plane_ = b.arc->plane;
+      words_.push_back(plane_ == arc_plane::xy ? "G17" : plane_ == arc_plane::zx ? "G18" : "G19");
+    }
+  }
+
+  /// Writes kept G word `k`, following the plane it selects; true for a machine-coordinate word.
+  bool kept_g_word(const std::string& k) {
+    words_.push_back(k);
+    std::string_view digits = std::string_view(k).substr(1);
+    while (!digits.empty() && is_space(digits.front())) digits.remove_prefix(1);
+    const parsed_number n = read_number(digits);
+    const int g = n.error == number_error::none ? detail::g_code(n.value) : -1;
+    if (g == 170) plane_ = arc_plane::xy;
+    if (g == 180) plane_ = arc_plane::zx;
+    if (g == 190) plane_ = arc_plane::yz;
+    return g == 530 || g == 280 || g == 300;
+  }
+
+  /// G0–G3, G43.4 / G43.5 / G49, G93 / G94, G21.
+  void modes(const block& b, bool vector_tcp_ahead) {
+    if (b.motion || b.feed_rapid) {
+      const motion_kind m = b.feed_rapid ? motion_kind::rapid : *b.motion;
+      words_.push_back(m == motion_kind::rapid ? "G0" : m == motion_kind::linear ? "G1" : m == motion_kind::arc_cw ? "G2" : "G3");
+    }
+    if (b.tcp) {
+      vector_tcp_ = *b.tcp && vector_tcp_ahead;
+      words_.push_back(!*b.tcp ? "G49" : vector_tcp_ ? "G43.5" : "G43.4");
+    }
+    if (b.feed_mode) words_.push_back(*b.feed_mode == feed_unit::inverse_time ? "G93" : "G94");
+    if (b.metric) {
+      if (!*b.metric) fail(b, "inch units");
+      words_.push_back("G21");
+    }
+  }
+
+  /// X Y Z A B C, the tool-axis I J K, the arc's R or I J K; the last point moves on.
+  void coordinates(const block& b) {
+    const axis_words& a = b.axes;
+    if (a.x_mm) put('X', *a.x_mm, options_.linear_decimals);
+    if (a.y_mm) put('Y', *a.y_mm, options_.linear_decimals);
+    if (a.z_mm) put('Z', *a.z_mm, options_.linear_decimals);
+    if (a.a_deg) put('A', *a.a_deg, options_.angle_decimals);
+    if (a.b_deg) put('B', *a.b_deg, options_.angle_decimals);
+    if (a.c_deg) put('C', *a.c_deg, options_.angle_decimals);
+    if (a.tool_axis) {
+      if (!vector_tcp_) fail(b, "a tool-axis vector needs G43.5");
+      if (b.arc) fail(b, "a tool-axis vector and an arc in one block");
+      put('I', a.tool_axis->x, options_.vector_decimals);
+      put('J', a.tool_axis->y, options_.vector_decimals);
+      put('K', a.tool_axis->z, options_.vector_decimals);
+    }
+    if (b.arc && b.arc->radius_mm) {
+      put('R', *b.arc->radius_mm, options_.linear_decimals);
+    } else if (b.arc && b.arc->centre_mm) {
+      if (!last_[0] || !last_[1] || !last_[2]) fail(b, "arc centre with no known start point");
+      const double centre[3] = {b.arc->centre_mm->x, b.arc->centre_mm->y, b.arc->centre_mm->z};
+      const int first = plane_ == arc_plane::xy ? 0 : plane_ == arc_plane::zx ? 2 : 1;
+      const int second = plane_ == arc_plane::xy ? 1 : plane_ == arc_plane::zx ? 0 : 2;
+      for (int k : {std::min(first, second), std::max(first, second)})
+        put(static_cast<char>('I' + k), centre[k] - *last_[k], options_.linear_decimals);
+    }
+    const std::optional<double>* given[3] = {&a.x_mm, &a.y_mm, &a.z_mm};
+    for (int k = 0; k < 3; ++k)
+      if (*given[k]) last_[k] = b.machine_coordinates ? std::nullopt : *given[k];
+  }
+
+  /// F S T, M codes, and the program end (never a second M2 / M30).
+  void codes(const block& b) {
+    if (b.feed) put('F', *b.feed, options_.feed_decimals);
+    if (b.spindle_rpm) put('S', *b.spindle_rpm, options_.feed_decimals);
+    if (b.tool) words_.push_back(code('T', *b.tool));
+    bool ends = false;  // an M2 / M30 written in this block
+    for (int m : b.m_codes) {
+      // M91 / M92 of another dialect are machine coordinates, already written as G53
+      if (!same_ && b.machine_coordinates && (m == 91 || m == 92)) continue;
+      words_.push_back(code('M', m));
+      ends = ends || m == 2 || m == 30;
+    }
+    // A program end right after an M2 / M30 M function (Heidenhain `M30`, then `END PGM`) says it again.
+    const bool end_written = ended_ && !same_;
+    ended_ = ends;
+    if (b.program_end && !ends && !end_written) words_.push_back(*b.program_end == "M2" ? "M2" : "M30");
+  }
+};
+
+/// Writes `p` as ISO / Fanuc G code, one block per line (see the file comment); tool-tip tracking
+/// is switched on with G43.5 where tool-axis vectors follow, else G43.4.
+inline std::string write(const program& p, const write_options& options = {}) {
+  writer w(p.language, p.file, options);
+  std::string out;
+  for (std::size_t k = 0; k < p.blocks.size(); ++k) {
+    const block& b = p.blocks[k];
+    w.write(out, b, b.tcp && *b.tcp && detail::vector_tcp_from(p.blocks, k));
+  }
+  return out;
+}
+
+}  // namespace kin5::program::iso

@@ -1,0 +1,46 @@
+/// @file program/siemens/dialect.hpp
+/// Siemens 840D programs (G code under TRAORI), as an entry of `program::dialects`: the reader
+/// (lexer.hpp → words.hpp → reader.hpp), the writer (writer.hpp), and what the dialect declares
+/// of itself. docs/dialects/siemens.md lists every word.
+///
+/// ```cpp
+/// namespace s = kin5::program::siemens;
+/// auto r = s::read("N10 G1 Y9.1 Z118.526 B3.536 F1091\n", "part.mpf");
+/// if (r.ok()) std::string text = s::write(r.parsed);  // "N10 G1 Y9.1 … F1091\n"
+/// ```
+#pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
+
+#include "../block.hpp"
+#include "../dialect_id.hpp"
+#include "reader.hpp"
+#include "writer.hpp"
+
+namespace kin5::program::siemens {
+
+/// Reads a Siemens 840D program. Never throws on bad input: problems are in `errors`.
+inline read_result read(std::string_view text, std::string file_name) {
+  return read_whole(dialect_id::siemens, text, std::move(file_name), &read_blocks);
+}
+
+/// The Siemens 840D dialect: its id, capabilities, file markers, reader and writer.
+struct dialect {
+  static constexpr dialect_id id = dialect_id::siemens;
+  static constexpr capabilities can{.inverse_time_feed = true, .tcp_switch = true, .rotary_axis_words = true,
+                                    .tool_axis_vectors = true, .arcs = true};
+  static constexpr std::array<marker, 3> markers{{{"%_N_", marker::place::block_start},
+                                                  {"TRAORI", marker::place::anywhere},
+                                                  {"TRAFOOF", marker::place::anywhere}}};
+  using write_options = siemens::write_options;
+  using writer = siemens::writer;
+  static void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
+                          const block_sink& on_block) {
+    siemens::read_blocks(text, file_name, diagnostics, on_block);
+  }
+  static std::string write(const program& p, const write_options& options) { return siemens::write(p, options); }
+};
+
+}  // namespace kin5::program::siemens

@@ -1,0 +1,40 @@
+/// @file program/siemens/modal.hpp
+/// What a Siemens program leaves in effect from one block to the next, as far as reading and
+/// writing 840D text need it: the motion word (G0–G3), the arc plane (G17–G19), the last
+/// programmed X Y Z (arc centres are written relative to it) and the program's name (M30 ends it).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include "../block.hpp"
+
+namespace kin5::program::siemens::detail {
+
+/// The modal state of the reader, mirrored by the writer for the text it has written.
+struct modal_state {
+  std::optional<motion_kind> motion;
+  arc_plane plane = arc_plane::xy;
+  std::array<std::optional<double>, 3> position_mm;  ///< last programmed X Y Z (workpiece)
+  std::optional<std::string> program_name;
+
+  /// Takes block `b`'s linear axis words (machine coordinates make them unknown).
+  void move(const block& b) {
+    const std::array<std::optional<double>, 3> given = {b.axes.x_mm, b.axes.y_mm, b.axes.z_mm};
+    for (std::size_t i = 0; i < 3; ++i)
+      if (given[i]) position_mm[i] = b.machine_coordinates ? std::nullopt : given[i];
+  }
+  /// The last programmed point, when all three coordinates are known.
+  std::optional<vec3> position() const {
+    if (!position_mm[0] || !position_mm[1] || !position_mm[2]) return std::nullopt;
+    return vec3{*position_mm[0], *position_mm[1], *position_mm[2]};
+  }
+};
+
+constexpr bool is_arc(std::optional<motion_kind> m) {
+  return m == motion_kind::arc_cw || m == motion_kind::arc_ccw;
+}
+
+}  // namespace kin5::program::siemens::detail

@@ -1,0 +1,264 @@
+/// @file program/siemens/reader.hpp
+/// The second stage of the Siemens reader: the words of a line (lexer.hpp) become a `block`, with
+/// the modal state (motion word, plane, last point) applied across lines.
+///
+/// Reading rules (docs/dialects/siemens.md lists every word): `TRAORI` / `TRAFOOF` switch
+/// tool-tip tracking, `A3= B3= C3=` give a tool-axis vector, `I J K` (incremental from the last
+/// programmed point) or `CR=` give arcs, `SUPA` / `G53` / `G153` mean machine coordinates.
+/// Expressions, `G91` / `IC()`, inch units and active frame changes (`TRANS`, `ROT`, `CYCLE800`,
+/// …) are errors. A line without geometry that is not understood is kept verbatim (`passthrough`).
+/// Most lines of a long program (`N… G1 X… Y… Z… A… B… F…`) are read in one scan
+/// (`read_plain_motion`), which a law holds equal to the word-by-word reading.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "../block.hpp"
+#include "../lexing.hpp"
+#include "../number.hpp"
+#include "../text.hpp"
+#include "lexer.hpp"
+#include "modal.hpp"
+#include "vocabulary.hpp"
+#include "words.hpp"
+
+namespace kin5::program::siemens::detail {
+
+/// Puts frame words into the block (alone) or the errors (with geometry or frame arguments).
+inline void frame_words(line_parse& p) {
+  for (const auto& [word, column] : p.frame_words) {
+    if (p.has_geometry || p.frame_arguments)
+      p.errors.push_back({{p.b.where.file, p.b.where.line, column + 1}, frame_message(word)});
+    else
+      p.b.kept_words.push_back(word);
+  }
+}
+
+/// Whether the line is kept verbatim: not understood and no geometry, or a lone MSG.
+inline bool is_passthrough(const line_parse& p) {
+  const bool only_msg = p.has_msg && !p.has_content && !p.has_geometry && p.unknown.empty() && !p.b.moves();
+  return (!p.unknown.empty() && !p.has_geometry) || only_msg;
+}
+
+/// The tool-axis vector from A3= B3= C3=.
+inline void tool_axis_vector(line_parse& p, std::vector<diagnostic>& errors) {
+  const auto& v = p.vector;
+  if (!v[0] && !v[1] && !v[2]) return;
+  const source_location at{p.b.where.file, p.b.where.line, p.vector_column + 1};
+  if (!v[0] || !v[1] || !v[2]) errors.push_back({at, "tool-axis vector needs A3, B3 and C3"});
+  else if (p.b.axes.has_rotary()) errors.push_back({at, "rotary axes and a tool-axis vector in one block"});
+  else p.b.axes.tool_axis = vec3{*v[0], *v[1], *v[2]};
+}
+
+/// The arc: its centre (I J K from the last programmed point) or its radius (CR=).
+inline void arc(line_parse& p, const modal_state& state, std::vector<diagnostic>& errors) {
+  block& b = p.b;
+  const auto error = [&](std::size_t column, std::string m) {
+    errors.push_back({{b.where.file, b.where.line, column + 1}, std::move(m)});
+  };
+  const auto& o = p.centre_offset_mm;
+  const bool has_centre = o[0] || o[1] || o[2];
+  if (has_centre || p.radius_mm) {
+    if (!is_arc(state.motion)) {
+      error(p.arc_column, "word '" + p.arc_word + "' needs G2 or G3");
+    } else if (has_centre && p.radius_mm) {
+      error(p.arc_column, "arc has both a centre and a radius");
+    } else if (p.radius_mm) {
+      b.arc = arc_words{state.plane, std::nullopt, p.radius_mm};
+    } else if (const auto start = state.position()) {
+      const vec3 offset{o[0].value_or(0.0), o[1].value_or(0.0), o[2].value_or(0.0)};
+      b.arc = arc_words{state.plane, *start + offset, std::nullopt};
+    } else {
+      error(p.arc_column, "arc start point is not known");
+    }
+  } else if (is_arc(state.motion) && b.axes.has_linear()) {
+    error(p.geometry_column, "arc needs a centre (I J K) or a radius (CR=)");
+  }
+}
+
+/// M2 / M30 end the program: carried by `program_end` only, not also in `m_codes`.
+inline void program_end(block& b, const modal_state& state) {
+  const bool m30 = std::find(b.m_codes.begin(), b.m_codes.end(), 30) != b.m_codes.end();
+  const bool m2 = std::find(b.m_codes.begin(), b.m_codes.end(), 2) != b.m_codes.end();
+  if (!m30 && !m2) return;
+  b.program_end = m30 ? state.program_name.value_or("") : std::string("M2");
+  b.m_codes.erase(std::remove_if(b.m_codes.begin(), b.m_codes.end(), [](int m) { return m == 2 || m == 30; }),
+                  b.m_codes.end());
+}
+
+/// Applies the modal state to a read line, decides passthrough, and hands the line's
+/// diagnostics to `result` in column order.
+inline void finish(line_parse& p, modal_state& state, read_result& result) {
+  block& b = p.b;
+  frame_words(p);
+  if (is_passthrough(p)) {
+    block kept;
+    kept.where = b.where;
+    kept.text = b.text;
+    kept.number = b.number;
+    kept.passthrough = true;
+    b = std::move(kept);
+  } else {
+    for (auto& d : p.unknown) p.errors.push_back(std::move(d));
+    std::stable_partition(b.kept_words.begin(), b.kept_words.end(), [](const std::string& w) { return !is_late_kept(w); });
+    if (b.motion) state.motion = b.motion;
+    if (p.plane) state.plane = *p.plane;
+    // Checks across words only on a line whose words read cleanly: one diagnostic per problem
+    // (an arc word may be the one in error: the arc is then left out).
+    if (p.errors.empty()) {
+      std::vector<diagnostic> found;
+      tool_axis_vector(p, found);
+      arc(p, state, found);
+      for (auto& d : found) p.errors.push_back(std::move(d));
+    }
+    state.move(b);
+    program_end(b, state);
+  }
+  std::stable_sort(p.errors.begin(), p.errors.end(),
+                   [](const diagnostic& a, const diagnostic& c) { return a.where.column < c.where.column; });
+  for (auto& d : p.errors) result.errors.push_back(std::move(d));
+  for (auto& d : p.warnings) result.warnings.push_back(std::move(d));
+}
+
+/// `%_N_NAME_MPF`, `%_N_NAME_SPF`, `%NAME`: the program name, or nothing if `line` is not a header.
+inline std::optional<std::string> program_header(std::string_view line) {
+  line = lexing::trim(line);
+  if (line.empty() || line.front() != '%') return std::nullopt;
+  line.remove_prefix(1);
+  if (starts_with_keyword(line, "_N_")) line.remove_prefix(3);
+  std::size_t n = 0;
+  while (n < line.size() && is_ident_char(line[n])) ++n;
+  if (n == 0 || n != line.size()) return std::nullopt;
+  std::string name(line);
+  if (name.size() > 4 && lexing::upper(name.substr(name.size() - 4)) == "_MPF") name.resize(name.size() - 4);
+  return name;
+}
+
+/// The words of a plain motion line, as `read_plain_motion` collects them.
+struct plain_motion {
+  std::optional<long long> number;
+  std::optional<motion_kind> motion;
+  axis_words axes;
+  std::optional<double> feed;
+
+  /// Takes word `letter` `v`; false if the full reader must judge it (twice, not whole, …).
+  bool take(char letter, double v) {
+    auto set = [v](std::optional<double>& field) {
+      if (field) return false;
+      field = v;
+      return true;
+    };
+    switch (letter) {
+      case 'N':
+        if (number || !lexing::is_whole(v)) return false;
+        number = static_cast<long long>(v);
+        return true;
+      case 'G':
+        if (motion || !(v == 0.0 || v == 1.0)) return false;
+        motion = v == 0.0 ? motion_kind::rapid : motion_kind::linear;
+        return true;
+      case 'X': return set(axes.x_mm);
+      case 'Y': return set(axes.y_mm);
+      case 'Z': return set(axes.z_mm);
+      case 'A': return set(axes.a_deg);
+      case 'B': return set(axes.b_deg);
+      case 'C': return set(axes.c_deg);
+      case 'F': return v >= 0 && set(feed);
+      default: return false;
+    }
+  }
+};
+
+/// The line most of a long program is made of: `N… G0|G1 X… Y… Z… A… B… C… F…`, any of those
+/// words at most once each, in any order, upper case, blanks between them and nothing else. Such
+/// a line is read into `b` in one scan, with the modal state moved on as `finish` would, and the
+/// result is true; for any other line (or an arc in effect) nothing changes and the result is
+/// false: the full reader then reads it. A law checks that both readers agree on such lines.
+inline bool read_plain_motion(std::string_view line, block& b, modal_state& state) {
+  plain_motion words;
+  std::size_t i = 0;
+  for (;;) {
+    i = lexing::skip_blanks(line, i);
+    if (i == line.size()) break;
+    const char letter = line[i++];
+    const parsed_number n = read_number(line.substr(i));
+    if (n.error != number_error::none) return false;
+    i += n.length;
+    if (i < line.size() && !is_space(line[i])) return false;
+    if (!words.take(letter, n.value)) return false;
+  }
+  if (is_arc(words.motion ? words.motion : state.motion) && words.axes.has_linear()) return false;  // needs its centre
+  b.number = words.number;
+  b.motion = words.motion;
+  b.axes = words.axes;
+  b.feed = words.feed;
+  if (words.motion) state.motion = words.motion;
+  state.move(b);
+  return true;
+}
+
+/// Reads the lines of one program: the header, the one-scan path for plain motion lines, and the
+/// word-by-word path (lexer, then `word_reader` and `finish`) for every other line.
+class line_reader {
+ public:
+  explicit line_reader(const std::string& file_path) : file_(file_path) {}
+
+  /// Reads `line` into a block for `on_block` (nothing for an empty line).
+  void read(const text_line& line, read_result& diagnostics, const block_sink& on_block) {
+    if (line.text.empty()) return;
+    block b;
+    const std::size_t first = lexing::skip_blanks(line.text, 0);
+    b.where = {file_, line.number, (first < line.text.size() ? first : 0) + 1};
+    b.text = std::string(line.text);
+    if (first == line.text.size()) {  // blanks only
+      b.passthrough = true;
+    } else if (auto name = program_header(line.text)) {
+      b.program_begin = *name;
+      state_ = modal_state{};
+      state_.program_name = *name;
+    } else if (!read_plain_motion(line.text, b, state_)) {
+      b = read_words(line, std::move(b), diagnostics);
+    }
+    on_block(std::move(b));
+  }
+
+  /// Reads `line` word by word into `b` (whose `where` and `text` are set), without the
+  /// one-scan path: the reader `read_plain_motion` is held equal to.
+  block read_words(const text_line& line, block b, read_result& diagnostics) {
+    line_parse p;
+    p.b = std::move(b);
+    lexer_.run(line.text, words_);
+    word_reader(line.number, file_, p).read(words_);
+    finish(p, state_, diagnostics);
+    return std::move(p.b);
+  }
+
+  modal_state& state() { return state_; }
+
+ private:
+  file_name file_;  // one string for every location in the file
+  modal_state state_;
+  line_lexer lexer_;
+  std::vector<word> words_;  // reused from line to line
+};
+
+}  // namespace kin5::program::siemens::detail
+
+namespace kin5::program::siemens {
+
+/// Reads a Siemens 840D program block by block: `on_block` receives each block in file order as
+/// soon as it is read; errors and warnings go to `diagnostics` (its `parsed` is not touched).
+/// Nothing but the current line is held, so a program of any length reads in constant memory.
+inline void read_blocks(std::string_view text, const std::string& file_path, read_result& diagnostics,
+                        const block_sink& on_block) {
+  detail::line_reader reader(file_path);
+  for_each_line(text, [&](const text_line& line) { reader.read(line, diagnostics, on_block); });
+}
+
+}  // namespace kin5::program::siemens

@@ -1,0 +1,98 @@
+/// @file program/siemens/vocabulary.hpp
+/// The Siemens 840D words kin5 knows without interpreting them, shared by the reader (which
+/// keeps them, or refuses frame changes) and the writer (which writes them back in place).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "../lexing.hpp"
+#include "../number.hpp"
+#include "../text.hpp"
+
+namespace kin5::program::siemens::detail {
+
+constexpr bool is_ident_char(char c) { return is_letter(c) || is_digit(c) || c == '_'; }
+constexpr bool is_axis_letter(char c) { return c == 'X' || c == 'Y' || c == 'Z' || c == 'A' || c == 'B' || c == 'C'; }
+constexpr bool is_centre_letter(char c) { return c == 'I' || c == 'J' || c == 'K'; }
+/// Axis and centre letters: a word with one of them is geometry.
+constexpr bool is_geometry_letter(char c) { return is_axis_letter(c) || is_centre_letter(c); }
+
+/// A byte that may not appear outside comments and strings.
+constexpr bool is_bad_byte(char c) { return lexing::is_control(c) || static_cast<unsigned char>(c) >= 0x80; }
+
+inline std::string frame_message(std::string_view construct) {
+  return std::string(construct) + " changes the working frame; kin5 does not model frame changes";
+}
+
+/// Words kept as written (after upper-casing) that do not change geometry.
+inline bool is_kept_keyword(std::string_view w) {
+  static constexpr std::array<std::string_view, 17> words = {
+      "SOFT", "BRISK", "DRIVE", "FFWON", "FFWOF", "CUT2D", "CUT2DF", "ORIWKS", "ORIMKS",
+      "ORIAXES", "ORIVECT", "COMPOF", "COMPON", "COMPCAD", "COMPCURV", "TOROTOF", "PAROTOF"};
+  return std::find(words.begin(), words.end(), w) != words.end();
+}
+
+/// G codes kept as written: they change no geometry.
+inline bool is_kept_g(long long g) {
+  return g == 9 || g == 40 || (g >= 54 && g <= 57) || g == 60 || g == 64 || (g >= 641 && g <= 645) ||
+         (g >= 601 && g <= 603) || g == 90 || g == 500 || (g >= 505 && g <= 599);
+}
+
+/// Frame words that are harmless alone (they reset the programmable frame) and errors with axes.
+inline bool is_frame_reset_keyword(std::string_view w) {
+  return w == "TRANS" || w == "ATRANS" || w == "ROT" || w == "AROT" || w == "SCALE" || w == "ASCALE" ||
+         w == "MIRROR" || w == "AMIRROR";
+}
+
+/// Frame words that always change the frame.
+inline bool is_frame_keyword(std::string_view w) {
+  return w == "TRAFRAME" || w == "TOFRAME" || w == "TOROT" || w == "PAROT" || w == "TOFRAMEX" ||
+         w == "TOFRAMEY" || w == "TOFRAMEZ";
+}
+
+/// Kept words written after T rather than before the motion word: `D1`, `H2`, `T="name"`.
+/// The reader stores kept words in that order too (the others first), so writing keeps them.
+inline bool is_late_kept(std::string_view w) {
+  return (w.size() > 1 && (w[0] == 'D' || w[0] == 'H') && is_digit(w[1])) || w.rfind("T=", 0) == 0;
+}
+
+/// Splits a call's arguments at top-level commas.
+inline std::vector<std::string_view> split_args(std::string_view args) {
+  std::vector<std::string_view> out;
+  std::size_t start = 0;
+  bool in_string = false;
+  int depth = 0;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const char c = args[i];
+    if (c == '"') in_string = !in_string;
+    if (in_string) continue;
+    if (c == '(' || c == '[') ++depth;
+    if (c == ')' || c == ']') --depth;
+    if (c == ',' && depth == 0) {
+      out.push_back(lexing::trim(args.substr(start, i - start)));
+      start = i + 1;
+    }
+  }
+  out.push_back(lexing::trim(args.substr(start)));
+  return out;
+}
+
+/// `CYCLE800()` or a CYCLE800 call whose offsets and angles (arguments 5 to 13) are all zero.
+inline bool is_cycle800_reset(std::string_view args) {
+  if (lexing::trim(args).empty()) return true;
+  const auto a = split_args(args);
+  if (a.size() < 13) return false;
+  for (std::size_t i = 4; i < 13; ++i) {
+    if (a[i].empty()) continue;
+    const auto n = read_number(a[i]);
+    if (n.length != a[i].size() || n.value != 0.0) return false;
+  }
+  return true;
+}
+
+}  // namespace kin5::program::siemens::detail

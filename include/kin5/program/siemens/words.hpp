@@ -1,0 +1,354 @@
+/// @file program/siemens/words.hpp
+/// What each word of a Siemens line means (the reader's first step after the lexer): the words of
+/// one line (lexer.hpp) recorded in a `line_parse` — block fields, arc and vector words, frame
+/// words — with the diagnostic each earns. Checks across the words of a line, and the modal state
+/// across lines, are reader.hpp's.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "../block.hpp"
+#include "../lexing.hpp"
+#include "../number.hpp"
+#include "../text.hpp"
+#include "lexer.hpp"
+#include "modal.hpp"
+#include "vocabulary.hpp"
+
+namespace kin5::program::siemens::detail {
+
+/// Everything one line says, before the modal state is applied.
+struct line_parse {
+  block b;
+  std::array<std::optional<double>, 3> centre_offset_mm;  ///< I J K as written
+  std::optional<double> radius_mm;                        ///< CR=
+  std::array<std::optional<double>, 3> vector;            ///< A3= B3= C3=
+  std::optional<arc_plane> plane;
+  std::size_t arc_column = 0, vector_column = 0, geometry_column = 0;
+  std::string arc_word;
+  bool has_geometry = false;   ///< axis, vector, centre or radius words (or failed attempts at them)
+  bool has_content = false;    ///< anything besides N, comments and MSG
+  bool has_msg = false;
+  bool frame_arguments = false;  ///< RPL= and the like
+  std::vector<std::pair<std::string, std::size_t>> frame_words;  ///< TRANS, ROT, G58, … (column)
+  std::vector<diagnostic> unknown;  ///< errors if the block has geometry, else it is passthrough
+  std::vector<diagnostic> errors, warnings;
+  bool named_tool = false;                          ///< T="name" seen
+  std::string motion_word, feed_word, tcp_word;     ///< as written, for "conflicting words"
+};
+
+inline const std::string expression_in_axis = "expressions and parameters in axis words are not supported";
+
+/// Records the words of one line in a `line_parse`: the meaning of each word and the diagnostics
+/// it earns. Checks across words wait for `finish`.
+class word_reader {
+ public:
+  word_reader(std::size_t line, const file_name& file, line_parse& out) : line_(line), file_(file), out_(out) {}
+
+  void read(const std::vector<word>& words) {
+    for (const word& w : words) read(w);
+  }
+
+ private:
+  std::size_t line_;
+  const file_name& file_;
+  line_parse& out_;
+
+  source_location at(std::size_t pos) const { return {file_, line_, pos + 1}; }
+  void error(std::size_t pos, std::string m) { out_.errors.push_back({at(pos), std::move(m)}); }
+  void unknown(std::size_t pos, std::string m) { out_.unknown.push_back({at(pos), std::move(m)}); }
+  void mark_geometry(std::size_t pos) {
+    if (!out_.has_geometry) out_.geometry_column = pos;
+    out_.has_geometry = true;
+  }
+  bool duplicate(bool present, std::size_t pos, std::string_view what) {
+    if (present) error(pos, "word '" + std::string(what) + "' appears twice");
+    return present;
+  }
+
+  void read(const word& w) {
+    switch (w.kind) {
+      case word_kind::comment: return comment(w);
+      case word_kind::address: return address(w);
+      case word_kind::keyword: return keyword(w);
+      case word_kind::system: return system_word(w);
+      case word_kind::stray_number:
+        return error(w.column, "number '" + std::string(w.text) + "' has no address letter");
+      case word_kind::bad_byte: return error(w.column, "unexpected byte " + lexing::hex_byte(w.byte, false));
+      case word_kind::block_skip: return unknown(w.column, "block skip '/' is not supported");
+      case word_kind::unknown: return unknown(w.column, "unknown word '" + std::string(w.text) + "'");
+    }
+  }
+
+  void comment(const word& w) {
+    if (!w.closed) error(w.column, "comment '(' is not closed");
+    const std::string t(lexing::trim(w.text));
+    std::optional<std::string>& c = out_.b.comment;
+    if (!c) c = t;
+    else if (!t.empty()) *c += (c->empty() ? "" : " ") + t;
+  }
+
+  void system_word(const word& w) {
+    const std::string& name = w.name;
+    if (w.assigned && name.rfind("$P_", 0) == 0 &&
+        (name.find("FRAME") != std::string::npos || name == "$P_UIFR" || name == "$P_CHBFR" || name == "$P_NCBFR"))
+      error(w.column, frame_message(name));
+    else
+      unknown(w.column, "unknown word '" + name + "'");
+  }
+
+  void address(const word& w) {
+    const std::size_t start = w.column;
+    const bool geometry = is_geometry_letter(w.letter);
+    if (!w.extension.empty()) return extended_address(w);
+    if (w.assigned) return assigned_address(w);
+    switch (w.value) {
+      case value_kind::number: return numbered(w.letter, w.number, w.text, start);
+      case value_kind::none: return no_value(w.letter, start);
+      case value_kind::parameter:
+        error(start, expression_in_axis);
+        return mark_geometry(start);
+      case value_kind::malformed: error(start, "malformed number '" + std::string(w.text) + "'"); break;
+      default: error(start, "value out of range"); break;
+    }
+    if (geometry) mark_geometry(start);
+  }
+
+  void no_value(char letter, std::size_t start) {
+    static constexpr std::string_view known = "NGXYZABCIJKFSTMDH";
+    if (known.find(letter) == std::string_view::npos) return unknown(start, std::string("unknown word '") + letter + "'");
+    error(start, std::string("word '") + letter + "' has no value");
+    if (is_geometry_letter(letter)) mark_geometry(start);
+  }
+
+  /// The plain number after `W=`, or nothing (and reported). `geometry`: an axis, vector, centre
+  /// or radius word, for which an expression is always an error.
+  std::optional<double> assigned(const word& w, std::string_view name, bool geometry) {
+    const std::size_t start = w.column;
+    if (geometry) mark_geometry(start);
+    switch (w.value) {
+      case value_kind::number: return w.number;
+      case value_kind::none: error(start, "word '" + std::string(name) + "' has no value"); break;
+      case value_kind::malformed: error(start, "malformed number '" + std::string(w.text) + "'"); break;
+      case value_kind::out_of_range: error(start, "value out of range"); break;
+      default: expression(w, geometry); break;
+    }
+    return std::nullopt;
+  }
+
+  void expression(const word& w, bool geometry) {
+    const std::size_t start = w.column;
+    const std::string value = lexing::upper(w.text);
+    if (value.rfind("IC(", 0) == 0) {
+      error(start, "incremental positioning (IC) is not supported");
+    } else if (value == "NAN" || value == "INF" || value == "-NAN" || value == "-INF" || value == "INFINITY") {
+      error(start, "value out of range");
+    } else if (geometry) {
+      error(start, expression_in_axis);
+    } else {
+      return unknown(start, "expressions and parameters are not supported");
+    }
+    if (geometry) mark_geometry(start);
+    else out_.has_content = true;
+  }
+
+  /// `X=…`: a plain number for X Y Z A B C I J K F S T, a string for T.
+  void assigned_address(const word& w) {
+    const std::size_t start = w.column;
+    if (w.value == value_kind::string) {
+      if (!w.closed) return error(w.open_column, "string is not closed");
+      if (duplicate(out_.b.tool.has_value() || out_.named_tool, start, "T")) return;
+      out_.named_tool = true;
+      out_.b.kept_words.push_back("T=" + std::string(w.text));
+      out_.has_content = true;
+      return;
+    }
+    if (w.value == value_kind::run)
+      return unknown(start, std::string("unknown word '") + w.letter + "=" + std::string(w.text) + "'");
+    const auto v = assigned(w, std::string(1, w.letter), is_geometry_letter(w.letter));
+    if (v) numbered(w.letter, *v, w.text, start);
+  }
+
+  /// `A3=…` (a tool-axis vector component); any other `L<digits>=` is unknown.
+  void extended_address(const word& w) {
+    const std::size_t start = w.column;
+    const std::string name = w.letter + std::string(w.extension);
+    if (w.value == value_kind::run) return unknown(start, "unknown word '" + name + "='");
+    const auto v = assigned(w, name, true);
+    if (!v) return;
+    const std::size_t i = static_cast<std::size_t>(w.letter - 'A');
+    if (duplicate(out_.vector[i].has_value(), start, name)) return;
+    if (!out_.vector[0] && !out_.vector[1] && !out_.vector[2]) out_.vector_column = start;
+    out_.vector[i] = *v;
+  }
+
+  void set_axis(std::optional<double>& field, char letter, double v, std::size_t start) {
+    mark_geometry(start);
+    if (duplicate(field.has_value(), start, std::string(1, letter))) return;
+    field = v;
+  }
+
+  void centre(char letter, double v, std::size_t start) {
+    auto& field = out_.centre_offset_mm[static_cast<std::size_t>(letter - 'I')];
+    mark_geometry(start);
+    if (duplicate(field.has_value(), start, std::string(1, letter))) return;
+    if (out_.arc_word.empty()) out_.arc_word = std::string(1, letter), out_.arc_column = start;
+    field = v;
+  }
+
+  /// A whole-number word (N T M D H): false, and reported, when `v` is not one.
+  bool whole(char letter, double v, std::size_t start) {
+    if (lexing::is_whole(v)) return true;
+    error(start, std::string("word '") + letter + "' needs a whole number");
+    return false;
+  }
+
+  void numbered(char letter, double v, std::string_view number_text, std::size_t start) {
+    block& b = out_.b;
+    switch (letter) {
+      case 'N':
+        if (whole(letter, v, start) && !duplicate(b.number.has_value(), start, "N")) b.number = static_cast<long long>(v);
+        return;
+      case 'G': return g_word(v, std::string(1, letter) + std::string(number_text), start);
+      case 'X': return set_axis(b.axes.x_mm, letter, v, start);
+      case 'Y': return set_axis(b.axes.y_mm, letter, v, start);
+      case 'Z': return set_axis(b.axes.z_mm, letter, v, start);
+      case 'A': return set_axis(b.axes.a_deg, letter, v, start);
+      case 'B': return set_axis(b.axes.b_deg, letter, v, start);
+      case 'C': return set_axis(b.axes.c_deg, letter, v, start);
+      case 'I': case 'J': case 'K': return centre(letter, v, start);
+      case 'F': case 'S': return feed_or_speed(letter, v, start);
+      case 'T':
+        out_.has_content = true;
+        if (whole(letter, v, start) && !duplicate(b.tool.has_value() || out_.named_tool, start, "T"))
+          b.tool = static_cast<long long>(v);
+        return;
+      case 'M':
+        out_.has_content = true;
+        if (whole(letter, v, start)) b.m_codes.push_back(static_cast<int>(v));
+        return;
+      case 'D': case 'H':
+        out_.has_content = true;
+        if (whole(letter, v, start)) b.kept_words.push_back(letter + std::to_string(static_cast<long long>(v)));
+        return;
+      default: unknown(start, "unknown word '" + std::string(1, letter) + std::string(number_text) + "'");
+    }
+  }
+
+  void feed_or_speed(char letter, double v, std::size_t start) {
+    out_.has_content = true;
+    if (v < 0) return error(start, "value out of range");
+    auto& field = letter == 'F' ? out_.b.feed : out_.b.spindle_rpm;
+    if (duplicate(field.has_value(), start, std::string(1, letter))) return;
+    field = v;
+  }
+
+  bool conflict(bool clash, std::string_view earlier, std::string_view later, std::size_t start) {
+    if (clash) error(start, "conflicting words '" + std::string(earlier) + "' and '" + std::string(later) + "'");
+    return clash;
+  }
+
+  void g_word(double v, const std::string& as_written, std::size_t start) {
+    block& b = out_.b;
+    if (!lexing::is_whole(v) || v > 9999) return unknown(start, "unknown word '" + as_written + "'");
+    const auto g = static_cast<long long>(v);
+    const std::string canonical = "G" + std::to_string(g);  // G017, G+17, G17. → G17
+    out_.has_content = true;
+    if (g <= 3) {
+      const motion_kind m = g == 0 ? motion_kind::rapid : g == 1 ? motion_kind::linear : g == 2 ? motion_kind::arc_cw : motion_kind::arc_ccw;
+      if (conflict(b.motion && *b.motion != m, out_.motion_word, canonical, start)) return;
+      b.motion = m;
+      out_.motion_word = canonical;
+    } else if (g >= 17 && g <= 19) {
+      out_.plane = g == 17 ? arc_plane::xy : g == 18 ? arc_plane::zx : arc_plane::yz;
+      b.kept_words.push_back(canonical);
+    } else if (is_kept_g(g)) {
+      b.kept_words.push_back(canonical);
+    } else if (g == 93 || g == 94) {
+      const feed_unit f = g == 93 ? feed_unit::inverse_time : feed_unit::per_minute;
+      if (conflict(b.feed_mode && *b.feed_mode != f, out_.feed_word, canonical, start)) return;
+      b.feed_mode = f;
+      out_.feed_word = canonical;
+    } else {
+      other_g(g, canonical, start);
+    }
+  }
+
+  void other_g(long long g, const std::string& canonical, std::size_t start) {
+    if (g == 91) error(start, "incremental positioning (G91) is not supported");
+    else if (g == 70 || g == 700) error(start, "inch programs are not supported");
+    else if (g == 71 || g == 710) out_.b.metric = true;
+    else if (g == 53 || g == 153) out_.b.machine_coordinates = true;
+    else if (g == 58 || g == 59) out_.frame_words.emplace_back(canonical, start);
+    else unknown(start, "unknown word '" + canonical + "'");
+  }
+
+  void keyword(const word& w) {
+    if (w.value == value_kind::call) return call(w);
+    if (w.assigned) return keyword_assignment(w);
+    const std::string& name = w.name;
+    const std::size_t start = w.column;
+    block& b = out_.b;
+    const bool known = name == "TRAORI" || name == "TRAFOOF" || name == "SUPA" || is_kept_keyword(name) ||
+                       is_frame_reset_keyword(name) || is_frame_keyword(name);
+    if (!known) return unknown(start, "unknown word '" + name + "'");
+    out_.has_content = true;
+    if (name == "TRAORI" || name == "TRAFOOF") set_tcp(name == "TRAORI", name, start);
+    else if (name == "SUPA") b.machine_coordinates = true;
+    else if (is_kept_keyword(name)) b.kept_words.push_back(name);
+    else if (is_frame_reset_keyword(name)) out_.frame_words.emplace_back(name, start);
+    else error(start, frame_message(name));
+  }
+
+  void set_tcp(bool on, const std::string& word, std::size_t start) {
+    if (conflict(out_.b.tcp && *out_.b.tcp != on, out_.tcp_word, word, start)) return;
+    out_.b.tcp = on;
+    out_.tcp_word = word;
+  }
+
+  /// `NAME(…)`: TRAORI(…), MSG("…"), CYCLE800(…); anything else is unknown.
+  void call(const word& w) {
+    const std::string& name = w.name;
+    const std::size_t start = w.column;
+    if (!w.closed) return error(w.open_column, "missing ')'");
+    const std::string args(w.text);
+    if (name == "TRAORI") {
+      out_.has_content = true;
+      const std::string_view a = lexing::trim(args);
+      if (!a.empty() && a != "1")
+        out_.warnings.push_back({at(start), "arguments of TRAORI(" + std::string(a) + ") are not kept; written as TRAORI"});
+      set_tcp(true, name, start);
+    } else if (name == "MSG") {
+      out_.has_msg = true;
+      out_.b.kept_words.push_back("MSG(" + args + ")");
+    } else if (name == "CYCLE800") {
+      out_.has_content = true;
+      if (is_cycle800_reset(args)) out_.b.kept_words.push_back("CYCLE800(" + args + ")");
+      else error(start, frame_message(name));
+    } else if (is_frame_reset_keyword(name) || is_frame_keyword(name)) {
+      out_.has_content = true;
+      error(start, frame_message(name));
+    } else {
+      unknown(start, "unknown word '" + name + "'");
+    }
+  }
+
+  void keyword_assignment(const word& w) {
+    if (w.name != "CR") {
+      if (w.name == "RPL") out_.frame_arguments = true;
+      return unknown(w.column, "unknown word '" + w.name + "'");
+    }
+    const auto v = assigned(w, "CR", true);
+    if (!v || duplicate(out_.radius_mm.has_value(), w.column, "CR")) return;
+    if (out_.arc_word.empty()) out_.arc_word = "CR", out_.arc_column = w.column;
+    out_.radius_mm = *v;
+  }
+};
+
+}  // namespace kin5::program::siemens::detail

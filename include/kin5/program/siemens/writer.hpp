@@ -1,0 +1,260 @@
+/// @file program/siemens/writer.hpp
+/// Blocks written as Siemens 840D text, one line per block, in the order
+/// `N  TRAORI/TRAFOOF  G71  G93/G94  kept words  SUPA  G17-G19  G0-G3  X Y Z A B C  A3= B3= C3=
+/// I J K / CR=  F  S  T  D H T="name"  M  ;comment`. Blocks read from another dialect keep their
+/// passthrough text and kept words in a comment. A block Siemens cannot express (inch units, a
+/// rapid arc, an arc without a known start point) throws `std::invalid_argument`
+/// ("file:line: reason").
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include "../block.hpp"
+#include "../lexing.hpp"
+#include "../number.hpp"
+#include "../text.hpp"
+#include "modal.hpp"
+#include "vocabulary.hpp"
+
+namespace kin5::program::siemens {
+
+/// Decimals written for each kind of number. Spindle speeds use `feed_decimals`.
+struct write_options {
+  int linear_decimals = 3;  ///< X Y Z, I J K, CR= (mm)
+  int angle_decimals = 3;   ///< A B C (degrees)
+  int feed_decimals = 1;    ///< F (mm/min or 1/min) and S (1/min)
+  int vector_decimals = 7;  ///< A3= B3= C3= tool-axis components
+};
+
+namespace detail {
+
+inline void append_word(std::string& line, std::string_view word) {
+  if (!line.empty()) line += ' ';
+  line += word;
+}
+
+/// Appends a code word: a letter and a whole number (`N10`, `T5`, `M30`).
+inline void append_code(std::string& line, char letter, long long n) {
+  if (!line.empty()) line += ' ';
+  line += letter;
+  line += std::to_string(n);
+}
+
+inline std::string checked_line(std::string s, const block& b, const std::string& file) {
+  if (s.find_first_of("\r\n") != std::string::npos)
+    throw std::invalid_argument(file + ":" + std::to_string(b.where.line) + ": text with a line break cannot be written");
+  return s;
+}
+
+inline std::string program_file_name(std::string name) {
+  for (char& c : name)
+    if (!is_ident_char(c)) c = '_';
+  if (name.empty()) name = "KIN5";
+  if (!(name.size() > 4 && lexing::upper(name.substr(name.size() - 4)) == "_SPF")) name += "_MPF";
+  return "%_N_" + name;
+}
+
+inline std::optional<arc_plane> plane_of(std::string_view kept_word) {
+  if (kept_word.size() < 2 || to_upper(kept_word[0]) != 'G') return std::nullopt;
+  const auto n = read_number(kept_word.substr(1));
+  if (n.length + 1 != kept_word.size()) return std::nullopt;
+  if (n.value == 17) return arc_plane::xy;
+  if (n.value == 18) return arc_plane::zx;
+  if (n.value == 19) return arc_plane::yz;
+  return std::nullopt;
+}
+
+constexpr std::string_view motion_word(motion_kind m) {
+  switch (m) {
+    case motion_kind::rapid: return "G0";
+    case motion_kind::linear: return "G1";
+    case motion_kind::arc_cw: return "G2";
+    case motion_kind::arc_ccw: return "G3";
+  }
+  return "G1";
+}
+
+constexpr std::string_view plane_word(arc_plane p) {
+  return p == arc_plane::xy ? "G17" : p == arc_plane::zx ? "G18" : "G19";
+}
+
+}  // namespace detail
+
+/// Writes blocks as Siemens 840D text one at a time, remembering what the text written so far
+/// leaves modal (motion word, plane, position), so a program of any length is written in
+/// constant memory. `write(program)` below is this writer applied to every block.
+class writer {
+ public:
+  /// A writer for blocks read from `source` (another dialect's passthrough text and kept words
+  /// go into comments); `file` names the program in messages.
+  explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
+      : same_(source == dialect_id::siemens), program_file_(std::move(file)), options_(chosen) {}
+
+  /// Appends the text of block `b` to `out` (nothing for a block with nothing to say). Throws
+  /// `std::invalid_argument` ("file:line: reason") for a block Siemens cannot express.
+  void write(std::string& out, const block& b) {
+    const std::string& file = b.where.file.empty() ? program_file_ : b.where.file.str();
+    if (b.passthrough) {
+      out += detail::checked_line(same_ ? b.text : "; " + b.text, b, file) + '\n';
+      return;
+    }
+    if (b.program_begin) {
+      out += detail::checked_line(detail::program_file_name(*b.program_begin), b, file) + '\n';
+      written_ = detail::modal_state{};
+      model_motion_.reset();
+    }
+    std::string line;
+    settings(line, b, file);
+    motion(line, b, file);
+    axes(line, b, file);
+    arc_data(line, b, file);
+    tail(line, b);
+    written_.move(b);
+    if (line.empty() && !same_ && !b.program_begin && !b.text.empty()) {  // nothing Siemens can say: the source text
+      line = "; " + b.text;
+      std::replace(line.begin(), line.end(), '\n', ' ');
+      std::replace(line.begin(), line.end(), '\r', ' ');
+    }
+    if (line.empty()) return;  // nothing to say (a lone header has been written)
+    if (b.program_begin && b.number && line == "N" + std::to_string(*b.number)) return;
+    out += detail::checked_line(std::move(line), b, file) + '\n';
+  }
+
+ private:
+  bool same_;                                // the blocks were read as Siemens
+  std::string program_file_;
+  write_options options_;
+  detail::modal_state written_;              // what the written text leaves the controller in
+  std::optional<motion_kind> model_motion_;  // the program's own modal motion
+  bool ended_ = false;                       // the last block written had an M2 / M30 M function
+
+  [[noreturn]] static void fail(const block& b, const std::string& file, const std::string& why) {
+    throw std::invalid_argument(file + ":" + std::to_string(b.where.line) + ": " + why);
+  }
+
+  void number(std::string& line, std::string_view address, double v, int decimals) {
+    detail::append_word(line, std::string(address) + format_number(v, decimals));
+  }
+
+  /// `N`, TRAORI / TRAFOOF, G71, G93 / G94, kept words (same dialect), SUPA.
+  void settings(std::string& line, const block& b, const std::string& file) {
+    if (b.number) detail::append_code(line, 'N', *b.number);
+    if (b.tcp) detail::append_word(line, *b.tcp ? "TRAORI" : "TRAFOOF");
+    if (b.metric) {
+      if (!*b.metric) fail(b, file, "inch units cannot be written; kin5 writes millimetres");
+      detail::append_word(line, "G71");
+    }
+    if (b.feed_mode) detail::append_word(line, *b.feed_mode == feed_unit::inverse_time ? "G93" : "G94");
+    if (same_) {
+      for (const auto& w : b.kept_words) {
+        if (detail::is_late_kept(w)) continue;
+        detail::append_word(line, w);
+        if (const auto plane = detail::plane_of(w)) written_.plane = *plane;
+      }
+    }
+    if (b.machine_coordinates) detail::append_word(line, "SUPA");
+  }
+
+  /// G17–G19 for an arc in another plane, and G0–G3 where the written text needs it.
+  void motion(std::string& line, const block& b, const std::string& file) {
+    std::optional<motion_kind> word = b.motion;
+    if (b.motion) model_motion_ = b.motion;
+    if (b.feed_rapid) {
+      if (b.arc) fail(b, file, "an arc at rapid traverse cannot be written");
+      word = motion_kind::rapid;
+    } else if (!word && model_motion_ && written_.motion != model_motion_ && (b.moves() || b.arc)) {
+      word = model_motion_;
+    }
+    if (word) written_.motion = word;
+    if (b.arc) {
+      if (!detail::is_arc(written_.motion)) fail(b, file, "arc data without G2 or G3 cannot be written");
+      if (b.arc->plane != written_.plane) {
+        detail::append_word(line, detail::plane_word(b.arc->plane));
+        written_.plane = b.arc->plane;
+      }
+    }
+    if (word) detail::append_word(line, detail::motion_word(*word));
+  }
+
+  /// X Y Z A B C, and A3= B3= C3= for a tool-axis vector.
+  void axes(std::string& line, const block& b, const std::string& file) {
+    const axis_words& a = b.axes;
+    if (a.x_mm) number(line, "X", *a.x_mm, options_.linear_decimals);
+    if (a.y_mm) number(line, "Y", *a.y_mm, options_.linear_decimals);
+    if (a.z_mm) number(line, "Z", *a.z_mm, options_.linear_decimals);
+    if (a.a_deg) number(line, "A", *a.a_deg, options_.angle_decimals);
+    if (a.b_deg) number(line, "B", *a.b_deg, options_.angle_decimals);
+    if (a.c_deg) number(line, "C", *a.c_deg, options_.angle_decimals);
+    if (a.tool_axis) {
+      if (a.has_rotary()) fail(b, file, "rotary axes and a tool-axis vector in one block cannot be written");
+      number(line, "A3=", a.tool_axis->x, options_.vector_decimals);
+      number(line, "B3=", a.tool_axis->y, options_.vector_decimals);
+      number(line, "C3=", a.tool_axis->z, options_.vector_decimals);
+    }
+  }
+
+  /// I J K relative to the last written point (zero off-plane offsets left out), or CR=.
+  void arc_data(std::string& line, const block& b, const std::string& file) {
+    if (b.arc && b.arc->centre_mm) {
+      const auto start = written_.position();
+      if (!start) fail(b, file, "arc centre needs a known start point (X Y Z)");
+      const vec3 offset = *b.arc->centre_mm - *start;
+      const std::array<double, 3> o = {offset.x, offset.y, offset.z};
+      const std::array<bool, 3> in_plane = {b.arc->plane != arc_plane::yz, b.arc->plane != arc_plane::zx,
+                                            b.arc->plane != arc_plane::xy};
+      for (std::size_t i = 0; i < 3; ++i) {
+        const std::string v = format_number(o[i], options_.linear_decimals);
+        if (in_plane[i] || v != "0") detail::append_word(line, std::string(1, static_cast<char>('I' + i)) + v);
+      }
+    } else if (b.arc && b.arc->radius_mm) {
+      number(line, "CR=", *b.arc->radius_mm, options_.linear_decimals);
+    }
+  }
+
+  /// F S T, D H T="name" (same dialect), M codes, the program end, the comment.
+  void tail(std::string& line, const block& b) {
+    if (b.feed) number(line, "F", *b.feed, options_.feed_decimals);
+    if (b.spindle_rpm) number(line, "S", *b.spindle_rpm, options_.feed_decimals);
+    if (b.tool) detail::append_code(line, 'T', *b.tool);
+    if (same_) {
+      for (const auto& w : b.kept_words)
+        if (detail::is_late_kept(w)) detail::append_word(line, w);
+    }
+    bool ends = false;  // an M2 / M30 written in this block: never a second one
+    for (int m : b.m_codes) {
+      // M91 / M92 of another dialect are machine coordinates, already written as SUPA
+      if (!same_ && b.machine_coordinates && (m == 91 || m == 92)) continue;
+      detail::append_code(line, 'M', m);
+      ends = ends || m == 2 || m == 30;
+    }
+    // A program end right after an M2 / M30 M function (Heidenhain `M30`, then `END PGM`) says it again.
+    const bool end_written = ended_ && !same_;
+    ended_ = ends;
+    if (b.program_end && !ends && !end_written) detail::append_word(line, *b.program_end == "M2" ? "M2" : "M30");
+    std::string comment;
+    if (!same_) {
+      for (const auto& w : b.kept_words) comment += (comment.empty() ? "" : " ") + w;
+    }
+    if (b.comment && !b.comment->empty()) comment += (comment.empty() ? "" : " ") + *b.comment;
+    if (b.comment || !comment.empty()) line += line.empty() ? ";" : " ;";
+    if (!comment.empty()) line += " " + comment;
+  }
+};
+
+/// Writes `p` as a Siemens 840D program, one line per block (see the file comment). Throws
+/// `std::invalid_argument` ("file:line: reason") for a block Siemens cannot express.
+inline std::string write(const program& p, const write_options& options = {}) {
+  writer w(p.language, p.file, options);
+  std::string out;
+  for (const block& b : p.blocks) w.write(out, b);
+  return out;
+}
+
+}  // namespace kin5::program::siemens
