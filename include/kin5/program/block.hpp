@@ -31,18 +31,9 @@ enum class dialect {
   apt,         ///< APT cutter-location data (GOTO/, FEDRAT/)
 };
 
-/// The value that names a dialect at run time: `siemens::dialect::id`, … (program/dialect.hpp).
+/// The value that names a dialect at run time: `siemens::dialect::id`, … (program/dialect.hpp,
+/// which also gives its `name`).
 using dialect_id = dialect;
-
-constexpr std::string_view name(dialect d) {
-  switch (d) {
-    case dialect::siemens: return "siemens";
-    case dialect::heidenhain: return "heidenhain";
-    case dialect::iso: return "iso";
-    case dialect::apt: return "apt";
-  }
-  return "?";
-}
 
 /// The name of a program's file, shared by every location in it: copying one copies a pointer,
 /// so the blocks of a long program hold one string, not one each. Reads as a `const std::string&`.

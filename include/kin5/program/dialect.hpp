@@ -8,6 +8,7 @@
 /// | member | what |
 /// |---|---|
 /// | `id` | the value that names it at run time (`program::dialect`) |
+/// | `name` | its name on the command line and in messages ("siemens") |
 /// | `can` | its `capabilities` (program/dialect_id.hpp) |
 /// | `markers` | an array of `marker`s only it writes, for `guess_dialect` |
 /// | `read_blocks(text, file, diagnostics, on_block)` | its streaming reader |
@@ -39,6 +40,7 @@ concept nc_dialect = requires(std::string_view text, const std::string& file, re
                               const block_sink& on_block, const program& p, std::string& out, const block& b,
                               typename D::writer& w) {
   { D::id } -> std::convertible_to<dialect_id>;
+  { D::name } -> std::convertible_to<std::string_view>;
   { D::can } -> std::convertible_to<capabilities>;
   { D::markers.size() } -> std::convertible_to<std::size_t>;
   { D::markers[0] } -> std::convertible_to<marker>;
@@ -72,6 +74,11 @@ constexpr auto visit_dialect(dialect d, F&& f, Otherwise&& otherwise) -> decltyp
   return result ? std::move(*result) : otherwise();
 }
 
+/// The name of dialect `d` ("siemens", "heidenhain", …); "?" for a value that names no dialect.
+constexpr std::string_view name(dialect d) {
+  return visit_dialect(d, []<class D>(std::type_identity<D>) { return D::name; }, [] { return std::string_view("?"); });
+}
+
 namespace detail {
 template <class List>
 struct all_dialects;
@@ -83,7 +90,7 @@ constexpr bool distinct_ids() {
   bool distinct = true;
   for_each_dialect([&]<class A>(std::type_identity<A>, std::size_t i) {
     for_each_dialect([&]<class B>(std::type_identity<B>, std::size_t j) {
-      if (i != j && (A::id == B::id || name(A::id) == name(B::id))) distinct = false;
+      if (i != j && (A::id == B::id || A::name == B::name)) distinct = false;
     });
   });
   return distinct;
@@ -102,7 +109,7 @@ constexpr capabilities capabilities_of(dialect d) {
 constexpr std::optional<dialect> parse_dialect(std::string_view s) {
   std::optional<dialect> found;
   for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t) {
-    if (name(D::id) == s) found = D::id;
+    if (D::name == s) found = D::id;
   });
   return found;
 }

@@ -18,6 +18,7 @@
 
 #include "../core/vec.hpp"
 #include "../program/block.hpp"
+#include "../program/dialect.hpp"
 #include "../program/text.hpp"
 #include "arc_plane.hpp"
 

@@ -27,6 +27,7 @@
 
 #include "../core/vec.hpp"
 #include "../program/block.hpp"
+#include "../program/dialect.hpp"
 
 namespace kin5 {
 

@@ -30,6 +30,7 @@ inline read_result read(std::string_view text, std::string file_name) {
 /// The Heidenhain conversational dialect: its id, capabilities, file markers, reader and writer.
 struct dialect {
   static constexpr dialect_id id = dialect_id::heidenhain;
+  static constexpr std::string_view name = "heidenhain";
   static constexpr capabilities can{.tcp_switch = true, .rotary_axis_words = true, .tool_axis_vectors = true,
                                     .arcs = true, .arc_centre_block = true};
   static constexpr std::array<marker, 3> markers{{{"BEGIN PGM", marker::place::block_start},

@@ -29,6 +29,7 @@ inline read_result read(std::string_view text, std::string file_name) {
 /// The Siemens 840D dialect: its id, capabilities, file markers, reader and writer.
 struct dialect {
   static constexpr dialect_id id = dialect_id::siemens;
+  static constexpr std::string_view name = "siemens";
   static constexpr capabilities can{.inverse_time_feed = true, .tcp_switch = true, .rotary_axis_words = true,
                                     .tool_axis_vectors = true, .arcs = true};
   static constexpr std::array<marker, 3> markers{{{"%_N_", marker::place::block_start},
