@@ -20,5 +20,7 @@ void add_solve_command(CLI::App& app, int& exit_code);
 void add_fk_command(CLI::App& app, int& exit_code);
 // Programs (issue: NC programs): translate, reverse, post.
 void add_program_commands(CLI::App& app, int& exit_code);
+// Matchability: a pair's table, a program's report and setup search (needs kin5::reach).
+void add_match_command(CLI::App& app, int& exit_code);
 
 }  // namespace kin5::tool

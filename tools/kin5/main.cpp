@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   kin5::tool::add_solve_command(app, exit_code);
   kin5::tool::add_fk_command(app, exit_code);
   kin5::tool::add_program_commands(app, exit_code);
+  kin5::tool::add_match_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

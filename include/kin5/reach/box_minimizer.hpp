@@ -115,11 +115,16 @@ class box_problem final : public Ipopt::TNLP {
 
 }  // namespace detail
 
+/// How Ipopt gets second derivatives: from the objective (`exact`), or by its limited-memory
+/// quasi-Newton update (`quasi_newton`: the objective need not fill the Hessian).
+enum class hessian { exact, quasi_newton };
+
 /// The best local minimum of `f` over the box [lower, upper] found from each of `starts`.
 /// Throws std::runtime_error if Ipopt cannot be initialised.
 inline box_minimum minimize_in_box(const objective& f, const std::vector<double>& lower,
                                    const std::vector<double>& upper,
-                                   const std::vector<std::vector<double>>& starts) {
+                                   const std::vector<std::vector<double>>& starts,
+                                   hessian second_derivatives = hessian::exact) {
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetIntegerValue("print_level", 0);
   app->Options()->SetStringValue("sb", "yes");  // no banner
@@ -132,6 +137,11 @@ inline box_minimum minimize_in_box(const objective& f, const std::vector<double>
   app->Options()->SetIntegerValue("mumps_mem_percent", 5);
   app->Options()->SetIntegerValue("mumps_permuting_scaling", 0);
   app->Options()->SetIntegerValue("mumps_scaling", 0);
+  if (second_derivatives == hessian::quasi_newton) {
+    app->Options()->SetStringValue("hessian_approximation", "limited-memory");
+    app->Options()->SetNumericValue("tol", 1e-8);  // a travel in radians: 1e-8 is plenty
+    app->Options()->SetIntegerValue("max_iter", 40);
+  }
   if (app->Initialize() != Ipopt::Solve_Succeeded) throw std::runtime_error("kin5::reach: Ipopt failed to initialise");
   box_minimum best;
   for (const auto& start : starts) {

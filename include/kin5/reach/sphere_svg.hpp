@@ -6,6 +6,7 @@
 /// every run: fixed formatting, nothing that depends on time or locale.
 #pragma once
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -64,8 +65,16 @@ inline void cells(std::string& out, const sphere_raster& r) {
           if (static_cast<std::size_t>(r.at(disc, row, col)) != c) { ++col; continue; }
           int end = col;
           while (end < r.cells_across && static_cast<std::size_t>(r.at(disc, row, end)) == c) ++end;
-          d += "M" + std::to_string(col) + " " + std::to_string(row) + "h" + std::to_string(end - col) + "v1h-" +
-               std::to_string(end - col) + "z";
+          const std::string run = std::to_string(end - col);
+          d += 'M';
+          d += std::to_string(col);
+          d += ' ';
+          d += std::to_string(row);
+          d += 'h';
+          d += run;
+          d += "v1h-";
+          d += run;
+          d += 'z';
           col = end;
         }
       if (!d.empty()) out += std::string("<path fill=\"") + map_palette[c].fill + "\" d=\"" + d + "\"/>\n";
@@ -79,7 +88,7 @@ inline const char* stroke_of(curve_style s) {
     case curve_style::target_edge: return "stroke=\"#000000\" stroke-width=\"1.8\"";
     case curve_style::source_branch: return "stroke=\"#000000\" stroke-width=\"1.3\" stroke-dasharray=\"7 4\"";
     case curve_style::source_travel: return "stroke=\"#000000\" stroke-width=\"1.3\" stroke-dasharray=\"2 3\"";
-    case curve_style::source_circle: return "stroke-width=\"5\"";
+    case curve_style::source_circle: return "stroke-width=\"3\"";
   }
   return "";
 }
@@ -115,6 +124,21 @@ inline void markers(std::string& out, const std::vector<map_marker>& ms) {
       if ((upper && m.u.z < -1e-12) || (!upper && m.u.z > 1e-12)) continue;
       const auto px = to_px(project(m.u, upper));
       marker(out, m.source, px[0], px[1]);
+    }
+}
+
+/// Dots for tool axes; an axis on the equator shows on both discs. Repeated dots are drawn once.
+inline void points(std::string& out, const std::vector<vec3>& us) {
+  std::vector<std::string> seen;
+  for (const vec3& u : us)
+    for (bool upper : {true, false}) {
+      if ((upper && u.z < -1e-12) || (!upper && u.z > 1e-12)) continue;
+      const auto px = to_px(project(normalized(u), upper));
+      std::string dot = "<circle cx=\"" + num(px[0]) + "\" cy=\"" + num(px[1]) +
+                        "\" r=\"2.5\" fill=\"#000000\" stroke=\"#ffffff\" stroke-width=\"0.8\"/>\n";
+      if (std::find(seen.begin(), seen.end(), dot) != seen.end()) continue;
+      seen.push_back(dot);
+      out += dot;
     }
 }
 
@@ -169,9 +193,10 @@ inline void legend(std::string& out, const map_text& text) {
 
 }  // namespace svg_detail
 
-/// The SVG document of a map.
+/// The SVG document of a map; `points`, if any, are drawn as dots (a program's tool axes).
 inline std::string sphere_svg(const sphere_raster& raster, const std::vector<map_curve>& curves,
-                              const std::vector<map_marker>& markers, const map_text& text) {
+                              const std::vector<map_marker>& markers, const map_text& text,
+                              const std::vector<vec3>& points = {}) {
   using namespace svg_detail;
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(width_px) + "\" height=\"" + num(height_px) +
@@ -184,6 +209,7 @@ inline std::string sphere_svg(const sphere_raster& raster, const std::vector<map
   frame(out);
   svg_detail::curves(out, curves);
   svg_detail::markers(out, markers);
+  svg_detail::points(out, points);
   legend(out, text);
   out += "</svg>\n";
   return out;

@@ -1,0 +1,157 @@
+/// @file reach/program_report.hpp
+/// What a target machine makes of one program: its motion blocks per class, the unreachable
+/// ones as runs of lines with their worst gap, the rotary travel the target needs (the
+/// translator's own branch plan), and the tool-tip range in the target's workpiece frame.
+/// Classes and gaps come from `translate` itself, so the report and a translation never
+/// disagree; the tool axes come from `reverse` (one per motion block written as a GOTO).
+/// @code
+///   const auto r = kin5::reach::make_program_report<From, To>(nc, kin5::default_setup<From, To>(), true);
+///   std::cout << kin5::reach::report_markdown(r);
+/// @endcode
+#pragma once
+
+#include <array>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "../translate/translate.hpp"
+#include "pair_geometry.hpp"
+#include "setup_search.hpp"
+
+namespace kin5::reach {
+
+/// Consecutive unreachable motion blocks (no reachable motion block between them).
+struct unreachable_run {
+  std::size_t first_line = 0, last_line = 0;
+  std::size_t blocks = 0;
+  double worst_gap = 0.0;  ///< radians
+};
+
+/// The range of one target rotary axis over the planned path, degrees, and its travel.
+struct axis_span {
+  char letter = 0;
+  double lo = 0.0, hi = 0.0;
+  bool bounded = false;
+  double travel_lo = 0.0, travel_hi = 0.0;
+};
+
+/// One program on one target under one setup.
+struct program_report {
+  std::string file, from, to;
+  rigid_transform setup;
+  bool default_setup = true;
+  std::array<std::size_t, 3> per_class{};  ///< by `matchability`
+  std::vector<unreachable_run> unreachable;
+  std::vector<axis_span> rotary;            ///< the target's rotary axes, over reachable blocks
+  double rotary_travel = 0.0;               ///< planned Σ|Δ|, radians
+  bool has_tips = false;
+  vec3 tip_lo{}, tip_hi{};                  ///< tool tips in the target's workpiece frame, mm
+  std::vector<program::diagnostic> other_errors;  ///< what else stops a translation
+  std::vector<vec3> source_axes;            ///< tool axes of the motion blocks, source frame
+  std::size_t motion_blocks() const { return per_class[0] + per_class[1] + per_class[2]; }
+};
+
+namespace detail {
+
+inline std::vector<unreachable_run> runs_of(const std::vector<block_report>& reports) {
+  std::vector<unreachable_run> out;
+  bool open = false;
+  for (const auto& r : reports) {
+    if (r.match != matchability::unreachable) {
+      open = false;
+      continue;
+    }
+    if (!open) out.push_back({r.where.line, r.where.line, 0, 0.0});
+    open = true;
+    auto& run = out.back();
+    run.last_line = r.where.line;
+    ++run.blocks;
+    run.worst_gap = std::max(run.worst_gap, r.gap.value);
+  }
+  return out;
+}
+
+template <machine To>
+std::vector<axis_span> spans_of(const rotary_path<To>& path) {
+  std::vector<axis_span> out;
+  for (std::size_t i = 0; i < rotary_count<To>; ++i) {
+    const auto& axis = To::rotary[i];
+    axis_span s{to_char(axis.letter), 0.0, 0.0, !axis.travel.continuous, axis.travel.lower.value, axis.travel.upper.value};
+    bool first = true;
+    for (const auto& a : path.angles) {
+      if (!a) continue;
+      const double v = to_degrees((*a)[i]).value;
+      s.lo = first ? v : std::min(s.lo, v);
+      s.hi = first ? v : std::max(s.hi, v);
+      first = false;
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace detail
+
+/// The report of program `nc` (of machine From) on machine To under `setup`.
+template <machine From, machine To>
+program_report make_program_report(const program::program& nc, const rigid_transform& setup, bool is_default_setup) {
+  program_report out;
+  out.file = nc.file, out.from = From::id, out.to = To::id;
+  out.setup = setup, out.default_setup = is_default_setup;
+  translate_options options;
+  options.setup = setup;
+  const translation t = translate<From, To>(nc, options);
+  out.per_class = t.per_class;
+  out.unreachable = detail::runs_of(t.reports);
+  std::set<std::size_t> unreachable_lines;
+  for (const auto& r : t.reports)
+    if (r.match == matchability::unreachable) unreachable_lines.insert(r.where.line);
+  for (const auto& e : t.errors)
+    if (!unreachable_lines.count(e.where.line)) out.other_errors.push_back(e);
+  const translation cl = reverse<From>(nc);
+  std::vector<vec3> target_axes;
+  for (const auto& b : cl.output.blocks) {
+    if (!b.axes.tool_axis) continue;
+    const vec3 u = normalized(*b.axes.tool_axis);
+    out.source_axes.push_back(u);
+    target_axes.push_back(setup.rotation * u);
+    const vec3 tip = setup.map_point({b.axes.x_mm.value_or(0.0), b.axes.y_mm.value_or(0.0), b.axes.z_mm.value_or(0.0)});
+    out.tip_lo = out.has_tips ? vec3{std::min(out.tip_lo.x, tip.x), std::min(out.tip_lo.y, tip.y), std::min(out.tip_lo.z, tip.z)} : tip;
+    out.tip_hi = out.has_tips ? vec3{std::max(out.tip_hi.x, tip.x), std::max(out.tip_hi.y, tip.y), std::max(out.tip_hi.z, tip.z)} : tip;
+    out.has_tips = true;
+  }
+  const rotary_path<To> path = plan_rotary_path<To>(target_axes);
+  out.rotary = detail::spans_of<To>(path);
+  out.rotary_travel = path.travel;
+  return out;
+}
+
+/// The setup a search proposes for a program: the first rotation of the ranking with which the
+/// whole program translates, and the report with it.
+struct chosen_setup {
+  setup_candidate candidate;
+  program_report report;
+  std::size_t passed_over = 0;  ///< rotations of less travel whose translation fails otherwise
+  std::string first_reason;     ///< the first error of the first one passed over
+};
+
+/// Tries `search.ranked` in order (offset: the pair's default translation, mm).
+template <machine From, machine To>
+std::optional<chosen_setup> choose_setup(const program::program& nc, const setup_search_result& search,
+                                         const vec3& offset_mm) {
+  chosen_setup out;
+  for (const auto& c : search.ranked) {
+    program_report r = make_program_report<From, To>(nc, {c.rotation, offset_mm}, false);
+    if (r.unreachable.empty() && r.other_errors.empty()) {
+      out.candidate = c;
+      out.report = std::move(r);
+      return out;
+    }
+    if (out.passed_over++ == 0)
+      out.first_reason = r.other_errors.empty() ? "blocks unreachable" : r.other_errors.front().message;
+  }
+  return std::nullopt;
+}
+
+}  // namespace kin5::reach

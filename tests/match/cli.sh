@@ -1,0 +1,57 @@
+#!/bin/sh
+# End-to-end checks of `kin5 match`: the pair's table in each format, a program's report, and
+# the setup search — the printed `kin5 translate --setup-rotation …` must translate the program
+# that does not translate with the pair's default setup.
+#   cli.sh KIN5 DIR     (DIR holds side.mpf and flank.mpf)
+set -u
+kin5=$1 dir=$2
+out=$(mktemp -d) || exit 2
+trap 'rm -rf "$out"' EXIT
+fail=0
+report() { echo "FAIL: $*" >&2; fail=1; }
+run() {  # run EXPECTED_EXIT NAME ARGS...: stdout to $out/NAME
+  want=$1 name=$2; shift 2
+  "$kin5" "$@" >"$out/$name" 2>"$out/$name.err"
+  got=$?
+  [ "$got" = "$want" ] || { report "$name: exit $got, expected $want"; cat "$out/$name.err" >&2; }
+}
+has() {  # has NAME TEXT: stdout of NAME holds the line fragment TEXT
+  grep -qF -- "$2" "$out/$1" || report "$1: no line with: $2"
+}
+
+# The pair's table (Tian et al. 2010 §1.1, worked in docs/matchability.md).
+run 0 md match --from sajo-12000p --to dmu-80p
+has md "| every | [-90.000, 0.000] | [-120.000, -90.000) | (0.000, 30.000] | 30.000 |"
+run 0 csv match --from sajo-12000p --to dmu-80p --format csv
+has csv "sajo-12000p,dmu-80p,every,0.000000,30.000000,no,yes,unreachable,30.000000"
+run 0 json match --from sajo-12000p --to dmu-80p --format json
+has json '"rows_independent": true'
+run 0 svg match --from sajo-12000p --to dmu-80p --format svg
+has svg '<svg xmlns="http://www.w3.org/2000/svg"'
+run 1 unknown match --from sajo-12000p --to no-such-machine
+grep -q "unknown machine 'no-such-machine'" "$out/unknown.err" || report "unknown: no message"
+
+# A program with blocks no setup can save: their tool axes fit in no hemisphere.
+run 3 side match --from sajo-12000p --to dmu-80p --program "$dir/side.mpf"
+has side "| direct | 2 |"
+has side "| other branch | 1 |"
+has side "| unreachable | 3 |"
+has side "| 6 | 1 | 5.000 |"
+has side "| 8 | 1 | 10.000 |"
+has side "| 10 | 1 | 20.000 |"
+has side "No rotation reaches every block"
+run 3 side_csv match --from sajo-12000p --to dmu-80p --program "$dir/side.mpf" --format csv
+has side_csv "$dir/side.mpf,8,8,1,10.000000"
+
+# A program a re-fixturing saves: the printed command must translate it, the default must not.
+run 3 flank match --from sajo-12000p --to dmu-80p --program "$dir/flank.mpf"
+has flank "| 8–12 | 5 | 25.000 |"
+rotation=$(sed -n 's/^kin5 translate .*--setup-rotation \([^ ]*\) .*/\1/p' "$out/flank")
+[ -n "$rotation" ] || report "flank: no --setup-rotation printed"
+run 3 default translate --from sajo-12000p --to dmu-80p -o "$out/default.h" "$dir/flank.mpf"
+run 0 refixtured translate --from sajo-12000p --to dmu-80p --setup-rotation "$rotation" -o "$out/flank.h" "$dir/flank.mpf"
+[ -s "$out/flank.h" ] || report "refixtured: nothing written"
+grep -q "7 direct, 0 other-branch, 0 unreachable" "$out/refixtured.err" || report "refixtured: not every block direct"
+
+[ "$fail" = 0 ] && echo "kin5 match: all checks passed"
+exit "$fail"

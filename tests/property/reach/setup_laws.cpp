@@ -1,0 +1,142 @@
+// The setup search (reach/setup_search.hpp) and the program report (reach/program_report.hpp),
+// each result checked with the core solver rather than with the search's own closed form.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <set>
+#include <tuple>
+#include <vector>
+
+#include <kin5/program/io.hpp>
+#include <kin5/reach/program_report.hpp>
+#include <kin5/reach/report_text.hpp>
+
+#include "../core/generators.hpp"
+
+using namespace kin5;
+using kin5::machines::dmu_80p;
+using kin5::machines::sajo_12000p;
+
+namespace {
+
+constexpr double deg(double v) { return v * pi / 180.0; }
+
+/// Whether every R u reaches To within travel, by `inverse`.
+template <machine To>
+bool all_reachable(const mat3& r, const std::vector<vec3>& axes) {
+  for (const vec3& u : axes)
+    if (!inverse<To>(r * u).reachable()) return false;
+  return true;
+}
+
+/// Tool axes on a circle of `radius` about unit d.
+std::vector<vec3> circle(const vec3& d, double radius, int n) {
+  std::vector<vec3> out;
+  for (int i = 0; i < n; ++i)
+    out.push_back(std::cos(radius) * d + std::sin(radius) * test::perpendicular(d, 2.0 * pi * i / n));
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("The 24 axis-aligned rotations are distinct proper rotations", "[reach][setup]") {
+  const auto rs = reach::axis_aligned_rotations();
+  REQUIRE(rs.size() == 24);
+  std::set<std::tuple<double, double, double, double, double, double, double, double, double>> seen;
+  for (const mat3& r : rs) {
+    CHECK(determinant(r) == Approx(1.0));
+    const mat3 rrt = r * r.transposed();
+    CHECK(norm(rrt.row[0] - unit_x) + norm(rrt.row[1] - unit_y) + norm(rrt.row[2] - unit_z) == Approx(0.0).margin(1e-15));
+    seen.insert({r.row[0].x, r.row[0].y, r.row[0].z, r.row[1].x, r.row[1].y, r.row[1].z, r.row[2].x, r.row[2].y, r.row[2].z});
+  }
+  CHECK(seen.size() == 24);
+}
+
+TEST_CASE("A setup found for tool axes the default setup cannot take reaches them all", "[reach][setup]") {
+  // 25 random programs of up to 8 tool axes within 85° of a random direction, so that the
+  // DMU 80P's hemisphere can hold them (a search costs tens of Ipopt runs: 25, not 100).
+  std::mt19937 random(20260412);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int k = 0; k < 25; ++k) {
+    const vec3 d = normalized(vec3{unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5});
+    std::vector<vec3> axes;
+    const int n = 1 + static_cast<int>(unit(random) * 8);
+    for (int i = 0; i < n; ++i) {
+      const double radius = deg(85.0) * unit(random);
+      axes.push_back(std::cos(radius) * d + std::sin(radius) * test::perpendicular(d, 2.0 * pi * unit(random)));
+    }
+    const auto found = reach::search_setup<sajo_12000p, dmu_80p>(axes, default_setup<sajo_12000p, dmu_80p>().rotation);
+    INFO("program " << k << ", " << n << " axes");
+    REQUIRE(found.best.has_value());
+    CHECK(all_reachable<dmu_80p>(found.best->rotation, axes));
+    CHECK(std::abs(determinant(found.best->rotation) - 1.0) < 1e-9);
+    // The ranking is by travel, each the planner's for that rotation.
+    for (std::size_t i = 1; i < found.ranked.size(); ++i) CHECK(found.ranked[i - 1].travel <= found.ranked[i].travel + 1e-9);
+    CHECK(found.best->travel == Approx(plan_rotary_path<dmu_80p>([&] {
+                                          std::vector<vec3> t;
+                                          for (const vec3& u : axes) t.push_back(found.best->rotation * u);
+                                          return t;
+                                        }()).travel));
+  }
+}
+
+TEST_CASE("Only the continuous refinement finds a setup no axis-aligned rotation gives", "[reach][setup]") {
+  // Twelve axes 80° around (1, 1, 1)/√3: every coordinate axis is 134.7° from some of them, so
+  // no axis-aligned rotation puts them in the DMU 80P's upper hemisphere; d itself does.
+  const std::vector<vec3> axes = circle(normalized(vec3{1, 1, 1}), deg(80.0), 12);
+  const auto found = reach::search_setup<sajo_12000p, dmu_80p>(axes, default_setup<sajo_12000p, dmu_80p>().rotation);
+  for (const auto& c : found.tried)
+    if (c.axis_aligned) CHECK_FALSE(all_reachable<dmu_80p>(c.rotation, axes));
+  REQUIRE(found.best.has_value());
+  CHECK_FALSE(found.best->axis_aligned);
+  CHECK(all_reachable<dmu_80p>(found.best->rotation, axes));
+  // ±X, ±Y, ±Z fit in no hemisphere: nothing is found, and the closest is named.
+  const std::vector<vec3> wide{unit_x, -1.0 * unit_x, unit_y, -1.0 * unit_y, unit_z, -1.0 * unit_z};
+  const auto none = reach::search_setup<sajo_12000p, dmu_80p>(wide, mat3::identity());
+  CHECK_FALSE(none.best.has_value());
+  CHECK(none.closest.unreachable > 0);
+}
+
+TEST_CASE("--setup-rotation text reads back as the rotation", "[reach][setup]") {
+  const mat3 r = rotation(normalized(vec3{0.3, -0.5, 0.8}), radians{1.234});
+  const std::string text = reach::rotation_option(r);
+  double v[9];
+  REQUIRE(std::sscanf(text.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5],
+                      &v[6], &v[7], &v[8]) == 9);
+  for (int i = 0; i < 3; ++i) {
+    CHECK(v[3 * i] == Approx(r.row[i].x).margin(1e-14));
+    CHECK(v[3 * i + 1] == Approx(r.row[i].y).margin(1e-14));
+    CHECK(v[3 * i + 2] == Approx(r.row[i].z).margin(1e-14));
+  }
+  CHECK(reach::rotation_option(default_setup<sajo_12000p, dmu_80p>().rotation) == "-1,0,0,0,0,1,0,1,0");
+  const auto [angle, axis] = reach::axis_angle(default_setup<sajo_12000p, dmu_80p>().rotation);
+  CHECK(angle == Approx(180.0));  // (K10) = Tian et al. 2010 eqs (15)-(17): the half turn about (0, 1, 1)/√2
+  CHECK(std::abs(dot(axis, normalized(vec3{0, 1, 1}))) == Approx(1.0));
+}
+
+TEST_CASE("Program report: classes, unreachable runs with their gap, planned travel", "[reach][setup]") {
+  // Lines 3-8: A = -45, 5, 6, -30, -100, 20 (B = 30 each): runs {4, 5} and {8}; gaps = A.
+  const std::string text =
+      "N10 G90 G17 G54\nN20 TRAORI\nN30 G1 X0 Y0 Z50 A-45 B30 F1000\nN40 G1 X1 A5\nN50 G1 X2 A6\n"
+      "N60 G1 X3 A-30\nN70 G1 X4 A-100\nN80 G1 X5 A20\nN90 TRAFOOF\nN100 M30\n";
+  const auto in = program::read(program::dialect::siemens, text, "wall.mpf");
+  REQUIRE(in.ok());
+  const auto r = reach::make_program_report<sajo_12000p, dmu_80p>(in.parsed, default_setup<sajo_12000p, dmu_80p>(), true);
+  CHECK(r.per_class == std::array<std::size_t, 3>{2, 1, 3});
+  REQUIRE(r.unreachable.size() == 2);
+  CHECK((r.unreachable[0].first_line == 4 && r.unreachable[0].last_line == 5 && r.unreachable[0].blocks == 2));
+  CHECK(r.unreachable[0].worst_gap * 180.0 / pi == Approx(6.0).margin(1e-9));
+  CHECK((r.unreachable[1].first_line == 8 && r.unreachable[1].last_line == 8));
+  CHECK(r.unreachable[1].worst_gap * 180.0 / pi == Approx(20.0).margin(1e-9));
+  CHECK(r.other_errors.empty());
+  REQUIRE(r.source_axes.size() == 6);
+  // The reachable blocks' B_d by (K12) = Tian et al. 2010 eq (19): arccos(-1 - 2 sin A).
+  const auto& b_span = r.rotary[1];
+  CHECK(b_span.letter == 'B');
+  auto b_of = [](double a) { return std::acos(-1.0 - 2.0 * std::sin(deg(a))) * 180.0 / pi; };
+  CHECK(b_span.lo == Approx(std::min({b_of(-45), b_of(-30), b_of(-100)})).margin(1e-9));
+  CHECK(b_span.hi == Approx(std::max({b_of(-45), b_of(-30), b_of(-100)})).margin(1e-9));
+  // Tool tips through (K11): (x_d, y_d, z_d) = (-x_s, z_s, y_s).
+  CHECK((r.tip_lo.x == Approx(-5.0) && r.tip_hi.x == Approx(0.0) && r.tip_lo.y == Approx(50.0)));
+}

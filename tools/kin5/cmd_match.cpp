@@ -1,0 +1,157 @@
+// The matchability subcommand of the kin5 tool:
+//
+//   kin5 match --from ID --to ID [--program FILE] [--from-dialect D] [--format md|csv|svg|json]
+//
+// Without a program: the pair's table (the same text as docs/tables/, computed afresh, Ipopt
+// checks included) or its sphere map. With one: the program's report — motion blocks per class,
+// the unreachable ones as runs of lines with their worst gap, the rotary travel the target
+// needs, the tool-tip range — and, when blocks are unreachable, a setup search whose result is
+// printed as the `--setup-rotation` option of `kin5 translate`. docs/matchability.md explains
+// all of it.
+//
+// Exit codes (commands.hpp): 0 done and every block reachable; 1 bad arguments; 2 the program
+// cannot be read; 3 blocks unreachable under the pair's default setup (the report is printed).
+#include <cstdio>
+#include <string>
+
+#include "commands.hpp"
+
+#if KIN5_HAS_REACH
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <memory>
+#include <optional>
+
+#include <kin5/program/io.hpp>
+#include <kin5/reach.hpp>
+#include <kin5/reach/report_text.hpp>
+#include <kin5/translate/setup.hpp>
+
+#include "format.hpp"
+
+namespace kin5::tool {
+namespace {
+
+namespace prog = kin5::program;
+
+struct match_arguments {
+  std::string from, to, program, from_dialect, format = "md";
+};
+
+std::optional<std::string> read_file(const std::string& path) {
+  if (path == "-") return std::string(std::istreambuf_iterator<char>(std::cin), {});
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+void print(const std::string& text) { std::fwrite(text.data(), 1, text.size(), stdout); }
+
+template <machine From, machine To>
+int pair_only(const match_arguments& a) {
+  const auto t = reach::make_pair_table<From, To>(default_setup<From, To>(), true);
+  if (a.format == "svg") {
+    reach::map_text text{t.from + " \u2192 " + t.to, "tool axes in the " + t.from + " workpiece frame", {}};
+    print(reach::sphere_svg(t.raster, t.curves, t.markers, text));
+  } else {
+    print(a.format == "csv" ? reach::csv(t) : a.format == "json" ? reach::json(t) : reach::markdown(t));
+  }
+  return exit_codes::ok;
+}
+
+template <machine From, machine To>
+int with_program(const match_arguments& a) {
+  const std::string name = a.program == "-" ? "<stdin>" : a.program;
+  const auto bytes = read_file(a.program);
+  if (!bytes) {
+    std::fprintf(stderr, "kin5 match: cannot read %s: %s\n", name.c_str(), std::strerror(errno));
+    return exit_codes::input_error;
+  }
+  const prog::dialect d = a.from_dialect.empty() ? prog::default_dialect(From::id).value_or(prog::dialect::siemens)
+                                                 : *prog::parse_dialect(a.from_dialect);
+  const prog::read_result in = prog::read(d, *bytes, name);
+  if (!in.ok()) {
+    for (const auto& e : in.errors) std::fprintf(stderr, "%s\n", e.to_string().c_str());
+    std::fprintf(stderr, "kin5 match: %zu errors in %s; no report\n", in.errors.size(), name.c_str());
+    return exit_codes::input_error;
+  }
+  const rigid_transform setup = default_setup<From, To>();
+  const auto report = reach::make_program_report<From, To>(in.parsed, setup, true);
+  std::optional<reach::setup_search_result> search;
+  std::optional<reach::chosen_setup> chosen;
+  if (!report.unreachable.empty()) {
+    search = reach::search_setup<From, To>(report.source_axes, setup.rotation);
+    chosen = reach::choose_setup<From, To>(in.parsed, *search, setup.translation_mm);
+  }
+  if (a.format == "svg") {
+    const auto t = reach::make_pair_table<From, To>(setup, true, false);
+    reach::map_text text{t.from + " \u2192 " + t.to + ": " + name, "tool axes of the program's blocks (dots)", {}};
+    print(reach::sphere_svg(t.raster, t.curves, t.markers, text, report.source_axes));
+  } else if (a.format == "csv") {
+    print(reach::report_csv(report));
+  } else if (a.format == "json") {
+    print(reach::report_json(report, chosen));
+  } else {
+    print(reach::report_markdown(report, search, chosen));
+  }
+  return report.unreachable.empty() ? exit_codes::ok : exit_codes::unreachable;
+}
+
+int run_match(const match_arguments& a) {
+  int code = -1;
+  bool from_known = false, to_known = false;
+  kin5::machines::for_each_machine([&]<class From>() {
+    if (From::id != a.from) return;
+    from_known = true;
+    kin5::machines::for_each_machine([&]<class To>() {
+      if (To::id != a.to) return;
+      to_known = true;
+      code = a.program.empty() ? pair_only<From, To>(a) : with_program<From, To>(a);
+    });
+  });
+  if (code >= 0) return code;
+  std::fprintf(stderr, "kin5 match: unknown machine '%s'; known: %s\n", (from_known ? a.to : a.from).c_str(),
+               join(machine_ids()).c_str());
+  return exit_codes::usage;
+}
+
+}  // namespace
+
+void add_match_command(CLI::App& app, int& exit_code) {
+  auto a = std::make_shared<match_arguments>();
+  auto* sub = app.add_subcommand("match", "Which blocks of a machine another can run: the pair's table, or a program's report");
+  sub->add_option("--from", a->from, "Source machine (see `kin5 machines`)")->required();
+  sub->add_option("--to", a->to, "Target machine")->required();
+  sub->add_option("--program", a->program, "NC program of the source machine ('-' for stdin): report on it");
+  sub->add_option("--from-dialect", a->from_dialect, "Dialect of the program (default: the --from machine's)")
+      ->check(CLI::IsMember({"siemens", "heidenhain", "iso"}));
+  sub->add_option("--format", a->format, "md, csv, svg or json")
+      ->check(CLI::IsMember({"md", "csv", "svg", "json"}))
+      ->capture_default_str();
+  sub->footer("Exit codes: 0 every block reachable (or no program), 1 bad arguments, 2 the program cannot be read,\n"
+              "3 blocks unreachable under the pair's default setup (the report says which, and a setup that helps).");
+  sub->callback([a, &exit_code] { exit_code = run_match(*a); });
+}
+
+}  // namespace kin5::tool
+
+#else  // built without Ipopt
+
+namespace kin5::tool {
+
+void add_match_command(CLI::App& app, int& exit_code) {
+  auto* sub = app.add_subcommand("match", "Matchability tables and program reports (needs kin5::reach, Ipopt)");
+  sub->allow_extras();
+  sub->callback([&exit_code] {
+    std::fprintf(stderr, "kin5 match: this kin5 was built without Ipopt (kin5::reach)\n");
+    exit_code = exit_codes::usage;
+  });
+}
+
+}  // namespace kin5::tool
+
+#endif
