@@ -10,6 +10,7 @@ packages=(
   libbenchmark-dev         # bench/
   libcli11-dev             # command-line tool
   clang libclang-rt-14-dev # libFuzzer targets
+  chromium fonts-dejavu-core libpng-dev  # the sphere maps checked in a browser (tests/match)
 )
 missing=()
 for p in "${packages[@]}"; do
