@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "../kinematics/branch_plan.hpp"
 #include "../translate/translate.hpp"
 #include "pair_geometry.hpp"
 #include "setup_search.hpp"
@@ -123,7 +124,7 @@ program_report make_program_report(const program::program& nc, const rigid_trans
   }
   const rotary_path<To> path = plan_rotary_path<To>(target_axes);
   out.rotary = detail::spans_of<To>(path);
-  out.rotary_travel = path.travel;
+  out.rotary_travel = path.travel_rad;
   return out;
 }
 

@@ -34,6 +34,7 @@
 #include <tuple>
 #include <vector>
 
+#include "../kinematics/branch_plan.hpp"
 #include "../translate/translate.hpp"
 #include "box_minimizer.hpp"
 #include "pair_geometry.hpp"
@@ -84,7 +85,7 @@ setup_candidate evaluate_setup(const mat3& r, std::span<const vec3> axes, bool a
     if (gap > 0) ++c.unreachable, c.worst_gap = std::max(c.worst_gap, gap);
     target.push_back(r * u);
   }
-  if (c.feasible()) c.travel = plan_rotary_path<To>(target).travel;
+  if (c.feasible()) c.travel = plan_rotary_path<To>(target).travel_rad;
   return c;
 }
 
@@ -184,7 +185,7 @@ mat3 refine_travel(const mat3& start, std::span<const vec3> axes, const angle_se
       const double e = kappa > kappa_hi ? kappa - kappa_hi : (kappa < kappa_lo ? kappa - kappa_lo : 0.0);
       penalty += e * e;
     }
-    return plan_rotary_path<To>(turned_axes).travel + 1e4 * penalty;
+    return plan_rotary_path<To>(turned_axes).travel_rad + 1e4 * penalty;
   };
   const objective f = [&](const std::vector<double>& x, std::vector<double>& g, std::vector<double>&) {
     constexpr double h = 1e-6;

@@ -77,7 +77,7 @@ TEST_CASE("A setup found for tool axes the default setup cannot take reaches the
                                           std::vector<vec3> t;
                                           for (const vec3& u : axes) t.push_back(found.best->rotation * u);
                                           return t;
-                                        }()).travel));
+                                        }()).travel_rad));
   }
 }
 
