@@ -35,7 +35,7 @@ inline std::string map_svg(const reach::pair_table& t) {
                 "direct " + share(map_colour::direct) + ", other branch " + share(map_colour::other_branch),
                 "either branch " + share(map_colour::either_branch),
                 "unreachable " + percent(unreachable_share(s)) + " (worst gap " +
-                    reach::text_detail::deg(t.worst_gap, 1) + "\u00b0)",
+                    reach::text_detail::deg(t.worst_gap_rad, 1) + "\u00b0)",
                 "not held by the source " + share(map_colour::not_on_source)};
   return reach::sphere_svg(t.raster, t.curves, t.markers, text);
 }

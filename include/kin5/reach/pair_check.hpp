@@ -165,8 +165,8 @@ std::vector<value_check> check_row(const pair_geometry<From, To>& g, const pose_
       detail::travel_box<To>(lower, upper);
       starts = detail::grid_starts(lower, upper, 3);
     }
-    const double numeric = numeric_gap(g, row, regs[i].worst_gap_at, starts);
-    out.push_back({"worst gap", regs[i].worst_gap, numeric, false, true, regs[i].worst_gap_at});
+    const double numeric = numeric_gap(g, row, regs[i].worst_gap_at_rad, starts);
+    out.push_back({"worst gap", regs[i].worst_gap_rad, numeric, false, true, regs[i].worst_gap_at_rad});
   }
   return out;
 }

@@ -41,8 +41,8 @@ struct region {
   double lo = 0.0, hi = 0.0;
   bool lo_included = true, hi_included = true;
   matchability match = matchability::direct;
-  double worst_gap = 0.0;     ///< largest gap in the interval (unreachable), radians
-  double worst_gap_at = 0.0;  ///< where it is reached
+  double worst_gap_rad = 0.0;     ///< largest gap in the interval (unreachable), radians
+  double worst_gap_at_rad = 0.0;  ///< where it is reached
 };
 
 /// A point of a row: a region boundary or a pole inside a region.
@@ -213,7 +213,7 @@ pose_row row_regions(const pair_geometry<From, To>& g, double fixed = 0.0) {
     row.regions.back().hi_included = false;
   }
   for (auto& reg : row.regions)
-    if (reg.match == matchability::unreachable) std::tie(reg.worst_gap, reg.worst_gap_at) = worst_gap(g, row, reg.lo, reg.hi);
+    if (reg.match == matchability::unreachable) std::tie(reg.worst_gap_rad, reg.worst_gap_at_rad) = worst_gap(g, row, reg.lo, reg.hi);
   for (const auto& p : pts)
     if (p.boundary || (p.kinds & (source_pole | target_pole))) row.points.push_back(p);
   return row;

@@ -55,7 +55,7 @@ struct pair_table {
   std::vector<value_check> branch_checks;        ///< the source's branch boundaries
   std::array<double, 3> pose_share{};            ///< by `matchability`, share of the pose box
   std::array<double, map_colour_count> sphere_share{};  ///< by `map_colour`, share of the sphere
-  double worst_gap = 0.0;                        ///< over the rows and 360 more, radians
+  double worst_gap_rad = 0.0;                        ///< over the rows and 360 more, radians
   sphere_raster raster;
   std::vector<map_curve> curves;
   std::vector<map_marker> markers;
@@ -98,7 +98,7 @@ template <machine From, machine To>
 std::pair<std::array<double, 3>, double> pose_share(const pair_geometry<From, To>& g, const pair_table& t) {
   auto worst_of = [](const pose_row& row) {
     double w = 0.0;
-    for (const auto& r : row.regions) w = std::max(w, r.worst_gap);
+    for (const auto& r : row.regions) w = std::max(w, r.worst_gap_rad);
     return w;
   };
   if (t.rows_independent) return {row_share(t.rows.front()), worst_of(t.rows.front())};
@@ -139,9 +139,9 @@ pair_table make_pair_table(const rigid_transform& setup, bool is_default_setup, 
     t.checks.front() = check_row(g, t.rows.front());
     if (t.rows.size() > 1) t.checks[t.rows.size() / 2] = check_row(g, t.rows[t.rows.size() / 2]);
   }
-  std::tie(t.pose_share, t.worst_gap) = detail::pose_share(g, t);
+  std::tie(t.pose_share, t.worst_gap_rad) = detail::pose_share(g, t);
   for (const auto& row : t.rows)
-    for (const auto& r : row.regions) t.worst_gap = std::max(t.worst_gap, r.worst_gap);
+    for (const auto& r : row.regions) t.worst_gap_rad = std::max(t.worst_gap_rad, r.worst_gap_rad);
   t.raster = rasterize(g);
   for (std::size_t c = 0; c < map_colour_count; ++c) t.sphere_share[c] = t.raster.share(static_cast<map_colour>(c));
   t.curves = boundary_curves(g);

@@ -26,15 +26,15 @@ namespace kin5::reach {
 struct unreachable_run {
   std::size_t first_line = 0, last_line = 0;
   std::size_t blocks = 0;
-  double worst_gap = 0.0;  ///< radians
+  double worst_gap_rad = 0.0;  ///< radians
 };
 
 /// The range of one target rotary axis over the planned path, degrees, and its travel.
 struct axis_span {
   char letter = 0;
-  double lo = 0.0, hi = 0.0;
+  double lo_deg = 0.0, hi_deg = 0.0;
   bool bounded = false;
-  double travel_lo = 0.0, travel_hi = 0.0;
+  double travel_lo_deg = 0.0, travel_hi_deg = 0.0;
 };
 
 /// One program on one target under one setup.
@@ -45,9 +45,9 @@ struct program_report {
   std::array<std::size_t, 3> per_class{};  ///< by `matchability`
   std::vector<unreachable_run> unreachable;
   std::vector<axis_span> rotary;            ///< the target's rotary axes, over reachable blocks
-  double rotary_travel = 0.0;               ///< planned Σ|Δ|, radians
+  double rotary_travel_rad = 0.0;               ///< planned Σ|Δ|, radians
   bool has_tips = false;
-  vec3 tip_lo{}, tip_hi{};                  ///< tool tips in the target's workpiece frame, mm
+  vec3 tip_lo_mm{}, tip_hi_mm{};                  ///< tool tips in the target's workpiece frame, mm
   std::vector<program::diagnostic> other_errors;  ///< what else stops a translation
   std::vector<vec3> source_axes;            ///< tool axes of the motion blocks, source frame
   std::size_t motion_blocks() const { return per_class[0] + per_class[1] + per_class[2]; }
@@ -68,7 +68,7 @@ inline std::vector<unreachable_run> runs_of(const std::vector<block_report>& rep
     auto& run = out.back();
     run.last_line = r.where.line;
     ++run.blocks;
-    run.worst_gap = std::max(run.worst_gap, r.gap.value);
+    run.worst_gap_rad = std::max(run.worst_gap_rad, r.gap.value);
   }
   return out;
 }
@@ -83,8 +83,8 @@ std::vector<axis_span> spans_of(const rotary_path<To>& path) {
     for (const auto& a : path.angles) {
       if (!a) continue;
       const double v = to_degrees((*a)[i]).value;
-      s.lo = first ? v : std::min(s.lo, v);
-      s.hi = first ? v : std::max(s.hi, v);
+      s.lo_deg = first ? v : std::min(s.lo_deg, v);
+      s.hi_deg = first ? v : std::max(s.hi_deg, v);
       first = false;
     }
     out.push_back(s);
@@ -118,13 +118,13 @@ program_report make_program_report(const program::program& nc, const rigid_trans
     out.source_axes.push_back(u);
     target_axes.push_back(setup.rotation * u);
     const vec3 tip = setup.map_point({b.axes.x_mm.value_or(0.0), b.axes.y_mm.value_or(0.0), b.axes.z_mm.value_or(0.0)});
-    out.tip_lo = out.has_tips ? vec3{std::min(out.tip_lo.x, tip.x), std::min(out.tip_lo.y, tip.y), std::min(out.tip_lo.z, tip.z)} : tip;
-    out.tip_hi = out.has_tips ? vec3{std::max(out.tip_hi.x, tip.x), std::max(out.tip_hi.y, tip.y), std::max(out.tip_hi.z, tip.z)} : tip;
+    out.tip_lo_mm = out.has_tips ? vec3{std::min(out.tip_lo_mm.x, tip.x), std::min(out.tip_lo_mm.y, tip.y), std::min(out.tip_lo_mm.z, tip.z)} : tip;
+    out.tip_hi_mm = out.has_tips ? vec3{std::max(out.tip_hi_mm.x, tip.x), std::max(out.tip_hi_mm.y, tip.y), std::max(out.tip_hi_mm.z, tip.z)} : tip;
     out.has_tips = true;
   }
   const rotary_path<To> path = plan_rotary_path<To>(target_axes);
   out.rotary = detail::spans_of<To>(path);
-  out.rotary_travel = path.travel_rad;
+  out.rotary_travel_rad = path.travel_rad;
   return out;
 }
 

@@ -70,22 +70,22 @@ inline std::string report_markdown(const program_report& r, const std::optional<
     o += "Unreachable blocks:\n\n| lines | blocks | worst gap (deg) |\n|---|---|---|\n";
     for (const auto& u : r.unreachable)
       o += "| " + std::to_string(u.first_line) + (u.last_line != u.first_line ? "\u2013" + std::to_string(u.last_line) : "") +
-           " | " + std::to_string(u.blocks) + " | " + deg(u.worst_gap, 3) + " |\n";
+           " | " + std::to_string(u.blocks) + " | " + deg(u.worst_gap_rad, 3) + " |\n";
     o += "\n";
   }
   o += "Rotary travel on " + r.to + " (reachable blocks, as the translator plans them):\n\n";
   o += "| axis | from (deg) | to (deg) | travel of the axis |\n|---|---|---|---|\n";
   for (const auto& s : r.rotary)
-    o += "| " + std::string(1, s.letter) + " | " + fixed(s.lo, 3) + " | " + fixed(s.hi, 3) + " | " +
-         (s.bounded ? "[" + fixed(s.travel_lo, 0) + ", " + fixed(s.travel_hi, 0) + "]" +
-                          (s.lo < s.travel_lo - 1e-6 || s.hi > s.travel_hi + 1e-6 ? " exceeded" : "")
+    o += "| " + std::string(1, s.letter) + " | " + fixed(s.lo_deg, 3) + " | " + fixed(s.hi_deg, 3) + " | " +
+         (s.bounded ? "[" + fixed(s.travel_lo_deg, 0) + ", " + fixed(s.travel_hi_deg, 0) + "]" +
+                          (s.lo_deg < s.travel_lo_deg - 1e-6 || s.hi_deg > s.travel_hi_deg + 1e-6 ? " exceeded" : "")
                     : std::string("endless")) + " |\n";
-  o += "\nTotal rotary movement: " + deg(r.rotary_travel, 3) + "\u00b0.\n\n";
+  o += "\nTotal rotary movement: " + deg(r.rotary_travel_rad, 3) + "\u00b0.\n\n";
   if (r.has_tips)
-    o += "Tool tips in the " + r.to + " workpiece frame: X [" + fixed(r.tip_lo.x, 3) + ", " + fixed(r.tip_hi.x, 3) +
-         "], Y [" + fixed(r.tip_lo.y, 3) + ", " + fixed(r.tip_hi.y, 3) + "], Z [" + fixed(r.tip_lo.z, 3) + ", " +
-         fixed(r.tip_hi.z, 3) + "] mm: a stroke of " + fixed(r.tip_hi.x - r.tip_lo.x, 3) + " \u00d7 " +
-         fixed(r.tip_hi.y - r.tip_lo.y, 3) + " \u00d7 " + fixed(r.tip_hi.z - r.tip_lo.z, 3) + " mm. The catalog gives " +
+    o += "Tool tips in the " + r.to + " workpiece frame: X [" + fixed(r.tip_lo_mm.x, 3) + ", " + fixed(r.tip_hi_mm.x, 3) +
+         "], Y [" + fixed(r.tip_lo_mm.y, 3) + ", " + fixed(r.tip_hi_mm.y, 3) + "], Z [" + fixed(r.tip_lo_mm.z, 3) + ", " +
+         fixed(r.tip_hi_mm.z, 3) + "] mm: a stroke of " + fixed(r.tip_hi_mm.x - r.tip_lo_mm.x, 3) + " \u00d7 " +
+         fixed(r.tip_hi_mm.y - r.tip_lo_mm.y, 3) + " \u00d7 " + fixed(r.tip_hi_mm.z - r.tip_lo_mm.z, 3) + " mm. The catalog gives " +
          r.to + " no linear travel yet, so the stroke is not checked against it.\n\n";
   if (!r.other_errors.empty())
     o += std::to_string(r.other_errors.size()) + " other errors stop a translation; `kin5 translate` lists them.\n\n";
@@ -96,7 +96,7 @@ inline std::string report_markdown(const program_report& r, const std::optional<
   if (search->ranked.empty())
     return o + "No rotation reaches every block: the tool axes do not fit in the target's reach however the part is "
                "turned. The closest, " + turn_text(search->closest.rotation) + ", leaves " +
-           std::to_string(search->closest.unreachable) + " unreachable (worst gap " + deg(search->closest.worst_gap, 3) +
+           std::to_string(search->closest.unreachable) + " unreachable (worst gap " + deg(search->closest.worst_gap_rad, 3) +
            "\u00b0).\n";
   if (!chosen)
     return o + "None of them translates the whole program: " +
@@ -106,7 +106,7 @@ inline std::string report_markdown(const program_report& r, const std::optional<
   const auto& b = chosen->candidate;
   const auto& w = chosen->report;
   o += "Best: " + turn_text(b.rotation) + (b.axis_aligned ? " (axis-aligned)" : " (refined)") +
-       "; total rotary movement " + deg(b.travel, 3) + "\u00b0. Translated with it: " + std::to_string(w.per_class[0]) +
+       "; total rotary movement " + deg(b.travel_rad, 3) + "\u00b0. Translated with it: " + std::to_string(w.per_class[0]) +
        " direct, " + std::to_string(w.per_class[1]) + " other branch, " + std::to_string(w.per_class[2]) + " unreachable";
   o += chosen->passed_over ? "; " + std::to_string(chosen->passed_over) +
                                  " rotations of less travel were passed over, as the program does not translate with "
@@ -121,7 +121,7 @@ inline std::string report_csv(const program_report& r) {
   std::string o = "file,first_line,last_line,blocks,worst_gap_deg\n";
   for (const auto& u : r.unreachable)
     o += r.file + "," + std::to_string(u.first_line) + "," + std::to_string(u.last_line) + "," +
-         std::to_string(u.blocks) + "," + text_detail::deg(u.worst_gap) + "\n";
+         std::to_string(u.blocks) + "," + text_detail::deg(u.worst_gap_rad) + "\n";
   return o;
 }
 
@@ -136,19 +136,19 @@ inline std::string report_json(const program_report& r, const std::optional<chos
     const auto& u = r.unreachable[i];
     o += std::string(i ? ", " : "") + "{\"first_line\": " + std::to_string(u.first_line) + ", \"last_line\": " +
          std::to_string(u.last_line) + ", \"blocks\": " + std::to_string(u.blocks) + ", \"worst_gap_deg\": " +
-         deg(u.worst_gap) + "}";
+         deg(u.worst_gap_rad) + "}";
   }
   o += "],\n \"rotary\": [";
   for (std::size_t i = 0; i < r.rotary.size(); ++i) {
     const auto& s = r.rotary[i];
-    o += std::string(i ? ", " : "") + "{\"axis\": \"" + std::string(1, s.letter) + "\", \"from_deg\": " + fixed(s.lo, 6) +
-         ", \"to_deg\": " + fixed(s.hi, 6) + "}";
+    o += std::string(i ? ", " : "") + "{\"axis\": \"" + std::string(1, s.letter) + "\", \"from_deg\": " + fixed(s.lo_deg, 6) +
+         ", \"to_deg\": " + fixed(s.hi_deg, 6) + "}";
   }
-  o += "], \"rotary_travel_deg\": " + deg(r.rotary_travel);
+  o += "], \"rotary_travel_deg\": " + deg(r.rotary_travel_rad);
   if (chosen)
     o += ",\n \"setup\": {\"rotation\": [" + rotation_option(chosen->candidate.rotation) + "], \"axis_aligned\": " +
          (chosen->candidate.axis_aligned ? "true" : "false") + ", \"rotary_travel_deg\": " +
-         deg(chosen->candidate.travel) + "}";
+         deg(chosen->candidate.travel_rad) + "}";
   else if (!r.unreachable.empty())
     o += ",\n \"setup\": null";
   return o + "}\n";

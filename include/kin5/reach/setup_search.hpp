@@ -60,8 +60,8 @@ struct setup_candidate {
   mat3 rotation = mat3::identity();
   bool axis_aligned = true;
   std::size_t unreachable = 0;  ///< blocks the target cannot reach
-  double worst_gap = 0.0;       ///< radians
-  double travel = 0.0;          ///< planned total rotary travel Σ|Δ|, radians (all reachable)
+  double worst_gap_rad = 0.0;       ///< radians
+  double travel_rad = 0.0;          ///< planned total rotary travel Σ|Δ|, radians (all reachable)
   bool feasible() const { return unreachable == 0; }
 };
 
@@ -82,10 +82,10 @@ setup_candidate evaluate_setup(const mat3& r, std::span<const vec3> axes, bool a
   std::vector<vec3> target;
   for (const vec3& u : axes) {
     const double gap = g.target_gap(u).value;
-    if (gap > 0) ++c.unreachable, c.worst_gap = std::max(c.worst_gap, gap);
+    if (gap > 0) ++c.unreachable, c.worst_gap_rad = std::max(c.worst_gap_rad, gap);
     target.push_back(r * u);
   }
-  if (c.feasible()) c.travel = plan_rotary_path<To>(target).travel_rad;
+  if (c.feasible()) c.travel_rad = plan_rotary_path<To>(target).travel_rad;
   return c;
 }
 
@@ -226,7 +226,7 @@ setup_search_result search_setup(std::span<const vec3> axes, const mat3& preferr
       order.resize(std::min<std::size_t>(4, order.size()));
       return order;
     };
-    auto badness = [&](std::size_t i) { return std::pair{out.tried[i].unreachable, out.tried[i].worst_gap}; };
+    auto badness = [&](std::size_t i) { return std::pair{out.tried[i].unreachable, out.tried[i].worst_gap_rad}; };
     const bool any_feasible = std::any_of(out.tried.begin(), out.tried.end(), [](const auto& c) { return c.feasible(); });
     if (!any_feasible) {  // 2a
       const std::vector<vec3> distinct = detail::distinct_axes(axes);
@@ -235,7 +235,7 @@ setup_search_result search_setup(std::span<const vec3> axes, const mat3& preferr
         ++out.refined;
       }
     }
-    auto travel = [&](std::size_t i) { return out.tried[i].feasible() ? out.tried[i].travel : 1e300; };
+    auto travel = [&](std::size_t i) { return out.tried[i].feasible() ? out.tried[i].travel_rad : 1e300; };
     for (std::size_t i : indices([&](std::size_t a, std::size_t b) { return travel(a) < travel(b); })) {  // 2b
       if (!out.tried[i].feasible()) continue;
       out.tried.push_back(evaluate_setup<From, To>(detail::refine_travel<To>(out.tried[i].rotation, axes, g.target_band), axes, false));
@@ -245,10 +245,10 @@ setup_search_result search_setup(std::span<const vec3> axes, const mat3& preferr
   out.closest = out.tried.front();
   for (const auto& c : out.tried)
     if (c.feasible()) out.ranked.push_back(c);
-  std::stable_sort(out.ranked.begin(), out.ranked.end(), [](const auto& a, const auto& b) { return a.travel < b.travel - 1e-9; });
+  std::stable_sort(out.ranked.begin(), out.ranked.end(), [](const auto& a, const auto& b) { return a.travel_rad < b.travel_rad - 1e-9; });
   if (!out.ranked.empty()) out.best = out.ranked.front();
   for (const auto& c : out.tried) {
-    if (std::pair{c.unreachable, c.worst_gap} < std::pair{out.closest.unreachable, out.closest.worst_gap}) out.closest = c;
+    if (std::pair{c.unreachable, c.worst_gap_rad} < std::pair{out.closest.unreachable, out.closest.worst_gap_rad}) out.closest = c;
   }
   return out;
 }

@@ -108,7 +108,7 @@ inline std::string markdown(const pair_table& t) {
        fixed(100.0 * t.sphere_share[static_cast<std::size_t>(map_colour::either_branch)], 2) + " % |\n";
   o += "| not held by the source | \u2014 | " +
        fixed(100.0 * t.sphere_share[static_cast<std::size_t>(map_colour::not_on_source)], 2) + " % |\n\n";
-  o += "Worst gap: " + deg(t.worst_gap, 6) + "\u00b0.\n\n## Regions\n\n";
+  o += "Worst gap: " + deg(t.worst_gap_rad, 6) + "\u00b0.\n\n## Regions\n\n";
   const std::string sw(1, t.swept_letter), fx = t.fixed_letter ? std::string(1, t.fixed_letter) : "";
   if (t.fixed_letter == 0) o += "The source has one rotary axis, " + sw + ", swept over its travel.\n\n";
   else if (t.rows_independent)
@@ -122,7 +122,7 @@ inline std::string markdown(const pair_table& t) {
     for (const auto& r : row.regions) {
       auto& cell = cells[static_cast<std::size_t>(r.match)];
       cell += (cell.empty() ? "" : " \u222a ") + interval(r, 3);
-      worst = std::max(worst, r.worst_gap);
+      worst = std::max(worst, r.worst_gap_rad);
     }
     std::string poles;
     for (const auto& p : row.points)
@@ -163,7 +163,7 @@ inline std::string csv(const pair_table& t) {
     for (const auto& r : row.regions)
       o += t.from + "," + t.to + "," + (row.fixed ? (t.rows_independent ? "every" : deg(*row.fixed)) : "") + "," +
            deg(r.lo) + "," + deg(r.hi) + "," + (r.lo_included ? "yes" : "no") + "," + (r.hi_included ? "yes" : "no") +
-           "," + std::string(name(r.match)) + "," + deg(r.worst_gap) + "\n";
+           "," + std::string(name(r.match)) + "," + deg(r.worst_gap_rad) + "\n";
   return o;
 }
 
@@ -181,7 +181,7 @@ inline std::string json(const pair_table& t) {
                   q(std::string(1, t.swept_letter)) + ", \"rows_independent\": " + (t.rows_independent ? "true" : "false") +
                   ",\n \"pose_share\": {\"direct\": " + fixed(t.pose_share[0], 6) + ", \"other_branch\": " +
                   fixed(t.pose_share[1], 6) + ", \"unreachable\": " + fixed(t.pose_share[2], 6) + "}, \"worst_gap_deg\": " +
-                  deg(t.worst_gap) + ",\n \"rows\": [";
+                  deg(t.worst_gap_rad) + ",\n \"rows\": [";
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     const auto& row = t.rows[i];
     o += std::string(i ? ",\n  " : "\n  ") + "{\"fixed_deg\": " + (row.fixed ? deg(*row.fixed) : "null") + ", \"regions\": [";
@@ -190,7 +190,7 @@ inline std::string json(const pair_table& t) {
       o += std::string(j ? ", " : "") + "{\"from_deg\": " + deg(r.lo) + ", \"to_deg\": " + deg(r.hi) +
            ", \"from_included\": " + (r.lo_included ? "true" : "false") + ", \"to_included\": " +
            (r.hi_included ? "true" : "false") + ", \"class\": " + q(std::string(name(r.match))) +
-           ", \"worst_gap_deg\": " + deg(r.worst_gap) + "}";
+           ", \"worst_gap_deg\": " + deg(r.worst_gap_rad) + "}";
     }
     o += "], \"checks\": [";
     for (std::size_t j = 0; j < t.checks[i].size(); ++j) {

@@ -81,7 +81,7 @@ void poses_agree_with_classify() {
       radians gap{};
       const matchability solver = classify<From, To>(pose, R, &gap);
       RC_ASSERT(solver == r->match);
-      if (solver == matchability::unreachable) RC_ASSERT(gap.value <= r->worst_gap + 1e-9);
+      if (solver == matchability::unreachable) RC_ASSERT(gap.value <= r->worst_gap_rad + 1e-9);
     }
   });
 }

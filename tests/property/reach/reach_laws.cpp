@@ -124,8 +124,8 @@ TEST_CASE("SAJO 12000P to DMU 80P: the regions of Tian et al. 2010 section 1.1, 
   CHECK(in_deg({regions[1].hi}) == Approx(0.0).margin(1e-12));
   CHECK(regions[2].match == matchability::unreachable);
   CHECK((!regions[2].lo_included && regions[2].hi_included));
-  CHECK(in_deg({regions[2].worst_gap}) == Approx(30.0).margin(1e-12));
-  CHECK(in_deg({regions[2].worst_gap_at}) == Approx(30.0).margin(1e-12));
+  CHECK(in_deg({regions[2].worst_gap_rad}) == Approx(30.0).margin(1e-12));
+  CHECK(in_deg({regions[2].worst_gap_at_rad}) == Approx(30.0).margin(1e-12));
   // Ipopt: the branch boundary where the latitude about Y_s is extreme, the reach boundary
   // from the gap alone, and the worst gap.
   REQUIRE(t.branch_checks.size() == 1);

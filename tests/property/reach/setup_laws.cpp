@@ -72,8 +72,8 @@ TEST_CASE("A setup found for tool axes the default setup cannot take reaches the
     CHECK(all_reachable<dmu_80p>(found.best->rotation, axes));
     CHECK(std::abs(determinant(found.best->rotation) - 1.0) < 1e-9);
     // The ranking is by travel, each the planner's for that rotation.
-    for (std::size_t i = 1; i < found.ranked.size(); ++i) CHECK(found.ranked[i - 1].travel <= found.ranked[i].travel + 1e-9);
-    CHECK(found.best->travel == Approx(plan_rotary_path<dmu_80p>([&] {
+    for (std::size_t i = 1; i < found.ranked.size(); ++i) CHECK(found.ranked[i - 1].travel_rad <= found.ranked[i].travel_rad + 1e-9);
+    CHECK(found.best->travel_rad == Approx(plan_rotary_path<dmu_80p>([&] {
                                           std::vector<vec3> t;
                                           for (const vec3& u : axes) t.push_back(found.best->rotation * u);
                                           return t;
@@ -126,17 +126,17 @@ TEST_CASE("Program report: classes, unreachable runs with their gap, planned tra
   CHECK(r.per_class == std::array<std::size_t, 3>{2, 1, 3});
   REQUIRE(r.unreachable.size() == 2);
   CHECK((r.unreachable[0].first_line == 4 && r.unreachable[0].last_line == 5 && r.unreachable[0].blocks == 2));
-  CHECK(r.unreachable[0].worst_gap * 180.0 / pi == Approx(6.0).margin(1e-9));
+  CHECK(r.unreachable[0].worst_gap_rad * 180.0 / pi == Approx(6.0).margin(1e-9));
   CHECK((r.unreachable[1].first_line == 8 && r.unreachable[1].last_line == 8));
-  CHECK(r.unreachable[1].worst_gap * 180.0 / pi == Approx(20.0).margin(1e-9));
+  CHECK(r.unreachable[1].worst_gap_rad * 180.0 / pi == Approx(20.0).margin(1e-9));
   CHECK(r.other_errors.empty());
   REQUIRE(r.source_axes.size() == 6);
   // The reachable blocks' B_d by (K12) = Tian et al. 2010 eq (19): arccos(-1 - 2 sin A).
   const auto& b_span = r.rotary[1];
   CHECK(b_span.letter == 'B');
   auto b_of = [](double a) { return std::acos(-1.0 - 2.0 * std::sin(deg(a))) * 180.0 / pi; };
-  CHECK(b_span.lo == Approx(std::min({b_of(-45), b_of(-30), b_of(-100)})).margin(1e-9));
-  CHECK(b_span.hi == Approx(std::max({b_of(-45), b_of(-30), b_of(-100)})).margin(1e-9));
+  CHECK(b_span.lo_deg == Approx(std::min({b_of(-45), b_of(-30), b_of(-100)})).margin(1e-9));
+  CHECK(b_span.hi_deg == Approx(std::max({b_of(-45), b_of(-30), b_of(-100)})).margin(1e-9));
   // Tool tips through (K11): (x_d, y_d, z_d) = (-x_s, z_s, y_s).
-  CHECK((r.tip_lo.x == Approx(-5.0) && r.tip_hi.x == Approx(0.0) && r.tip_lo.y == Approx(50.0)));
+  CHECK((r.tip_lo_mm.x == Approx(-5.0) && r.tip_hi_mm.x == Approx(0.0) && r.tip_lo_mm.y == Approx(50.0)));
 }
