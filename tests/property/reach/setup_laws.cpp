@@ -98,7 +98,7 @@ TEST_CASE("Only the continuous refinement finds a setup no axis-aligned rotation
   CHECK(none.closest.unreachable > 0);
 }
 
-TEST_CASE("--setup-rotation text reads back as the rotation", "[reach][setup]") {
+TEST_CASE("The setup-rotation option text reads back as the rotation", "[reach][setup]") {
   const mat3 r = rotation(normalized(vec3{0.3, -0.5, 0.8}), radians{1.234});
   const std::string text = reach::rotation_option(r);
   double v[9];
