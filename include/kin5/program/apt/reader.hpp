@@ -18,6 +18,7 @@
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
+#include "../transmission.hpp"
 #include "lexer.hpp"
 
 namespace kin5::program::apt::detail {
@@ -235,7 +236,9 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
   const file_name file(file_path);  // one string for every location in the file
   bool rapid_pending = false;
   detail::statement_reader reader(file, rapid_pending, diagnostics.errors);
-  for_each_statement(text, [&](statement&& st) { on_block(reader.read(st)); });
+  read_transmitted(text, file_path, diagnostics, on_block, [&](std::string_view body, const block_sink& sink) {
+    for_each_statement(body, [&](statement&& st) { sink(reader.read(st)); });
+  });
 }
 
 }  // namespace kin5::program::apt

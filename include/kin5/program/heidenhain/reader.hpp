@@ -21,6 +21,7 @@
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
+#include "../transmission.hpp"
 #include "lexer.hpp"
 #include "motion.hpp"
 
@@ -311,14 +312,16 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
                         const block_sink& on_block) {
   const file_name file(file_path);  // one string for every location in the file
   detail::reader_state state;
-  const std::vector<text_line> lines = split_lines(text);
-  for (std::size_t li = 0; li < lines.size(); ++li) {
-    if (lexing::is_blank(lines[li].text)) continue;
-    block_text source;
-    source.file = file;
-    li = detail::join_block(lines, li, source);
-    on_block(detail::block_reader(source, state, out).read());
-  }
+  read_transmitted(text, file_path, out, on_block, [&](std::string_view body, const block_sink& sink) {
+    const std::vector<text_line> lines = split_lines(body);
+    for (std::size_t li = 0; li < lines.size(); ++li) {
+      if (lexing::is_blank(lines[li].text)) continue;
+      block_text source;
+      source.file = file;
+      li = detail::join_block(lines, li, source);
+      sink(detail::block_reader(source, state, out).read());
+    }
+  });
 }
 
 }  // namespace kin5::program::heidenhain

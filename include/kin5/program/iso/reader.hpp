@@ -21,6 +21,7 @@
 #include "../block.hpp"
 #include "../lexing.hpp"
 #include "../text.hpp"
+#include "../transmission.hpp"
 #include "lexer.hpp"
 #include "vocabulary.hpp"
 
@@ -341,7 +342,9 @@ namespace kin5::program::iso {
 /// as it is read; errors and warnings go to `diagnostics` (its `parsed` is not touched).
 inline void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
                         const block_sink& on_block) {
-  detail::reader(file_name, diagnostics, on_block).run(text);
+  read_transmitted(text, file_name, diagnostics, on_block, [&](std::string_view body, const block_sink& sink) {
+    detail::reader(file_name, diagnostics, sink).run(body);
+  });
 }
 
 }  // namespace kin5::program::iso

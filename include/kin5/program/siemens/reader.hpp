@@ -23,6 +23,7 @@
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
+#include "../transmission.hpp"
 #include "lexer.hpp"
 #include "modal.hpp"
 #include "vocabulary.hpp"
@@ -258,7 +259,9 @@ namespace kin5::program::siemens {
 inline void read_blocks(std::string_view text, const std::string& file_path, read_result& diagnostics,
                         const block_sink& on_block) {
   detail::line_reader reader(file_path);
-  for_each_line(text, [&](const text_line& line) { reader.read(line, diagnostics, on_block); });
+  read_transmitted(text, file_path, diagnostics, on_block, [&](std::string_view body, const block_sink& sink) {
+    for_each_line(body, [&](const text_line& line) { reader.read(line, diagnostics, sink); });
+  });
 }
 
 }  // namespace kin5::program::siemens
