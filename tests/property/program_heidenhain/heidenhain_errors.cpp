@@ -30,8 +30,8 @@ TEST_CASE("heidenhain: bad input gives one exact diagnostic") {
       {"L X+ 5\n", "t.h:1:3: error: word 'X' has a malformed value"},
       {"L X+2000000000\n", "t.h:1:3: error: value out of range"},
       {"L X+1 Y-2 X+2\n", "t.h:1:11: error: axis 'X' given twice"},
-      {"L X+Q1\n", "t.h:1:3: error: expressions and parameters in axis words are not supported"},
-      {"L XQ1 Y+0\n", "t.h:1:3: error: expressions and parameters in axis words are not supported"},
+      {"L X+Q1*2\n", "t.h:1:3: error: expressions and parameters in axis words are not supported"},
+      {"L XQL1 Y+0\n", "t.h:1:3: error: expressions and parameters in axis words are not supported"},
       {"12 L Z=Q5\n", "t.h:1:6: error: expressions and parameters in axis words are not supported"},
       {"L IX+5 Y+0\n", "t.h:1:3: error: incremental positioning (IX) is not supported"},
       {"l ib-90\n", "t.h:1:3: error: incremental positioning (IB) is not supported"},
@@ -79,7 +79,7 @@ TEST_CASE("heidenhain: bad input gives one exact diagnostic") {
 }
 
 TEST_CASE("heidenhain: reading goes on after an error and keeps every block") {
-  const read_result r = heidenhain::read("1 L X+1 Y\n2 L X+2 Y+3\n3 L X+Q1\n", "t.h");
+  const read_result r = heidenhain::read("1 L X+1 Y\n2 L X+2 Y+3\n3 L X+Q1*2\n", "t.h");
   REQUIRE(r.errors.size() == 2);
   CHECK(r.errors[0].to_string() == "t.h:1:9: error: word 'Y' has no value");
   CHECK(r.errors[1].to_string() == "t.h:3:5: error: expressions and parameters in axis words are not supported");

@@ -1,9 +1,10 @@
 /// @file program/heidenhain/lexer.hpp
 /// The first stage of the Heidenhain reader: physical lines joined into blocks (a line ending in
-/// `~`, outside a `;` comment, continues on the next), and the text of a block split into words —
-/// address letters with a value or a lone sign (`X+34.983`, `DR-`, `FMAX`, `TX-0.6`), bare
-/// numbers, and the comment after `;` — each at its offset in the joined text, which `where`
-/// turns back into a line and column. What a word means is the reader's (reader.hpp).
+/// `~` continues on the next, also when the `~` ends a `;` comment: that comment ends before the
+/// `~`), and the text of a block split into words — address letters with a value or a lone sign
+/// (`X+34.983`, `DR-`, `FMAX`, `F MAX`, `TX-0.6`), a Q parameter as a value (`FQ1`, `F Q1`,
+/// `X+Q2`), bare numbers, and the comment after `;` — each at its offset in the joined text,
+/// which `where` turns back into a line and column. What a word means is the reader's.
 #pragma once
 
 #include <algorithm>
@@ -29,14 +30,17 @@ struct word {
   std::string written;            ///< the whole word, upper case, blanks removed
   std::size_t pos = 0;            ///< offset of its first byte in the block's text
   bool bad = false;               ///< already reported
-  bool expression = false;        ///< `X+Q1`, `XQ1`, `X=…`
+  bool expression = false;        ///< `X=…`, `X+Q1*2`: more than a parameter
+  std::optional<int> parameter;   ///< `FQ1`, `F Q1`, `X+Q1`, `X-Q1`: the value is (minus) Q`parameter`
+  bool parameter_negated = false; ///< `X-Q1`
   number_error error = number_error::none;
   std::string malformed;          ///< a number with a second point (`+1.2.3`), as written
 };
 
 /// The text of one block: its physical lines joined at `~`, with the way back to line and column.
 struct block_text {
-  std::string content;   ///< the lines joined with a blank, `~` removed
+  std::string content;   ///< the lines joined with a blank, `~` and comments before a `~` removed
+  std::vector<std::string> inner_comments;  ///< the comments that ended before a `~`, in order
   std::string upper;     ///< `content` in upper case
   std::string raw;       ///< the source lines as written, joined with `\n`
   lexing::line_map lines;
@@ -66,11 +70,17 @@ inline std::size_t join_block(const std::vector<text_line>& lines, std::size_t l
     const std::string_view t = lines[li].text;
     std::size_t end = t.size();
     while (end > 0 && is_space(t[end - 1])) --end;
-    const bool continued = end > 0 && t[end - 1] == '~' && t.find(';') == std::string_view::npos;
+    const bool continued = end > 0 && t[end - 1] == '~';
+    const std::size_t semicolon = t.find(';');
     if (li != first) out.raw += '\n';
     out.raw += t;
     out.lines.add(out.content.size(), lines[li].number, 1);
-    out.content += continued ? t.substr(0, end - 1) : t;
+    if (continued && semicolon < end - 1) {  // `Q200=3 ;SET-UP CLEARANCE~`: the comment ends at the `~`
+      out.inner_comments.emplace_back(t.substr(semicolon + 1, end - 1 - semicolon - 1));
+      out.content += t.substr(0, semicolon);
+    } else {
+      out.content += continued ? t.substr(0, end - 1) : t;
+    }
     if (!continued || li + 1 >= lines.size()) break;
     out.content += ' ';
     ++li;
@@ -160,6 +170,22 @@ class scanner {
   const std::string& s_;
   const std::string& up_;
 
+  /// A parameter reference `Q12`, `+Q12`, `-Q12` at `v` that ends the word: its end (0 if none).
+  std::size_t parameter_at(word& w, std::size_t v) const {
+    std::size_t q = v;
+    const bool negated = q < s_.size() && s_[q] == '-';
+    if (q < s_.size() && (s_[q] == '+' || s_[q] == '-')) ++q;
+    if (q >= s_.size() || to_upper(s_[q]) != 'Q') return 0;
+    std::size_t e = q + 1;
+    while (e < s_.size() && is_digit(s_[e])) ++e;
+    if (e == q + 1 || e - q > 5 || (e < s_.size() && !is_space(s_[e]) && s_[e] != ';')) return 0;
+    int n = 0;
+    for (std::size_t d = q + 1; d < e; ++d) n = n * 10 + (s_[d] - '0');
+    w.parameter = n;
+    w.parameter_negated = negated;
+    return e;
+  }
+
   /// Whether the value at `v` of an axis word is an expression: `=`, `(`, `Q…`, `+Q…`, `-(`.
   bool expression_at(std::size_t v) const {
     if (v >= s_.size()) return false;
@@ -171,9 +197,16 @@ class scanner {
   /// A word starting with letters at `k`; returns the position after it.
   std::size_t lettered(word& w, std::size_t k) const {
     w.key = letters(k);
+    if (w.key.size() >= 2 && (detail::is_axis_letter(w.key[0]) || w.key[0] == 'F') && w.key[1] == 'Q')
+      w.key.resize(1);  // `XQ1`, `FQ1`: the letter, then a parameter
     k += w.key.size();
-    if (w.key.size() >= 2 && detail::is_axis_letter(w.key[0]) && w.key[1] == 'Q') w.expression = true;
     const std::size_t v = skip_spaces(k);
+    if (w.key == "F" && letters(v) == "MAX") {  // `F MAX`, hyperMILL's spelling of FMAX
+      w.key = "FMAX";
+      return v + 3;
+    }
+    if ((w.key == "F" || (w.key.size() == 1 && detail::is_axis_letter(w.key[0]))))
+      if (const std::size_t e = parameter_at(w, v)) return e;
     if (!w.expression && expression_at(v)) w.expression = detail::is_axis_letter(w.key.back());
     if (w.expression) return run_end(k);
     if (detail::starts_number(s_, v)) return valued(w, v);

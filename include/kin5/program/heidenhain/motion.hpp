@@ -15,13 +15,15 @@
 #include "../block.hpp"
 #include "../number.hpp"
 #include "lexer.hpp"
+#include "parameters.hpp"
 
 namespace kin5::program::heidenhain::detail {
 
 /// What the reader carries from block to block: the last position (for CC's missing axes), the
-/// working plane, the last circle centre, and the program's name (for END PGM).
+/// working plane, the last circle centre, the program's name (for END PGM), the Q parameters.
 struct reader_state {
   std::optional<double> last[3];
+  q_parameters q;
   arc_plane plane = arc_plane::xy;
   std::optional<vec3> centre;
   std::optional<std::string> begin_name;
@@ -103,8 +105,23 @@ class motion_reader : public word_checks {
   char direction_ = 0;
   std::optional<double> axis_[6], tool_axis_[3];
 
+  /// A word whose value is a Q parameter (`FQ1`, `X-Q2`) takes the parameter's constant value.
+  bool resolve(word& w) {
+    std::string why;
+    const std::optional<double> v = state_.q.value(*w.parameter, why);
+    if (!v) {
+      error(w.pos, why);
+      w.bad = true;
+      return false;
+    }
+    w.value = w.parameter_negated ? -*v : *v;
+    w.parameter.reset();
+    return true;
+  }
+
   void take(word& w) {
     const std::string& key = w.key;
+    if (w.parameter && !resolve(w)) return;
     if (w.expression) {
       value_ok(w);
     } else if (key.empty()) {

@@ -2,10 +2,10 @@
 /// The second stage of the Heidenhain reader: a block's words (lexer.hpp) become a `block`, by
 /// the block's keyword — `L` `LN` `C` `CC` `CR` (motion.hpp), `TOOL CALL`, M lines,
 /// `BEGIN PGM`/`END PGM … MM`, `;` and `*` comments, `FUNCTION TCPM`/`FUNCTION RESET TCPM`.
-/// `BLK FORM`, cycles and other lines without axis words pass through. Rejected: Q parameters in
-/// axis words, incremental `IX`…, INCH programs, active frame changes (`PLANE SPATIAL`…,
-/// `CYCL DEF 7/8/10/11/19/26`, `TRANS`). Block numbers are kept as written (repeated or missing
-/// is fine).
+/// `BLK FORM`, cycles, Q assignments (parameters.hpp) and other lines without axis words pass
+/// through. Rejected: Q parameters that are not constants of the file, incremental `IX`…, INCH
+/// programs, active frame changes (`PLANE SPATIAL`…, `CYCL DEF 7/8/10/11/19/26`, `TRANS`).
+/// Block numbers are kept as written (repeated or missing is fine).
 #pragma once
 
 #include <charconv>
@@ -40,6 +40,8 @@ class block_reader : public word_checks {
     control_bytes(i);
     i = block_number(i);
     dispatch(i);
+    for (auto c = t_.inner_comments.rbegin(); c != t_.inner_comments.rend(); ++c)  // comments before `~`
+      if (!b_.passthrough) b_.comment = *c + (b_.comment ? " " + *b_.comment : std::string());
     if (!b_.passthrough) {
       for (std::size_t k : stray_) stray_error(k);
       if (b_.axes.x_mm) state_.last[0] = b_.axes.x_mm;
@@ -105,6 +107,8 @@ class block_reader : public word_checks {
       else if (c < s_.size()) b_.passthrough = true, b_.tcp.reset();
     } else if (auto cycle = scan_.keywords(i, {"CYCL", "DEF"})) {
       cycle_definition(i, *cycle);
+    } else if (record_assignment(std::string_view(s_).substr(i), t_.where(i).line, state_.q)) {
+      b_.passthrough = true;  // kept as written; its value is read where a word uses it
     } else {
       other(i, head);
     }
@@ -314,6 +318,11 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
   detail::reader_state state;
   read_transmitted(text, file_path, out, on_block, [&](std::string_view body, const block_sink& sink) {
     const std::vector<text_line> lines = split_lines(body);
+    for (const text_line& line : lines)
+      if (state.q.control_flow_line == 0) {
+        state.q.control_flow = detail::control_flow_of(line.text);
+        if (!state.q.control_flow.empty()) state.q.control_flow_line = line.number;
+      }
     for (std::size_t li = 0; li < lines.size(); ++li) {
       if (lexing::is_blank(lines[li].text)) continue;
       block_text source;
