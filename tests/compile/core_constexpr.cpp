@@ -79,37 +79,58 @@ static_assert(nearest_within_travel<dmu_80p>(row1, {to_radians(80_deg), to_radia
 static_assert(machine<dmu_80p> && machine<sajo_12000p> && machine<machines::a_rotary_4axis>);
 
 /// S1: the carried axis is parallel to the fixed one, so it cannot change the tool direction.
-struct q_parallel_p {
-  static constexpr std::string_view id = "q-parallel-p";
-  static constexpr std::string_view structure = "degenerate: two tables about +Z";
-  static constexpr vec3 tool_reference = unit_x;
-  static constexpr std::array rotary{
-      rotary_axis{axis_letter::C, mount::table, unit_z, angle_sense::tool_relative, rotary_travel::endless()},
-      rotary_axis{axis_letter::A, mount::table, unit_z, angle_sense::tool_relative, rotary_travel::endless()}};
-};
+inline constexpr machine_model q_parallel_p_model = machine_model::from(
+    {.id = "q-parallel-p",
+     .structure = "degenerate: two tables about +Z",
+     .linear = cartesian_axes({-100, 100}, {-100, 100}, {-100, 100}),
+     .rotary = {rotary_axis{axis_letter::C, mount::table, unit_z, angle_sense::tool_relative, rotary_travel::endless()},
+                rotary_axis{axis_letter::A, mount::table, unit_z, angle_sense::tool_relative, rotary_travel::endless()}},
+     .tool = {unit_x, 0.0}});
+struct q_parallel_p : machine_type<q_parallel_p_model> {};
 static_assert(machine_description<q_parallel_p> && !machine<q_parallel_p>);
 
 /// S1: the carried axis is parallel to the tool.
-struct q_parallel_t {
-  static constexpr std::string_view id = "q-parallel-t";
-  static constexpr std::string_view structure = "degenerate: head about the tool axis";
-  static constexpr vec3 tool_reference = unit_z;
-  static constexpr std::array rotary{
-      rotary_axis{axis_letter::B, mount::table, unit_y, angle_sense::tool_relative, rotary_travel::endless()},
-      rotary_axis{axis_letter::C, mount::head, unit_z, angle_sense::tool_relative, rotary_travel::endless()}};
-};
+inline constexpr machine_model q_parallel_t_model = machine_model::from(
+    {.id = "q-parallel-t",
+     .structure = "degenerate: head about the tool axis",
+     .linear = cartesian_axes({-100, 100}, {-100, 100}, {-100, 100}),
+     .rotary = {rotary_axis{axis_letter::B, mount::table, unit_y, angle_sense::tool_relative, rotary_travel::endless()},
+                rotary_axis{axis_letter::C, mount::head, unit_z, angle_sense::tool_relative, rotary_travel::endless()}}});
+struct q_parallel_t : machine_type<q_parallel_t_model> {};
 static_assert(!machine<q_parallel_t>);
 
 /// Not a unit direction.
-struct long_axis {
-  static constexpr std::string_view id = "long-axis";
-  static constexpr std::string_view structure = "invalid: direction of length 2";
-  static constexpr vec3 tool_reference = unit_z;
-  static constexpr std::array rotary{
-      rotary_axis{axis_letter::C, mount::table, vec3{0, 0, 2}, angle_sense::tool_relative, rotary_travel::endless()},
-      rotary_axis{axis_letter::A, mount::head, unit_x, angle_sense::tool_relative, rotary_travel::endless()}};
-};
+inline constexpr machine_model long_axis_model = machine_model::from(
+    {.id = "long-axis",
+     .structure = "invalid: direction of length 2",
+     .linear = cartesian_axes({-100, 100}, {-100, 100}, {-100, 100}),
+     .rotary = {rotary_axis{axis_letter::C, mount::table, vec3{0, 0, 2}, angle_sense::tool_relative, rotary_travel::endless()},
+                rotary_axis{axis_letter::A, mount::head, unit_x, angle_sense::tool_relative, rotary_travel::endless()}}});
+struct long_axis : machine_type<long_axis_model> {};
 static_assert(!machine<long_axis>);
+
+// --- the machine value: each rule, and the whole chain at compile time (G6), (G7) ----------
+constexpr machine_geometry valid = machines::ac_trunnion::model.geometry;
+constexpr bool breaks(machine_rules::rule r, machine_geometry g) { return !machine_rules::holds(r, g); }
+static_assert(machine_rules::check(valid).ok());
+static_assert([] { auto g = valid; g.rotary[0].letter = axis_letter::none; return breaks(machine_rules::rule::rotary_count, g); }());
+static_assert([] { auto g = valid; g.rotary[1].letter = axis_letter::C; return breaks(machine_rules::rule::rotary_letters, g); }());
+static_assert([] { auto g = valid; g.linear[1].letter = axis_letter::Z; return breaks(machine_rules::rule::linear_letters, g); }());
+static_assert([] { auto g = valid; g.linear[2].direction = unit_x; return breaks(machine_rules::rule::linear_independent, g); }());
+static_assert([] { auto g = valid; g.linear[0].travel = {5, -5}; return breaks(machine_rules::rule::travel_order, g); }());
+static_assert([] { auto g = valid; g.rotary[1].travel = rotary_travel::between({-600.0}, {600.0}); return breaks(machine_rules::rule::travel_order, g); }());
+static_assert([] { auto g = valid; g.tool.pivot_length_mm = -1; return breaks(machine_rules::rule::finite, g); }());
+static_assert([] { auto g = valid; g.tool.reference = unit_x; return breaks(machine_rules::rule::moves_the_tool, g); }());
+
+// ac-trunnion: both table axes through (0, 0, −200). A = 90° tilts the part so that the tip at
+// the reference point lies at (0, 200, −200) in the part, and the tool along +Y (K18).
+constexpr tool_pose tilted = forward<machines::ac_trunnion>({{0, 0, 0}, {radians{0}, to_radians(90_deg)}});
+static_assert(near(tilted.tip_mm, vec3{0, 200, -200}, 1e-9) && near(tilted.axis, vec3{0, 1, 0}, 1e-15));
+// (G7): the pose inverse lists those axis values again, within travel.
+constexpr auto back = inverse<machines::ac_trunnion>(tilted, run_inputs{});
+static_assert(back.reachable() && near(back.first_within_travel()->xyz_mm, vec3{0, 0, 0}, 1e-9));
+// The value API in a constant expression: the same model, read as a value.
+static_assert(inverse(machines::ac_trunnion::model, tilted, run_inputs{}).size() == back.size());
 
 }  // namespace
 

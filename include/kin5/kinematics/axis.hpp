@@ -1,6 +1,8 @@
 /// @file axis.hpp
-/// One machine axis as data: its NC letter, where it is mounted, its direction, how a commanded
-/// angle relates to the rotation of the tool relative to the workpiece, and its travel.
+/// One machine axis as data. A linear axis: its NC letter, the side it moves, its direction and
+/// travel in mm. A rotary axis: its NC letter, where it is mounted, its line (a point and a
+/// direction), how a commanded angle relates to the rotation of the tool relative to the
+/// workpiece, and its travel.
 ///
 /// Sign convention (docs/theory.md, "Commanded angles"): ψ is the right-handed rotation *of the tool relative to the
 /// workpiece* about `direction`. For a head axis ψ is the physical rotation. For a table axis
@@ -16,8 +18,8 @@
 
 namespace kin5 {
 
-/// The NC address letter of an axis.
-enum class axis_letter : char { X = 'X', Y = 'Y', Z = 'Z', A = 'A', B = 'B', C = 'C' };
+/// The NC address letter of an axis; `none` marks an unused rotary slot of a 4-axis machine.
+enum class axis_letter : char { none = '\0', X = 'X', Y = 'Y', Z = 'Z', A = 'A', B = 'B', C = 'C' };
 
 constexpr char to_char(axis_letter l) { return static_cast<char>(l); }
 
@@ -44,13 +46,47 @@ struct rotary_travel {
   }
 };
 
+/// Travel of a linear axis, in millimetres.
+struct linear_travel {
+  double lower_mm = -1e9;
+  double upper_mm = 1e9;
+
+  static constexpr linear_travel between(double lo_mm, double hi_mm) { return {lo_mm, hi_mm}; }
+
+  /// Whether the value lies within the travel, with `slack_mm` for rounding.
+  constexpr bool contains(double value_mm, double slack_mm = 1e-9) const {
+    return value_mm >= lower_mm - slack_mm && value_mm <= upper_mm + slack_mm;
+  }
+  /// How far the value lies outside the travel, mm; 0 inside.
+  constexpr double excess_mm(double value_mm) const {
+    return value_mm < lower_mm ? lower_mm - value_mm : (value_mm > upper_mm ? value_mm - upper_mm : 0.0);
+  }
+};
+
+/// A linear axis. Its value x moves the tool by +x·direction relative to the part (ISO 841),
+/// whether the slide carries the spindle (`mount::head`, which moves by +x·direction) or the
+/// table (`mount::table`, which moves by −x·direction).
+struct linear_axis {
+  axis_letter letter{};
+  mount side{};
+  vec3 direction{};        ///< unit vector, machine frame
+  linear_travel travel{};  ///< limits of the value, mm
+};
+
 /// A rotary axis.
 struct rotary_axis {
   axis_letter letter{};
   mount side{};
-  vec3 direction{};         ///< unit vector, workpiece frame, at the zero pose of the machine
+  vec3 direction{};         ///< unit vector, machine frame, at the zero pose of the machine
   angle_sense sense{};      ///< how the commanded value relates to ψ
   rotary_travel travel{};   ///< limits of the commanded value
+  vec3 point_mm{};          ///< a point on the axis line, machine frame, at the zero pose
+
+  /// φ, the physical right-handed rotation about `direction`, from the commanded angle: the
+  /// commanded angle itself, negated for a table programmed tool-relative.
+  constexpr radians physical(radians commanded_value) const {
+    return (side == mount::table && sense == angle_sense::tool_relative) ? -commanded_value : commanded_value;
+  }
 
   /// dψ / d(commanded): −1 for a physical table angle, +1 otherwise.
   constexpr double psi_per_commanded() const {

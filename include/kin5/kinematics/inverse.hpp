@@ -1,6 +1,8 @@
 /// @file inverse.hpp
-/// Inverse kinematics of a machine type: a unit tool axis → every set of commanded rotary
-/// angles that produces it, each flagged within or outside the axes' travel.
+/// Inverse kinematics of the orientation: a unit tool axis → every set of commanded rotary
+/// angles that produces it, each flagged within or outside the axes' travel; (G1)–(G5) with each
+/// ψ turned into the commanded angle by its axis' sense. `inverse(m, u)` takes a machine value,
+/// `inverse<M>(u)` a machine type (same code, with a result sized for M).
 ///
 /// Output ranges: a continuous axis is reported in (−180°, 180°]; a bounded axis is reported at
 /// every 360° shift of the angle that lies within its travel (so `ac-head` C ∈ [−360°, 360°]
@@ -20,10 +22,10 @@
 
 namespace kin5 {
 
-/// One solution of the inverse: commanded rotary angles in `M::rotary` order.
-template <machine M>
-struct axis_solution {
-  rotary_angles<M> angles{};
+/// One solution of the inverse: commanded rotary angles in chain order.
+template <std::size_t N>
+struct basic_axis_solution {
+  std::array<radians, N> angles{};
   bool within_travel = false;
   int branch = 0;  ///< 0 for the + branch of (G3), 1 for the − branch
 };
@@ -37,42 +39,61 @@ struct inverse_options {
   radians reach_tolerance{1e-9};
   /// An angle this far outside a travel limit is taken as on it (and clamped to it).
   radians travel_slack{1e-9};
+  /// A linear axis value this far outside its travel (mm) is taken as within it.
+  double linear_slack_mm = 1e-9;
 };
 
-/// Most solutions one tool axis can have on M: two branches (one on a 4-axis machine), times,
-/// for each bounded axis, the number of 360° shifts its travel can hold.
-template <machine M>
-constexpr std::size_t max_solutions() {
-  std::size_t n = rotary_count<M> == 2 ? 2 : 1;
-  for (const auto& a : M::rotary)
-    if (!a.travel.continuous)
-      n *= static_cast<std::size_t>((a.travel.upper.value - a.travel.lower.value) / 360.0) + 1;
+/// Most solutions one tool axis can have on machine `m`: two branches (one on a 4-axis machine),
+/// times, for each bounded axis, the number of 360° shifts its travel can hold.
+constexpr std::size_t max_solutions(const machine_model& m) {
+  std::size_t n = m.rotary_count == 2 ? 2 : 1;
+  for (std::size_t i = 0; i < m.rotary_count; ++i)
+    if (!m.rotary(i).travel.continuous)
+      n *= static_cast<std::size_t>((m.rotary(i).travel.upper.value - m.rotary(i).travel.lower.value) / 360.0) + 1;
   return n;
 }
 
-/// Every solution for one tool axis.
-template <machine M>
-struct inverse_result {
-  static constexpr std::size_t capacity = max_solutions<M>();
+/// `max_solutions` of machine type M.
+template <machine_description M>
+constexpr std::size_t max_solutions() {
+  return max_solutions(M::model);
+}
+
+/// Most solutions of any valid machine: two branches, four shifts of each of two bounded axes.
+inline constexpr std::size_t max_solutions_any = 2 * 4 * 4;
+
+/// Every solution for one tool axis: up to `Capacity` solutions of N rotary angles.
+template <std::size_t N, std::size_t Capacity>
+struct basic_inverse_result {
+  static constexpr std::size_t capacity = Capacity;
 
   reach_status status = reach_status::unreachable;
   radians gap{};  ///< angle from the requested axis to what the machine can reach; 0 if reachable
-  std::array<axis_solution<M>, capacity> items{};
+  std::array<basic_axis_solution<N>, Capacity> items{};
   std::size_t count = 0;
 
-  constexpr const axis_solution<M>* begin() const { return items.data(); }
-  constexpr const axis_solution<M>* end() const { return items.data() + count; }
+  constexpr const basic_axis_solution<N>* begin() const { return items.data(); }
+  constexpr const basic_axis_solution<N>* end() const { return items.data() + count; }
   constexpr std::size_t size() const { return count; }
-  constexpr const axis_solution<M>& operator[](std::size_t i) const { return items[i]; }
+  constexpr const basic_axis_solution<N>& operator[](std::size_t i) const { return items[i]; }
   /// Whether at least one solution lies within the travel of every axis.
   constexpr bool reachable() const { return status != reach_status::unreachable; }
   /// The first solution within travel, if any.
-  constexpr std::optional<rotary_angles<M>> first_within_travel() const {
+  constexpr std::optional<std::array<radians, N>> first_within_travel() const {
     for (const auto& s : *this)
       if (s.within_travel) return s.angles;
     return std::nullopt;
   }
 };
+
+/// The inverse of a machine known at run time.
+using inverse_values = basic_inverse_result<2, max_solutions_any>;
+/// One solution for machine type M.
+template <machine_description M>
+using axis_solution = basic_axis_solution<rotary_count<M>>;
+/// The inverse for machine type M, sized for it.
+template <machine_description M>
+using inverse_result = basic_inverse_result<rotary_count<M>, max_solutions<M>()>;
 
 namespace detail {
 
@@ -124,7 +145,7 @@ constexpr double distance_to_travel(const rotary_travel& travel, radians command
   return best;
 }
 
-// Range of ∠(p, R(q, ψq) t) for ψq over the carried axis' travel ((G5) with a bounded q).
+// Range of ∠(p, R(q, ψq) t) for ψq over the carried axis' travel (G5 with a bounded q).
 constexpr std::array<double, 2> latitude_image(const two_axis_geometry& g, const rotary_axis& axis_q) {
   if (axis_q.travel.continuous) return {g.theta_min.value, g.theta_max.value};
   const double a = axis_q.psi(to_radians(axis_q.travel.lower)).value;
@@ -144,87 +165,105 @@ constexpr std::array<double, 2> latitude_image(const two_axis_geometry& g, const
   return {mn, mx};
 }
 
-}  // namespace detail
-
-/// All commanded angle sets of machine M whose tool axis is `u` (unit, workpiece frame).
-/// (G1)–(G5) with each ψ turned into the commanded angle by its axis' sense.
-template <machine M>
-constexpr inverse_result<M> inverse(const vec3& u, const inverse_options& options = {}) {
-  inverse_result<M> out{};
-  constexpr auto g = geometry<M>();
-  two_axis_solution raw{};
-  if constexpr (rotary_count<M> == 2) {
-    pole_policy policy = options.pole;
-    if (policy.rule == pole_policy::kind::keep) policy.psi_p = M::rotary[0].psi(policy.psi_p);
-    raw = g.solve(u, policy, options.reach_tolerance);
-  } else {
-    raw = g.solve(u, options.reach_tolerance);
-  }
-  out.gap = raw.gap;
-  if (raw.count == 0) return out;
-
-  bool any_within = false;
-  for (std::size_t b = 0; b < raw.count; ++b) {
-    rotary_angles<M> commanded{};
-    commanded[0] = M::rotary[0].commanded(raw.branch[b].psi_p);
-    if constexpr (rotary_count<M> == 2) commanded[1] = M::rotary[1].commanded(raw.branch[b].psi_q);
-
-    std::array<detail::shifted_values, rotary_count<M>> shifts{};
-    bool within = true;
-    for (std::size_t i = 0; i < rotary_count<M>; ++i) {
-      shifts[i] = detail::shifts_within(M::rotary[i].travel, commanded[i], options.travel_slack);
-      within = within && shifts[i].within;
+// Appends every combination of the shifts of branch `b` to `out`, skipping duplicates.
+template <std::size_t N, std::size_t Capacity>
+constexpr void add_shifts(std::size_t n, const std::array<shifted_values, N>& shifts, bool within, int b,
+                          basic_inverse_result<N, Capacity>& out) {
+  std::array<std::size_t, N> idx{};
+  while (true) {
+    basic_axis_solution<N> s{};
+    for (std::size_t i = 0; i < n; ++i) s.angles[i] = shifts[i].value[idx[i]];
+    s.within_travel = within;
+    s.branch = b;
+    bool duplicate = false;
+    for (const auto& other : out) {
+      bool same = true;
+      for (std::size_t i = 0; i < n; ++i) same = same && math::abs(other.angles[i].value - s.angles[i].value) <= 1e-12;
+      duplicate = duplicate || same;
     }
-    any_within = any_within || within;
-    // Cartesian product of the shifts.
-    std::array<std::size_t, rotary_count<M>> idx{};
-    while (true) {
-      axis_solution<M> s{};
-      for (std::size_t i = 0; i < rotary_count<M>; ++i) s.angles[i] = shifts[i].value[idx[i]];
-      s.within_travel = within;
-      s.branch = static_cast<int>(b);
-      bool duplicate = false;
-      for (const auto& other : out) {
-        bool same = true;
-        for (std::size_t i = 0; i < rotary_count<M>; ++i)
-          same = same && math::abs(other.angles[i].value - s.angles[i].value) <= 1e-12;
-        duplicate = duplicate || same;
-      }
-      if (!duplicate && out.count < out.items.size()) out.items[out.count++] = s;
-      std::size_t i = 0;
-      while (i < rotary_count<M> && ++idx[i] == shifts[i].count) idx[i++] = 0;
-      if (i == rotary_count<M>) break;
-    }
+    if (!duplicate && out.count < Capacity) out.items[out.count++] = s;
+    std::size_t i = 0;
+    while (i < n && ++idx[i] == shifts[i].count) idx[i++] = 0;
+    if (i == n) break;
   }
+}
 
-  if (any_within) {
-    out.status = raw.status;
-    return out;
-  }
-  // Outside travel: the gap through the carried axis' latitude image, else through p's travel.
-  out.status = reach_status::unreachable;
-  const double theta = angle_between(g.p, normalized(u)).value;
-  if constexpr (rotary_count<M> == 2) {
-    const auto image = detail::latitude_image(g, M::rotary[1]);
+// The gap of an axis every branch of which lies outside travel (see the file comment).
+template <std::size_t N>
+constexpr radians outside_travel_gap(const machine_model& m, const vec3& u, const two_axis_solution& raw,
+                                     const inverse_options& options) {
+  const double theta = angle_between(m.rotary(0).direction, normalized(u)).value;
+  if (N >= 2 && m.rotary_count == 2) {
+    const auto image = latitude_image(m.orientation, m.rotary(1));
     const double lat_gap = theta < image[0] ? image[0] - theta : (theta > image[1] ? theta - image[1] : 0.0);
-    if (lat_gap > options.reach_tolerance.value) {
-      out.gap = {lat_gap};
-      return out;
-    }
+    if (lat_gap > options.reach_tolerance.value) return {lat_gap};
   }
   double best = pi;
   for (std::size_t b = 0; b < raw.count; ++b) {
-    if constexpr (rotary_count<M> == 2) {
-      if (detail::distance_to_travel(M::rotary[1].travel, M::rotary[1].commanded(raw.branch[b].psi_q)) >
-          options.travel_slack.value)
-        continue;
-    }
-    const double d = detail::distance_to_travel(M::rotary[0].travel, M::rotary[0].commanded(raw.branch[b].psi_p));
+    if (m.rotary_count == 2 &&
+        distance_to_travel(m.rotary(1).travel, m.rotary(1).commanded(raw.branch[b].psi_q)) > options.travel_slack.value)
+      continue;
+    const double d = distance_to_travel(m.rotary(0).travel, m.rotary(0).commanded(raw.branch[b].psi_p));
     // Turning u about p by d moves it through 2·asin(sin θ · sin(d/2)).
     const double moved = 2.0 * math::asin(math::clamp(math::sin(theta) * math::sin(0.5 * d), -1.0, 1.0));
     best = moved < best ? moved : best;
   }
-  out.gap = {best};
+  return {best};
+}
+
+}  // namespace detail
+
+/// Every commanded angle set of machine `m` whose tool axis is `u` (unit, table frame at the
+/// zero pose), written into `out` (N >= m.rotary_count; see `max_solutions` for the capacity).
+template <std::size_t N, std::size_t Capacity>
+constexpr void inverse_into(const machine_model& m, const vec3& u, const inverse_options& options,
+                            basic_inverse_result<N, Capacity>& out) {
+  const std::size_t n = m.rotary_count < N ? m.rotary_count : N;
+  two_axis_solution raw{};
+  if (n == 2) {
+    pole_policy policy = options.pole;
+    if (policy.rule == pole_policy::kind::keep) policy.psi_p = m.rotary(0).psi(policy.psi_p);
+    raw = m.orientation.solve(u, policy, options.reach_tolerance);
+  } else {
+    raw = m.orientation_single.solve(u, options.reach_tolerance);
+  }
+  out.gap = raw.gap;
+  if (raw.count == 0) return;
+
+  bool any_within = false;
+  for (std::size_t b = 0; b < raw.count; ++b) {
+    std::array<radians, 2> commanded{m.rotary(0).commanded(raw.branch[b].psi_p),
+                                     n == 2 ? m.rotary(1).commanded(raw.branch[b].psi_q) : radians{}};
+    std::array<detail::shifted_values, N> shifts{};
+    bool within = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      shifts[i] = detail::shifts_within(m.rotary(i).travel, commanded[i], options.travel_slack);
+      within = within && shifts[i].within;
+    }
+    any_within = any_within || within;
+    detail::add_shifts(n, shifts, within, static_cast<int>(b), out);
+  }
+  if (any_within) {
+    out.status = raw.status;
+    return;
+  }
+  out.status = reach_status::unreachable;
+  out.gap = detail::outside_travel_gap<N>(m, u, raw, options);
+}
+
+/// Every commanded angle set of machine `m` whose tool axis is `u` (unit, table frame at the
+/// zero pose): (G1)–(G5).
+constexpr inverse_values inverse(const machine_model& m, const vec3& u, const inverse_options& options = {}) {
+  inverse_values out{};
+  inverse_into(m, u, options, out);
+  return out;
+}
+
+/// Every commanded angle set of machine type M whose tool axis is `u`.
+template <machine M>
+constexpr inverse_result<M> inverse(const vec3& u, const inverse_options& options = {}) {
+  inverse_result<M> out{};
+  inverse_into(M::model, u, options, out);
   return out;
 }
 
