@@ -1,7 +1,8 @@
 /// @file generators.hpp
 /// RapidCheck generators for what the kinematics needs: reals in a range (uniform at every
-/// size), angles, unit vectors, directions near a pole, and per-machine rotary angles drawn
-/// uniformly, exactly at a travel limit, or a tiny step inside or outside it.
+/// size), angles, unit vectors, directions near a pole, per-machine rotary angles drawn
+/// uniformly, exactly at a travel limit, or a tiny step inside or outside it, whole axis values
+/// (slides and rotary axes), and run-time inputs (tool length, work offset).
 #pragma once
 
 #include <cmath>
@@ -108,6 +109,54 @@ rc::Gen<rotary_angles<M>> angles_anywhere() {
   } else {
     return rc::gen::map(angle_in(-2 * pi, 2 * pi), [](radians a) { return rotary_angles<M>{a}; });
   }
+}
+
+/// A linear axis value within travel: uniform, exactly at a limit, or a tiny step inside.
+inline rc::Gen<double> linear_value_within(const linear_axis& a) {
+  const double lo = a.travel.lower_mm, hi = a.travel.upper_mm;
+  return rc::gen::weightedOneOf<double>({
+      {4, real_in(lo, hi)},
+      {1, rc::gen::just(lo)},
+      {1, rc::gen::just(hi)},
+      {1, rc::gen::map(log_uniform(-9.0, -3.0), [lo](double e) { return lo + e; })},
+      {1, rc::gen::map(log_uniform(-9.0, -3.0), [hi](double e) { return hi - e; })},
+  });
+}
+
+/// Axis values of M within every travel.
+template <machine M>
+rc::Gen<axis_position<M>> axis_values_within() {
+  return rc::gen::apply(
+      [](double x, double y, double z, rotary_angles<M> a) { return axis_position<M>{{x, y, z}, a}; },
+      linear_value_within(M::linear[0]), linear_value_within(M::linear[1]), linear_value_within(M::linear[2]),
+      angles_within<M>());
+}
+
+/// Axis values of M anywhere: slides in [−1000, 1000] mm, rotary axes in [−2π, 2π].
+template <machine M>
+rc::Gen<axis_position<M>> axis_values_anywhere() {
+  return rc::gen::apply(
+      [](double x, double y, double z, rotary_angles<M> a) { return axis_position<M>{{x, y, z}, a}; },
+      real_in(-1000, 1000), real_in(-1000, 1000), real_in(-1000, 1000), angles_anywhere<M>());
+}
+
+/// A rigid transform: a rotation about a random axis and a shift in [−500, 500] mm; one in four
+/// a pure shift, one in eight the identity.
+inline rc::Gen<rigid_transform> rigid_any() {
+  return rc::gen::apply(
+      [](int kind, vec3 axis, double angle, double x, double y, double z) {
+        if (kind == 0) return rigid_transform::identity();
+        return rigid_transform{kind <= 2 ? mat3::identity() : rotation(axis, radians{angle}), vec3{x, y, z}};
+      },
+      rc::gen::inRange(0, 8), unit_vector(), real_in(-pi, pi), real_in(-500, 500), real_in(-500, 500),
+      real_in(-500, 500));
+}
+
+/// Run-time inputs: a tool length in [0, 300] mm (0 one time in five) and a work offset.
+inline rc::Gen<run_inputs> run_inputs_any() {
+  return rc::gen::apply([](double length, bool zero, rigid_transform w) { return run_inputs{zero ? 0.0 : length, w}; },
+                        real_in(0, 300), rc::gen::weightedOneOf<bool>({{1, rc::gen::just(true)}, {4, rc::gen::just(false)}}),
+                        rigid_any());
 }
 
 }  // namespace kin5::test
