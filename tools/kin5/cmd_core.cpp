@@ -1,8 +1,13 @@
-// The core subcommands of the kin5 tool, each a few calls into the headers:
+// The core subcommands of the kin5 tool, each a few calls into the headers on a machine value
+// (machine_model), so a machine known only at run time runs the same code:
 //
-//   kin5 machines                              the catalog, one machine per line
-//   kin5 solve --machine ID --vector I,J,K     every solution within travel (inverse<M>, (G1)-(G5))
-//   kin5 fk --machine ID NAME=DEG NAME=DEG     the unit tool axis (tool_axis<M>, (G1))
+//   kin5 machines                                   the catalog, one machine per line
+//   kin5 solve --machine ID --vector I,J,K          every rotary solution within travel (G1)-(G5)
+//              [--tip X,Y,Z [--tool-length L] [--work-offset X,Y,Z]]
+//                                                   with --tip: every axis solution (G7)
+//   kin5 fk --machine ID NAME=DEG ...               the unit tool axis (G1)
+//           [X=MM Y=MM Z=MM] [--tool-length L] [--work-offset X,Y,Z]
+//                                                   with X, Y, Z: the tip and the axis (G6)
 //
 // Exit codes are those of commands.hpp: 0 success, 1 bad arguments, 3 no solution.
 // Messages go to stderr as one line starting with "kin5 <command>:".
@@ -26,47 +31,107 @@
 namespace kin5::tool {
 namespace {
 
-/// The indices of M's rotary axes in NC address order (A, B, C), the order output is written in.
-template <machine M>
-std::array<std::size_t, rotary_count<M>> letter_order() {
-  std::array<std::size_t, rotary_count<M>> order{};
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+/// The catalog model with id `id`, or null.
+const machine_model* find_machine(std::string_view id) {
+  const machine_model* found = nullptr;
+  kin5::machines::for_each_machine([&]<class M>() {
+    if (!found && M::id == id) found = &M::model;
+  });
+  return found;
+}
+
+/// The indices of m's rotary axes in NC address order (A, B, C), the order output is written in.
+std::vector<std::size_t> letter_order(const machine_model& m) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < m.rotary_count; ++i) order.push_back(i);
   std::sort(order.begin(), order.end(),
-            [](std::size_t a, std::size_t b) { return M::rotary[a].letter < M::rotary[b].letter; });
+            [&](std::size_t a, std::size_t b) { return m.rotary(a).letter < m.rotary(b).letter; });
   return order;
 }
 
-/// "C, B": M's rotary axis letters in chain order (workpiece to tool).
-template <machine M>
-std::string axis_names() {
-  std::string out;
-  for (std::size_t i = 0; i < rotary_count<M>; ++i) {
-    if (i) out += ", ";
-    out += to_char(M::rotary[i].letter);
-  }
+/// "X, Y, Z, C, B": m's axis letters, linear then rotary in chain order (workpiece to tool).
+std::string axis_names(const machine_model& m) {
+  std::string out = "X, Y, Z";
+  for (std::size_t i = 0; i < m.rotary_count; ++i) (out += ", ") += to_char(m.rotary(i).letter);
   return out;
 }
 
-/// A travel limit in degrees as a person writes it: "-120", "30", "22.5".
-std::string format_limit(degrees d) {
+/// A limit as a person writes it: "-120", "30", "22.5".
+std::string format_limit(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", d.value);
+  std::snprintf(buf, sizeof buf, "%g", v);
   return buf;
 }
+
+/// A length in mm with 6 decimals ("12.500000"); "-0.000000" is written "0.000000".
+std::string format_mm(double v) { return format_degrees(v); }
 
 /// "B table continuous tool-relative" or "A head [-120, 30] deg tool-relative".
 std::string describe(const rotary_axis& a) {
   std::string out(1, to_char(a.letter));
   out += a.side == mount::head ? " head" : " table";
-  out += a.travel.continuous
-             ? std::string(" continuous")
-             : " [" + format_limit(a.travel.lower) + ", " + format_limit(a.travel.upper) + "] deg";
+  out += a.travel.continuous ? std::string(" continuous")
+                             : " [" + format_limit(a.travel.lower.value) + ", " + format_limit(a.travel.upper.value) + "] deg";
   out += a.sense == angle_sense::physical ? " physical" : " tool-relative";
   return out;
 }
 
 void report_unknown_machine(std::string_view command, std::string_view id) {
   std::cerr << "kin5 " << command << ": unknown machine '" << id << "'; valid ids: " << join(machine_ids()) << '\n';
+}
+
+/// "X,Y,Z" as a vector, or an error naming `option`.
+std::optional<vec3> parse_triple(std::string_view text, std::string_view option, std::string_view names,
+                                 std::string& error) {
+  const auto fields = split(text, ',');
+  if (fields.size() != 3) {
+    error = std::string(option) + " needs three numbers " + std::string(names) + " separated by commas, got '" +
+            std::string(text) + "'";
+    return std::nullopt;
+  }
+  std::array<double, 3> c{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto v = parse_real(fields[i]);
+    if (!v) {
+      error = std::string(option) + " component '" + std::string(fields[i]) + "' is not a finite number";
+      return std::nullopt;
+    }
+    c[i] = *v;
+  }
+  return vec3{c[0], c[1], c[2]};
+}
+
+/// The unit vector of "I,J,K", or an error message. Scaled before normalising so that large
+/// finite components cannot overflow.
+std::optional<vec3> parse_direction(std::string_view text, std::string& error) {
+  const auto v = parse_triple(text, "--vector", "I,J,K", error);
+  if (!v) return std::nullopt;
+  const double scale = std::max({std::fabs(v->x), std::fabs(v->y), std::fabs(v->z)});
+  if (!(scale > 0)) {
+    error = "--vector must not be the zero vector";
+    return std::nullopt;
+  }
+  return normalized((1.0 / scale) * *v);
+}
+
+/// The run-time inputs from --tool-length and --work-offset.
+std::optional<run_inputs> parse_inputs(const std::string& tool_length, const std::string& work_offset,
+                                       std::string& error) {
+  run_inputs in{};
+  if (!tool_length.empty()) {
+    const auto l = parse_real(tool_length);
+    if (!l) {
+      error = "--tool-length '" + tool_length + "' is not a finite number of mm";
+      return std::nullopt;
+    }
+    in.tool_length_mm = *l;
+  }
+  if (!work_offset.empty()) {
+    const auto w = parse_triple(work_offset, "--work-offset", "X,Y,Z", error);
+    if (!w) return std::nullopt;
+    in.work_offset.translation_mm = *w;
+  }
+  return in;
 }
 
 // ---- machines ---------------------------------------------------------------------------
@@ -93,55 +158,57 @@ int run_machines() {
 struct solve_arguments {
   std::string machine_id;
   std::string vector_text;
+  std::string tip_text;
+  std::string tool_length;
+  std::string work_offset;
 };
 
-/// The unit vector of "I,J,K", or an error message. Scaled before normalising so that large
-/// finite components cannot overflow.
-std::optional<vec3> parse_direction(std::string_view text, std::string& error) {
-  const auto fields = split(text, ',');
-  if (fields.size() != 3) {
-    error = "--vector needs three numbers I,J,K separated by commas, got '" + std::string(text) + "'";
-    return std::nullopt;
+/// "A=… B=…" for rotary angles of m, in letter order.
+std::string rotary_words(const machine_model& m, const rotary_values& angles) {
+  std::string line;
+  for (std::size_t k : letter_order(m)) {
+    if (!line.empty()) line += ' ';
+    line += to_char(m.rotary(k).letter);
+    line += '=';
+    line += format_degrees(to_degrees(angles[k]).value);
   }
-  std::array<double, 3> c{};
-  for (std::size_t i = 0; i < 3; ++i) {
-    const auto v = parse_real(fields[i]);
-    if (!v) {
-      error = "--vector component '" + std::string(fields[i]) + "' is not a finite number";
-      return std::nullopt;
-    }
-    c[i] = *v;
-  }
-  const double scale = std::max({std::fabs(c[0]), std::fabs(c[1]), std::fabs(c[2])});
-  if (!(scale > 0)) {
-    error = "--vector must not be the zero vector";
-    return std::nullopt;
-  }
-  return normalized(vec3{c[0] / scale, c[1] / scale, c[2] / scale});
+  return line;
 }
 
-template <machine M>
-int solve_on(const vec3& u) {
-  const auto result = inverse<M>(u);
+void note_pole(const machine_model& m) {
+  const char p = to_char(m.rotary(0).letter);
+  std::cerr << "kin5 solve: pole: the tool axis lies along the " << p << " axis, so " << p << " is free and set to 0\n";
+}
+
+int solve_axis(const machine_model& m, const vec3& u) {
+  const auto result = inverse(m, u);
   if (!result.reachable()) {
-    std::cerr << "kin5 solve: no solution within travel on " << M::id << ": the tool axis is "
+    std::cerr << "kin5 solve: no solution within travel on " << m.geometry.id << ": the tool axis is "
               << format_degrees(to_degrees(result.gap).value) << " deg from what the machine can reach\n";
     return exit_codes::unreachable;
   }
-  if (result.status == reach_status::pole)
-    std::cerr << "kin5 solve: pole: the tool axis lies along the " << to_char(M::rotary[0].letter)
-              << " axis, so " << to_char(M::rotary[0].letter) << " is free and set to 0\n";
-  const auto order = letter_order<M>();
+  if (result.status == reach_status::pole) note_pole(m);
+  for (const auto& s : result)
+    if (s.within_travel) std::cout << rotary_words(m, s.angles) << '\n';
+  return exit_codes::ok;
+}
+
+int solve_pose(const machine_model& m, const tool_pose& target, const run_inputs& in) {
+  const auto result = inverse(m, target, in);
+  if (!result.reachable()) {
+    std::cerr << "kin5 solve: no solution within travel on " << m.geometry.id << ": ";
+    if (result.gap.value > 0.0)
+      std::cerr << "the tool axis is " << format_degrees(to_degrees(result.gap).value)
+                << " deg from what the machine can reach\n";
+    else
+      std::cerr << "the linear axes would leave their travel by " << format_mm(result.linear_excess_mm) << " mm\n";
+    return exit_codes::unreachable;
+  }
+  if (result.status == reach_status::pole) note_pole(m);
   for (const auto& s : result) {
     if (!s.within_travel) continue;
-    std::string line;
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      if (k) line += ' ';
-      line += to_char(M::rotary[order[k]].letter);
-      line += '=';
-      line += format_degrees(to_degrees(s.angles[order[k]]).value);
-    }
-    std::cout << line << '\n';
+    std::cout << "X=" << format_mm(s.joints.xyz_mm.x) << " Y=" << format_mm(s.joints.xyz_mm.y)
+              << " Z=" << format_mm(s.joints.xyz_mm.z) << ' ' << rotary_words(m, s.joints.rotary) << '\n';
   }
   return exit_codes::ok;
 }
@@ -149,94 +216,128 @@ int solve_on(const vec3& u) {
 int run_solve(const solve_arguments& args) {
   std::string error;
   const auto u = parse_direction(args.vector_text, error);
-  if (!u) {
+  std::optional<vec3> tip;
+  if (u && !args.tip_text.empty()) tip = parse_triple(args.tip_text, "--tip", "X,Y,Z", error);
+  const auto in = error.empty() ? parse_inputs(args.tool_length, args.work_offset, error) : std::nullopt;
+  if (error.empty() && args.tip_text.empty() && (!args.tool_length.empty() || !args.work_offset.empty()))
+    error = "--tool-length and --work-offset need --tip";
+  if (!error.empty()) {
     std::cerr << "kin5 solve: " << error << '\n';
     return exit_codes::usage;
   }
-  int code = exit_codes::ok;
-  if (!with_machine(args.machine_id, [&]<class M>() { code = solve_on<M>(*u); })) {
+  const machine_model* m = find_machine(args.machine_id);
+  if (!m) {
     report_unknown_machine("solve", args.machine_id);
     return exit_codes::usage;
   }
-  return code;
+  return tip ? solve_pose(*m, {*tip, *u}, *in) : solve_axis(*m, *u);
 }
 
 // ---- fk ---------------------------------------------------------------------------------
 
 struct fk_arguments {
   std::string machine_id;
-  std::vector<std::string> values;  // "NAME=DEG"
+  std::vector<std::string> values;  // "NAME=VALUE"
+  std::string tool_length;
+  std::string work_offset;
 };
 
-/// M's commanded angles from "NAME=DEG" arguments, each rotary axis exactly once.
-template <machine M>
-std::optional<rotary_angles<M>> parse_axis_values(const std::vector<std::string>& values, std::string& error) {
-  rotary_angles<M> angles{};
-  std::array<bool, rotary_count<M>> seen{};
+/// m's axis values from "NAME=VALUE" arguments: each rotary axis exactly once (degrees), and X,
+/// Y, Z (mm) all or none. `linear` says whether they were given.
+std::optional<axis_values> parse_axis_values(const machine_model& m, const std::vector<std::string>& values,
+                                             bool& linear, std::string& error) {
+  axis_values q{};
+  std::array<bool, 5> seen{};  // X, Y, Z, rotary[0], rotary[1]
   for (const std::string& arg : values) {
     const auto eq = arg.find('=');
     if (eq == std::string::npos) {
-      error = "'" + arg + "' is not NAME=DEG (axes of " + std::string(M::id) + ": " + axis_names<M>() + ")";
+      error = "'" + arg + "' is not NAME=DEG or X=MM, Y=MM, Z=MM (axes of " + std::string(m.geometry.id) + ": " + axis_names(m) + ")";
       return std::nullopt;
     }
     const std::string_view name = std::string_view(arg).substr(0, eq);
     const std::string_view number = std::string_view(arg).substr(eq + 1);
-    std::size_t index = rotary_count<M>;
+    std::size_t index = seen.size();
     if (name.size() == 1) {
       const char letter = (name[0] >= 'a' && name[0] <= 'z') ? static_cast<char>(name[0] - 'a' + 'A') : name[0];
-      for (std::size_t i = 0; i < rotary_count<M>; ++i)
-        if (to_char(M::rotary[i].letter) == letter) index = i;
+      if (letter >= 'X' && letter <= 'Z') index = static_cast<std::size_t>(letter - 'X');
+      for (std::size_t i = 0; i < m.rotary_count; ++i)
+        if (to_char(m.rotary(i).letter) == letter) index = 3 + i;
     }
-    if (index == rotary_count<M>) {
-      error = std::string(M::id) + " has no rotary axis '" + std::string(name) + "'; its axes are " + axis_names<M>();
+    if (index == seen.size()) {
+      const bool rotary_name = name.size() == 1 && std::string_view("ABCabc").find(name[0]) != std::string_view::npos;
+      error = std::string(m.geometry.id) + " has no " + (rotary_name ? "rotary " : "") + "axis '" + std::string(name) +
+              "'; its axes are " + axis_names(m);
       return std::nullopt;
     }
     if (seen[index]) {
       error = "axis " + std::string(name) + " is given more than once";
       return std::nullopt;
     }
-    const auto deg = parse_real(number);
-    if (!deg) {
-      error = "'" + arg + "': '" + std::string(number) + "' is not a finite number of degrees";
+    const auto v = parse_real(number);
+    if (!v) {
+      error = "'" + arg + "': '" + std::string(number) + "' is not a finite number";
       return std::nullopt;
     }
     seen[index] = true;
-    angles[index] = to_radians(degrees{*deg});
+    if (index < 3) (index == 0 ? q.xyz_mm.x : index == 1 ? q.xyz_mm.y : q.xyz_mm.z) = *v;
+    else q.rotary[index - 3] = to_radians(degrees{*v});
   }
-  for (std::size_t i = 0; i < rotary_count<M>; ++i) {
-    if (!seen[i]) {
-      error = std::string("missing a value for axis ") + to_char(M::rotary[i].letter) + " (axes of " +
-              std::string(M::id) + ": " + axis_names<M>() + ")";
+  for (std::size_t i = 0; i < m.rotary_count; ++i) {
+    if (!seen[3 + i]) {
+      error = std::string("missing a value for axis ") + to_char(m.rotary(i).letter) + " (axes of " +
+              std::string(m.geometry.id) + ": " + axis_names(m) + ")";
       return std::nullopt;
     }
   }
-  return angles;
+  linear = seen[0] || seen[1] || seen[2];
+  if (linear && !(seen[0] && seen[1] && seen[2])) {
+    error = "give all of X, Y and Z, or none (the tool axis alone)";
+    return std::nullopt;
+  }
+  return q;
 }
 
-template <machine M>
-int fk_on(const std::vector<std::string>& values) {
+int fk_on(const machine_model& m, const fk_arguments& args) {
   std::string error;
-  const auto angles = parse_axis_values<M>(values, error);
-  if (!angles) {
+  bool linear = false;
+  const auto q = parse_axis_values(m, args.values, linear, error);
+  const auto in = q ? parse_inputs(args.tool_length, args.work_offset, error) : std::nullopt;
+  if (q && in && !linear && (!args.tool_length.empty() || !args.work_offset.empty()))
+    error = "--tool-length and --work-offset need X, Y and Z";
+  if (!error.empty()) {
     std::cerr << "kin5 fk: " << error << '\n';
     return exit_codes::usage;
   }
-  for (std::size_t i = 0; i < rotary_count<M>; ++i)
-    if (!M::rotary[i].travel.contains((*angles)[i]))
-      std::cerr << "kin5 fk: note: " << describe(M::rotary[i]) << ": "
-                << format_degrees(to_degrees((*angles)[i]).value) << " is outside its travel\n";
-  const vec3 u = tool_axis<M>(*angles);
-  std::cout << format_component(u.x) << ' ' << format_component(u.y) << ' ' << format_component(u.z) << '\n';
+  for (std::size_t i = 0; i < m.rotary_count; ++i)
+    if (!m.rotary(i).travel.contains(q->rotary[i]))
+      std::cerr << "kin5 fk: note: " << describe(m.rotary(i)) << ": "
+                << format_degrees(to_degrees(q->rotary[i]).value) << " is outside its travel\n";
+  if (!linear) {
+    const vec3 u = tool_axis(m, q->rotary);
+    std::cout << format_component(u.x) << ' ' << format_component(u.y) << ' ' << format_component(u.z) << '\n';
+    return exit_codes::ok;
+  }
+  const double x[3] = {q->xyz_mm.x, q->xyz_mm.y, q->xyz_mm.z};
+  for (std::size_t i = 0; i < 3; ++i)
+    if (!m.linear(i).travel.contains(x[i]))
+      std::cerr << "kin5 fk: note: " << to_char(m.linear(i).letter) << ": " << format_mm(x[i])
+                << " mm is outside its travel [" << format_limit(m.linear(i).travel.lower_mm) << ", "
+                << format_limit(m.linear(i).travel.upper_mm) << "] mm\n";
+  const tool_pose pose = forward(m, *q, *in);
+  std::cout << "tip " << format_mm(pose.tip_mm.x) << ' ' << format_mm(pose.tip_mm.y) << ' ' << format_mm(pose.tip_mm.z)
+            << '\n';
+  std::cout << "axis " << format_component(pose.axis.x) << ' ' << format_component(pose.axis.y) << ' '
+            << format_component(pose.axis.z) << '\n';
   return exit_codes::ok;
 }
 
 int run_fk(const fk_arguments& args) {
-  int code = exit_codes::ok;
-  if (!with_machine(args.machine_id, [&]<class M>() { code = fk_on<M>(args.values); })) {
+  const machine_model* m = find_machine(args.machine_id);
+  if (!m) {
     report_unknown_machine("fk", args.machine_id);
     return exit_codes::usage;
   }
-  return code;
+  return fk_on(*m, args);
 }
 
 }  // namespace
@@ -248,20 +349,31 @@ void add_machines_command(CLI::App& app, int& exit_code) {
 
 void add_solve_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<solve_arguments>();
-  auto* sub = app.add_subcommand("solve", "Every set of rotary angles within travel that gives a tool axis");
+  auto* sub = app.add_subcommand("solve", "Every set of axis values within travel that gives a tool axis (and tip)");
   sub->add_option("--machine,-m", args->machine_id, "Catalog machine id (see `kin5 machines`)")->required();
   sub->add_option("--vector,-v", args->vector_text,
                   "Tool axis I,J,K in the workpiece frame, tip towards spindle; need not be unit")
       ->required();
-  sub->footer("Prints one solution per line as NAME=DEG pairs. Exit 3 when no solution is within travel.\n");
+  sub->add_option("--tip", args->tip_text, "Tool tip X,Y,Z in the workpiece frame, mm: solve every axis");
+  sub->add_option("--tool-length", args->tool_length, "Tool length, gauge point to tip, mm (with --tip; default 0)");
+  sub->add_option("--work-offset", args->work_offset,
+                  "Workpiece origin X,Y,Z in machine coordinates at the zero pose, mm (with --tip; default 0,0,0)");
+  sub->footer(
+      "Prints one solution per line as NAME=VALUE pairs (degrees, and mm for X Y Z with --tip). Exit 3 when no "
+      "solution is within travel.\n");
   sub->callback([args, &exit_code] { exit_code = run_solve(*args); });
 }
 
 void add_fk_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<fk_arguments>();
-  auto* sub = app.add_subcommand("fk", "The unit tool axis I J K for commanded rotary angles");
+  auto* sub = app.add_subcommand("fk", "The unit tool axis for rotary angles; with X Y Z, the tool tip too");
   sub->add_option("--machine,-m", args->machine_id, "Catalog machine id (see `kin5 machines`)")->required();
-  sub->add_option("values", args->values, "One NAME=DEG per rotary axis, e.g. B=90 C=0");
+  sub->add_option("--tool-length", args->tool_length, "Tool length, gauge point to tip, mm (with X Y Z; default 0)");
+  sub->add_option("--work-offset", args->work_offset,
+                  "Workpiece origin X,Y,Z in machine coordinates at the zero pose, mm (with X Y Z; default 0,0,0)");
+  sub->add_option("values", args->values,
+                  "One NAME=DEG per rotary axis, e.g. B=90 C=0; and X=MM Y=MM Z=MM in machine coordinates");
+  sub->footer("Without X Y Z prints I J K. With them prints 'tip X Y Z' (mm, workpiece frame) and 'axis I J K'.\n");
   sub->callback([args, &exit_code] { exit_code = run_fk(*args); });
 }
 
