@@ -53,6 +53,18 @@ constexpr std::array<ac_angles_deg, 4> eq13_candidates_printed(const vec3& u) {
   return {ac_angles_deg{a, c}, ac_angles_deg{a, c - 180.0}, ac_angles_deg{-a, c}, ac_angles_deg{-a, c - 180.0}};
 }
 
+/// [001:11]: the tool tip in the workpiece frame from the slide positions r_s (relative to the
+/// initial state, where the tip is at the workpiece origin) and the intersection r_m of the two
+/// table axes (workpiece frame), physical angles a, c in degrees, mm: the chain [001:5]
+/// T(r_m) R_z(−c) R_x(−a) T(r_s − r_m) written out, (G6).
+constexpr vec3 eq11_tip(const vec3& r_s_mm, const vec3& r_m_mm, double a_deg, double c_deg) {
+  const double ca = cos_deg(a_deg), sa = sin_deg(a_deg), cc = cos_deg(c_deg), sc = sin_deg(c_deg);
+  const vec3 d = r_s_mm - r_m_mm;
+  return {r_m_mm.x + d.x * cc + d.y * ca * sc + d.z * sa * sc,
+          r_m_mm.y - d.x * sc + d.y * ca * cc + d.z * sa * cc,
+          r_m_mm.z - d.y * sa + d.z * ca};
+}
+
 /// (K20) = [001:3]: largest side-milling error on a convex ruled surface, mm:
 /// E = R + R₂ − √(R² + R₂² + 2 R R₂ cos α). R tool radius, R₂ curvature radius of the guide curve
 /// at P₂, α the angle between the surface normals at the ends of the ruling.

@@ -35,6 +35,57 @@ struct dmu_angles_deg {
 };
 
 // ---------------------------------------------------------------------------------------------
+// Tool-tip tracking displacement of M1, [000:1]-[000:5]. Row vectors, as printed: `v·M`.
+
+/// A row vector times a matrix printed for row vectors: v·M = Mᵀ v.
+constexpr vec3 row_times(const vec3& v, const mat3& m) { return m.transposed() * v; }
+
+/// [000:1] as printed: M_b, the table turn ΔB_s about Y_s (row-vector form). It turns a point
+/// of the part right-handed by +ΔB_s, while [000:8] needs the table to turn by −b (E4).
+constexpr mat3 eq1_mb_printed(double db_deg) {
+  const double c = cos_deg(db_deg), s = sin_deg(db_deg);
+  return {{vec3{c, 0.0, -s}, vec3{0.0, 1.0, 0.0}, vec3{s, 0.0, c}}};
+}
+
+/// [000:1] corrected (E4): the table turns by −ΔB_s, as [000:8] needs; the printed matrix
+/// transposed.
+constexpr mat3 eq1_mb_corrected(double db_deg) { return eq1_mb_printed(db_deg).transposed(); }
+
+/// [000:3]: M_a, the head swing ΔA_s about X_s (row-vector form): R(X, +ΔA_s), as [000:8] needs.
+constexpr mat3 eq3_ma(double da_deg) {
+  const double c = cos_deg(da_deg), s = sin_deg(da_deg);
+  return {{vec3{1.0, 0.0, 0.0}, vec3{0.0, c, s}, vec3{0.0, -s, c}}};
+}
+
+/// [000:2]: v_b = (v + v₀)(M_b − E), the displacement of the part point by the table; v the tip
+/// in the workpiece frame, v₀ the workpiece origin in the machine frame (table centre at the
+/// machine origin), mm.
+constexpr vec3 eq2_vb(const vec3& v_mm, const vec3& v0_mm, const mat3& mb) {
+  const vec3 r = v_mm + v0_mm;
+  return row_times(r, mb) - r;
+}
+
+/// [000:4]: v_a = [0 0 −l](M_a − E), the displacement of the tip by the head, l the distance from
+/// the tip to the swing centre, mm. The paper prints the row vector with a fourth entry 1 (E3).
+constexpr vec3 eq4_va(double l_mm, const mat3& ma) {
+  const vec3 tip{0.0, 0.0, -l_mm};
+  return row_times(tip, ma) - tip;
+}
+
+/// [000:5] as printed: v′ = v + v_b − v_a with M_b of [000:1] as printed (table turning +ΔB_s,
+/// E4), the head swing of [000:3], angles in degrees: the point a program without tool-tip
+/// tracking writes, (G8).
+constexpr vec3 eq5_v_prime_printed(const vec3& v_mm, const vec3& v0_mm, double l_mm, double a_deg, double b_deg) {
+  return v_mm + eq2_vb(v_mm, v0_mm, eq1_mb_printed(b_deg)) - eq4_va(l_mm, eq3_ma(a_deg));
+}
+
+/// [000:5] corrected (E3, E4): the same with the table turning by −b, consistent with [000:8]
+/// and the tool-relative angles of the SAJO's programs.
+constexpr vec3 eq5_v_prime_corrected(const vec3& v_mm, const vec3& v0_mm, double l_mm, double a_deg, double b_deg) {
+  return v_mm + eq2_vb(v_mm, v0_mm, eq1_mb_corrected(b_deg)) - eq4_va(l_mm, eq3_ma(a_deg));
+}
+
+// ---------------------------------------------------------------------------------------------
 // M1: perpendicular head + table, (K1)–(K4) (docs/papers.md)
 
 /// (K1) = [000:8]: u_s = (cos(−a) sin b, sin(−a), cos(−a) cos b), written as printed.
