@@ -1,16 +1,15 @@
-// Round trips of the ISO / Fanuc reader and writer on generated programs. Each generated line
+// Generated ISO / Fanuc programs for the dialect laws (laws.cpp). Each generated line
 // is drawn together with the block it must read as (the independent expectation), then spelled
 // with random case, blanks, signs, dots, leading zeros and line endings.
 #include <string>
 #include <vector>
 
-#include <catch2/catch.hpp>
-#include <rapidcheck/catch.h>
+#include <rapidcheck.h>
 
 #include <kin5/program/iso/dialect.hpp>
 
-#include "../program_apt/same_model.hpp"
-#include "../program_apt/text_gen.hpp"
+#include "../text_gen.hpp"
+#include "contract.hpp"
 
 namespace {
 
@@ -287,31 +286,8 @@ program expected_program(const std::vector<item>& items) {
 
 }  // namespace
 
-TEST_CASE("iso: reading generated programs gives the blocks they were generated from") {
-  rc::prop("read(text) == model", [] {
-    const auto items = draw_items();
-    const std::string text = spell(items);
-    const read_result r = iso::read(text, "gen.nc");
-    RC_ASSERT(r.errors.empty());
-    RC_ASSERT(kin5::test::program_difference(r.parsed, expected_program(items)) == std::string());
-  });
-}
-
-TEST_CASE("iso: write then read gives back the model") {
-  rc::prop("read(write(model)) == model", [] {
-    const program p = expected_program(draw_items());
-    const read_result r = iso::read(iso::write(p), "gen.nc");
-    RC_ASSERT(r.errors.empty());
-    RC_ASSERT(kin5::test::program_difference(r.parsed, p) == std::string());
-  });
-}
-
-TEST_CASE("iso: read, write, read gives the first reading") {
-  rc::prop("read(write(read(text))) == read(text)", [] {
-    const read_result first = iso::read(spell(draw_items()), "gen.nc");
-    RC_ASSERT(first.errors.empty());
-    const read_result second = iso::read(iso::write(first.parsed), "gen.nc");
-    RC_ASSERT(second.errors.empty());
-    RC_ASSERT(kin5::test::program_difference(second.parsed, first.parsed) == std::string());
-  });
+/// Text drawn with the block each line must read as (see the top of this file).
+kin5::test::drawn_program kin5::test::contract<kin5::program::iso::dialect>::draw_program() {
+  const std::vector<item> items = ::draw_items();
+  return {::spell(items), ::expected_program(items)};
 }

@@ -1,4 +1,4 @@
-// Round trips of the Heidenhain reader and writer on generated programs. Each generated line is
+// Generated Heidenhain programs for the dialect laws (laws.cpp). Each generated line is
 // drawn together with the block it must read as (the independent expectation), then spelled with
 // random case, blanks, signs, trailing and leading dots, block numbers (missing, repeated) and
 // line endings.
@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include <catch2/catch.hpp>
-#include <rapidcheck/catch.h>
+#include <rapidcheck.h>
 
 #include <kin5/program/heidenhain/dialect.hpp>
 
-#include "same_model.hpp"
+#include "contract.hpp"
+
 
 namespace {
 
@@ -349,41 +349,10 @@ generated draw_program() {
   return g;
 }
 
-std::string diagnostics(const read_result& r) {
-  std::string s;
-  for (const diagnostic& d : r.errors) s += d.to_string() + "\n";
-  return s;
-}
-
 }  // namespace
 
-TEST_CASE("heidenhain: reading generated text gives the blocks it was generated from") {
-  rc::prop("read(text) == model", [] {
-    const generated g = draw_program();
-    const read_result r = heidenhain::read(g.text, "g.h");
-    RC_ASSERT(diagnostics(r) == std::string());
-    RC_ASSERT(kin5::test::heidenhain_difference(r.parsed, g.expected, true) == std::string());
-  });
-}
-
-TEST_CASE("heidenhain: write then read gives back the model (blocks renumbered)") {
-  rc::prop("read(write(model)) == model", [] {
-    const generated g = draw_program();
-    const std::string text = heidenhain::write(g.expected);
-    const read_result r = heidenhain::read(text, "w.h");
-    RC_ASSERT(diagnostics(r) == std::string());
-    RC_ASSERT(kin5::test::heidenhain_difference(r.parsed, g.expected, false) == std::string());
-    // The writer numbers every block 0, 1, 2, … (continuation lines carry no number).
-    for (std::size_t i = 0; i < r.parsed.blocks.size(); ++i) RC_ASSERT(r.parsed.blocks[i].number == static_cast<long long>(i));
-  });
-}
-
-TEST_CASE("heidenhain: read, write, read gives the first reading") {
-  rc::prop("read(write(read(text))) == read(text)", [] {
-    const generated g = draw_program();
-    const read_result first = heidenhain::read(g.text, "g.h");
-    const read_result second = heidenhain::read(heidenhain::write(first.parsed), "w.h");
-    RC_ASSERT(diagnostics(second) == std::string());
-    RC_ASSERT(kin5::test::heidenhain_difference(second.parsed, first.parsed, false) == std::string());
-  });
+/// Text drawn with the block each line must read as (see the top of this file).
+kin5::test::drawn_program kin5::test::contract<kin5::program::heidenhain::dialect>::draw_program() {
+  auto g = ::draw_program();
+  return {std::move(g.text), std::move(g.expected)};
 }

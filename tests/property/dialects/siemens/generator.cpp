@@ -1,4 +1,4 @@
-// Round trips of the Siemens reader and writer on generated programs. Each generated line is
+// Generated Siemens programs for the dialect laws (laws.cpp). Each generated line is
 // drawn together with the block it must read as (the independent expectation): words in random
 // case, with or without blanks, `X=` assignments, `+` signs, trailing and leading dots,
 // comments of either kind, and LF / CRLF / CR line endings.
@@ -9,18 +9,17 @@
 #include <string>
 #include <vector>
 
-#include <catch2/catch.hpp>
-#include <rapidcheck/catch.h>
+#include <rapidcheck.h>
 
 #include <kin5/program/siemens/dialect.hpp>
 
-#include "model_difference.hpp"
+#include "contract.hpp"
+
 
 namespace {
 
 using namespace kin5::program;
 using kin5::vec3;
-using kin5::test::siemens_check::program_difference;
 
 /// A number with `decimals` decimals, exactly as the reader gets it from its shortest spelling.
 double draw_decimal(std::int64_t lo, std::int64_t hi, int decimals) {
@@ -329,58 +328,10 @@ drawn_program draw_program() {
   return d;
 }
 
-std::string errors_of(const read_result& r) {
-  std::string s;
-  for (const auto& e : r.errors) s += e.to_string() + "\n";
-  return s;
-}
-
 }  // namespace
 
-TEST_CASE("siemens: generated text reads as the drawn model", "[siemens][property]") {
-  rc::prop("read(text) == model, with each block's line and column", [] {
-    const drawn_program d = draw_program();
-    const read_result r = siemens::read(d.text, "gen.mpf");
-    RC_ASSERT(errors_of(r) == "");
-    RC_ASSERT(program_difference(d.expected, r.parsed) == "");
-    for (std::size_t i = 0; i < r.parsed.blocks.size(); ++i) {
-      RC_ASSERT(r.parsed.blocks[i].where == d.expected.blocks[i].where);
-      RC_ASSERT(r.parsed.blocks[i].text == d.expected.blocks[i].text);
-    }
-  });
-}
-
-TEST_CASE("siemens: write then read gives the model back", "[siemens][property]") {
-  rc::prop("read(write(model)) == model", [] {
-    const drawn_program d = draw_program();
-    const std::string written = siemens::write(d.expected);
-    const read_result r = siemens::read(written, "gen.mpf");
-    RC_ASSERT(errors_of(r) == "");
-    RC_ASSERT(program_difference(d.expected, r.parsed) == "");
-  });
-}
-
-TEST_CASE("siemens: read, write, read is stable and writing is idempotent", "[siemens][property]") {
-  rc::prop("read(write(read(text))) == read(text)", [] {
-    const drawn_program d = draw_program();
-    const read_result first = siemens::read(d.text, "gen.mpf");
-    RC_ASSERT(first.ok());
-    const std::string written = siemens::write(first.parsed);
-    const read_result second = siemens::read(written, "gen.mpf");
-    RC_ASSERT(errors_of(second) == "");
-    RC_ASSERT(program_difference(first.parsed, second.parsed) == "");
-    RC_ASSERT(siemens::write(second.parsed) == written);
-  });
-}
-
-TEST_CASE("siemens: fewer decimals round within half a unit of the last place", "[siemens][property]") {
-  rc::prop("values written with 1 decimal are within 0.05 of the model", [] {
-    const drawn_program d = draw_program();
-    siemens::write_options coarse;
-    coarse.linear_decimals = coarse.angle_decimals = coarse.feed_decimals = 1;
-    coarse.vector_decimals = 1;
-    const read_result r = siemens::read(siemens::write(d.expected, coarse), "gen.mpf");
-    RC_ASSERT(errors_of(r) == "");
-    RC_ASSERT(program_difference(d.expected, r.parsed, 0.05) == "");
-  });
+/// Text drawn with the block each line must read as (see the top of this file).
+kin5::test::drawn_program kin5::test::contract<kin5::program::siemens::dialect>::draw_program() {
+  auto d = ::draw_program();
+  return {std::move(d.text), std::move(d.expected)};
 }

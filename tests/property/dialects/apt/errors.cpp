@@ -6,17 +6,12 @@
 
 #include <kin5/program/apt/dialect.hpp>
 
+#include "contract.hpp"
+
 using namespace kin5::program;
 
-namespace {
-std::vector<std::string> errors_of(const std::string& text) {
-  std::vector<std::string> out;
-  for (const diagnostic& d : apt::read(text, "t.cls").errors) out.push_back(d.to_string());
-  return out;
-}
-}  // namespace
-
-TEST_CASE("apt: bad input gives one exact diagnostic") {
+/// The law "bad input gives exact diagnostics" (laws.cpp) reads each text and compares.
+std::vector<kin5::test::bad_input> kin5::test::contract<apt::dialect>::bad_inputs() {
   struct bad {
     std::string text, diagnostic;
   };
@@ -46,10 +41,9 @@ TEST_CASE("apt: bad input gives one exact diagnostic") {
       {"CIRCLE/0,0,0,0,0,1,5\n", "t.cls:1:1: error: circular CL data (CIRCLE) is not supported"},
       {"GOTO/1,$\r\n 2, Q\r\n", "t.cls:2:5: error: 'Q' is not a number"},
   };
-  for (const bad& c : cases) {
-    INFO(c.text);
-    CHECK(errors_of(c.text) == std::vector<std::string>{c.diagnostic});
-  }
+  std::vector<bad_input> out;
+  for (const bad& c : cases) out.push_back({c.text, {c.diagnostic}});
+  return out;
 }
 
 TEST_CASE("apt: reading goes on after an error and keeps every statement") {

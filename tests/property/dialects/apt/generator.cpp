@@ -1,16 +1,15 @@
-// Round trips of the APT reader and writer on generated CL data. Each generated statement is
+// Generated APT CL data for the dialect laws (laws.cpp). Each generated statement is
 // drawn together with the block it must read as (the independent expectation), then spelled
 // with random case, blanks, signs, dots, `$` continuations and line endings.
 #include <string>
 #include <vector>
 
-#include <catch2/catch.hpp>
-#include <rapidcheck/catch.h>
+#include <rapidcheck.h>
 
 #include <kin5/program/apt/dialect.hpp>
 
-#include "same_model.hpp"
-#include "text_gen.hpp"
+#include "../text_gen.hpp"
+#include "contract.hpp"
 
 namespace {
 
@@ -180,33 +179,8 @@ program expected_program(const std::vector<item>& items) {
 
 }  // namespace
 
-TEST_CASE("apt: reading generated CL data gives the blocks it was generated from") {
-  rc::prop("read(text) == model", [] {
-    const auto items = draw_items();
-    const std::string text = spell(items);
-    const read_result r = apt::read(text, "gen.cls");
-    RC_ASSERT(r.errors.empty());
-    RC_ASSERT(kin5::test::program_difference(r.parsed, expected_program(items)) == std::string());
-  });
-}
-
-TEST_CASE("apt: write then read gives back the model") {
-  rc::prop("read(write(model)) == model", [] {
-    const program p = expected_program(draw_items());
-    const std::string text = apt::write(p);
-    const read_result r = apt::read(text, "gen.cls");
-    RC_ASSERT(r.errors.empty());
-    RC_ASSERT(kin5::test::program_difference(r.parsed, p) == std::string());
-  });
-}
-
-TEST_CASE("apt: read, write, read gives the first reading") {
-  rc::prop("read(write(read(text))) == read(text)", [] {
-    const std::string text = spell(draw_items());
-    const read_result first = apt::read(text, "gen.cls");
-    RC_ASSERT(first.errors.empty());
-    const read_result second = apt::read(apt::write(first.parsed), "gen.cls");
-    RC_ASSERT(second.errors.empty());
-    RC_ASSERT(kin5::test::program_difference(second.parsed, first.parsed) == std::string());
-  });
+/// Text drawn with the block each line must read as (see the top of this file).
+kin5::test::drawn_program kin5::test::contract<kin5::program::apt::dialect>::draw_program() {
+  const std::vector<item> items = ::draw_items();
+  return {::spell(items), ::expected_program(items)};
 }

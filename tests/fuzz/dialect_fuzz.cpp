@@ -1,0 +1,53 @@
+// libFuzzer target for one dialect of `program::dialects`, built once per entry of the list as
+// `<name>_fuzz` (tests/fuzz/CMakeLists.txt passes the name as KIN5_FUZZ_DIALECT). Reading any
+// bytes never crashes; a program read without errors is written (the writer may refuse only if
+// the dialect's contract allows it), the text reads without errors, and — inside the writer's
+// round-trip contract — it reads back as the same model, and writing it again is a fixed point.
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <tuple>
+
+#include <kin5/program/dialect.hpp>
+
+#include "../property/dialects/contracts.hpp"
+
+namespace {
+
+using D = kin5::program::KIN5_FUZZ_DIALECT::dialect;
+using C = kin5::test::contract<D>;
+
+template <class List>
+struct listed;
+template <class... E>
+struct listed<std::tuple<E...>> : std::bool_constant<(std::is_same_v<D, E> || ...)> {};
+static_assert(listed<kin5::program::dialects>::value, "KIN5_FUZZ_DIALECT names an entry of program::dialects");
+
+bool same(const kin5::program::program& a, const kin5::program::program& b, const kin5::test::comparison& c) {
+  return kin5::test::model_difference(a, b, c).empty();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using kin5::test::read_as;
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  const kin5::program::read_result first = read_as<D>(text);
+  if (!first.ok()) return 0;
+  std::string written;
+  try {
+    written = D::write(first.parsed, C::fuzz_options());
+  } catch (const std::invalid_argument&) {
+    if (C::writes_all_it_reads) __builtin_trap();
+    return 0;  // a block the writer names as unwritable
+  }
+  const kin5::program::read_result second = read_as<D>(written);
+  if (!second.ok()) __builtin_trap();
+  if (!C::round_trips(first.parsed)) return 0;
+  if (!same(first.parsed, second.parsed, C::fuzz_read_back)) __builtin_trap();
+  const kin5::program::read_result third = read_as<D>(D::write(second.parsed, C::fuzz_options()));
+  if (!same(second.parsed, third.parsed, C::fuzz_fixed_point)) __builtin_trap();
+  return 0;
+}

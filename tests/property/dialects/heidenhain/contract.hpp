@@ -1,0 +1,40 @@
+/// @file heidenhain/contract.hpp
+/// The Heidenhain dialect's contract with the dialect laws and its fuzz target (contract.hpp):
+/// readings compare exactly; the writer numbers blocks 0, 1, 2, … itself, so a written program
+/// reads back with other numbers (and a passthrough line's content is its text after the number).
+/// The writer may refuse a block it names (an L without coordinates is never written as an L:
+/// its F and FMAX move to the next move), so only programs without one must round-trip.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include <kin5/program/heidenhain/dialect.hpp>
+
+#include "../contract.hpp"
+
+namespace kin5::test {
+
+template <>
+struct contract<program::heidenhain::dialect> {
+  static constexpr std::string_view file = "g.h";
+  static drawn_program draw_program();
+  static std::vector<bad_input> bad_inputs();
+  static constexpr std::string_view bad_file = "t.h";
+  static constexpr comparison read_exactly{.relative = 0};
+  static constexpr comparison read_back{.relative = 0, .block_numbers = false};
+  static constexpr bool numbers_from_zero = true;
+
+  /// Nine decimals: more than any value read has, so the written text loses nothing.
+  static program::heidenhain::write_options fuzz_options() { return {9, 9, 9, 9}; }
+  static constexpr comparison fuzz_read_back{.tolerance = 1e-9, .relative = 1e-15, .block_numbers = false};
+  static constexpr comparison fuzz_fixed_point = fuzz_read_back;
+  static constexpr bool writes_all_it_reads = false;
+  static bool round_trips(const program::program& p) {
+    for (const program::block& b : p.blocks)
+      if (b.axes.empty() && !b.arc && (b.motion || b.feed_rapid)) return false;
+    return true;
+  }
+};
+
+}  // namespace kin5::test

@@ -1,0 +1,34 @@
+/// @file siemens/contract.hpp
+/// The Siemens 840D dialect's contract with the dialect laws and its fuzz target (contract.hpp):
+/// the generator knows each block's line, column and text, so the reading of generated text is
+/// compared with them; the writer keeps N numbers and must write every program the reader
+/// accepts. The fuzz target writes six decimals, so values come back within 1e-6 mm.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include <kin5/program/siemens/dialect.hpp>
+
+#include "../contract.hpp"
+
+namespace kin5::test {
+
+template <>
+struct contract<program::siemens::dialect> {
+  static constexpr std::string_view file = "gen.mpf";
+  static drawn_program draw_program();
+  static std::vector<bad_input> bad_inputs();
+  static constexpr std::string_view bad_file = "bad.mpf";
+  static constexpr comparison read_exactly{.locations = true};
+  static constexpr comparison read_back{};
+  static constexpr bool numbers_from_zero = false;
+
+  static program::siemens::write_options fuzz_options() { return {6, 6, 6, 6}; }
+  static constexpr comparison fuzz_read_back{.tolerance = 1e-6};
+  static constexpr comparison fuzz_fixed_point{.tolerance = 1e-6};
+  static constexpr bool writes_all_it_reads = true;
+  static bool round_trips(const program::program&) { return true; }
+};
+
+}  // namespace kin5::test
