@@ -152,3 +152,13 @@ TEST_CASE("a setup rotation is accepted when proper, refused when stretched or r
     RC_ASSERT(!is_proper_rotation(reflected));
   });
 }
+
+// The feed policy table is the one list the library and the tool read: every name in it parses
+// back to its own policy, and any other name is refused (empty), never mapped to a default.
+static_assert([] {
+  for (const auto& entry : kin5::feed_policies)
+    if (kin5::parse_feed_policy(entry.name) != entry.policy || kin5::name(entry.policy) != entry.name) return false;
+  return true;
+}());
+static_assert(!kin5::parse_feed_policy("") && !kin5::parse_feed_policy("fast") && !kin5::parse_feed_policy("TCP") &&
+              !kin5::parse_feed_policy("block_time") && !kin5::parse_feed_policy("tcp "));
