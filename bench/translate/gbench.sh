@@ -1,7 +1,8 @@
 #!/bin/sh
 # The translation benchmark in process (translate_bench.cpp, Google Benchmark): builds it in
 # Release and prints the median CPU time of one translation of the spiral program and of the
-# parse+format floor on the same text, and their ratio (goal <= 1.5, never > 3).
+# parse+format floor on the same text, and their ratio. No file I/O on either side, so the ratio
+# is larger than run.sh's file-to-file one, for which the goals (<= 1.5, never > 3) are set.
 #
 #   bench/translate/gbench.sh [--blocks=N] [extra Google Benchmark flags]
 #
@@ -34,5 +35,5 @@ awk -F, '
     printf "%-32s %12s\n", "benchmark", "cpu (median)"
     printf "%-32s %12.2f %s\n", tr, t[tr], unit
     printf "%-32s %12.2f %s\n", "parse_baseline", t["parse_baseline"], unit
-    printf "ratio translate/baseline: %.2f (goal <= 1.5, never > 3)\n", t[tr] / t["parse_baseline"]
+    printf "ratio translate/baseline: %.2f (in memory; the goals are set for run.sh, file to file)\n", t[tr] / t["parse_baseline"]
   }' "$csv"
