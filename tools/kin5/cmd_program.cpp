@@ -45,8 +45,11 @@ namespace {
 
 namespace prog = kin5::program;
 
-/// The NC dialects: every dialect but APT CL data, which `translate` neither reads nor writes.
-constexpr const char* nc_dialect_names[] = {"siemens", "heidenhain", "iso"};
+/// The NC dialects of `program::dialects`: every one but CL data, which `translate` neither reads
+/// nor writes.
+std::vector<std::string_view> nc_dialect_names() {
+  return dialect_names([](const prog::capabilities& can) { return !can.cl_data; });
+}
 
 // ---- files --------------------------------------------------------------------------------
 
@@ -350,8 +353,10 @@ int run_translate(const translate_arguments& a) {
   }
   options.feed = *feed;
   if (const auto refusal = feed_refusal(options.feed, j.output_dialect)) {  // found before reading
-    std::cerr << "kin5 translate: --feed " << a.feed << ": " << *refusal
-              << "; choose --to-dialect siemens or iso, or another --feed\n";
+    const auto with_inverse_time =
+        dialect_names([](const prog::capabilities& can) { return can.inverse_time_feed && !can.cl_data; });
+    std::cerr << "kin5 translate: --feed " << a.feed << ": " << *refusal << "; choose --to-dialect "
+              << one_of(with_inverse_time) << ", or another --feed\n";
     return exit_codes::usage;
   }
   options.output_dialect = j.output_dialect;
@@ -420,8 +425,8 @@ const char* exit_code_footer =
 }  // namespace
 
 void add_program_commands(CLI::App& app, int& exit_code) {
-  const auto dialects =
-      CLI::IsMember(std::vector<std::string>(std::begin(nc_dialect_names), std::end(nc_dialect_names)));
+  const auto nc_names = nc_dialect_names();
+  const auto dialects = CLI::IsMember(std::vector<std::string>(nc_names.begin(), nc_names.end()));
   const auto feed_names = feed_policy_names();
 
   {

@@ -66,10 +66,8 @@ constexpr std::optional<feed_policy> parse_feed_policy(std::string_view s) {
   return std::nullopt;
 }
 
-/// Whether dialect `d` can write inverse-time feed (G93).
-constexpr bool supports_inverse_time(program::dialect d) {
-  return d == program::dialect::siemens || d == program::dialect::iso;
-}
+/// Whether dialect `d` can write inverse-time feed (its `capabilities`: G93, FEDRAT/INVERS).
+constexpr bool supports_inverse_time(program::dialect d) { return program::capabilities_of(d).inverse_time_feed; }
 
 /// Why a program in dialect `d` cannot be written with feed policy `p`, if it cannot.
 inline std::optional<std::string> feed_refusal(feed_policy p, program::dialect d) {

@@ -130,7 +130,7 @@ class nc_target {
       }
       o.arc->plane = mapped->first;
       o.arc->centre_mm = target_T_source_.map_point(*b.arc->centre_mm);
-      if (output_language_ != program::dialect::heidenhain) {  // G2/G3 carry their own centre: keep a note
+      if (!program::capabilities_of(output_language_).arc_centre_block) {  // arcs carry their own centre: a note
         const vec3 centre_target_mm = *o.arc->centre_mm;
         if (!o.comment)
           o.comment = "circle centre X" + fixed(centre_target_mm.x, 3) + " Y" + fixed(centre_target_mm.y, 3) + " Z" +

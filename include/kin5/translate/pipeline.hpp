@@ -21,10 +21,13 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "../program/block.hpp"
+#include "../program/dialect.hpp"
 #include "cl_target.hpp"
 #include "feed.hpp"
 #include "nc_target.hpp"
@@ -123,10 +126,13 @@ class two_pass_translator final : public block_translator {
   std::size_t motion_ = 0;       // motion blocks written so far
 };
 
+/// Whether `d` is cutter-location data (tool tip and axis, no machine axes), not an NC dialect.
+constexpr bool is_cl_data(program::dialect d) { return program::capabilities_of(d).cl_data; }
+
 /// Why `translate` cannot run on a program in `source_language`, if it cannot.
 inline std::optional<std::string> translate_refusal(program::dialect source_language, const translate_options& options) {
-  if (source_language == program::dialect::apt) return "APT CL data names no machine axes: use post, not translate";
-  if (options.output_dialect == program::dialect::apt) return "translate writes NC; for APT CL data use reverse";
+  if (is_cl_data(source_language)) return "APT CL data names no machine axes: use post, not translate";
+  if (is_cl_data(options.output_dialect)) return "translate writes NC; for APT CL data use reverse";
   return feed_refusal(options.feed, options.output_dialect);
 }
 
@@ -142,6 +148,25 @@ inline translation run(block_translator& t, const program::program& in) {
 }
 
 }  // namespace translate_detail
+
+/// The names of the dialects whose `capabilities` satisfy `keep`, in list order (e.g. every NC
+/// dialect: `dialect_names([](const program::capabilities& can) { return !can.cl_data; })`).
+template <class Keep>
+std::vector<std::string_view> dialect_names(Keep keep) {
+  std::vector<std::string_view> names;
+  program::for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t) {
+    if (keep(D::can)) names.push_back(D::name);
+  });
+  return names;
+}
+
+/// "a, b or c" from a list of names.
+inline std::string one_of(const std::vector<std::string_view>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out += std::string(i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + std::string(names[i]);
+  return out;
+}
 
 /// The two passes of `translate<From, To>` (see `block_translator`), for a program read in
 /// `source_language` from `file`.
@@ -163,8 +188,8 @@ std::unique_ptr<block_translator> make_reverse(program::dialect source_language,
   using namespace translate_detail;
   return std::make_unique<two_pass_translator<nc_source<M>, cl_target>>(
       cl_target(source_language), file, program::dialect::apt, detail,
-      source_language == program::dialect::apt ? std::optional<std::string>("the input is already APT CL data")
-                                               : std::nullopt);
+      translate_detail::is_cl_data(source_language) ? std::optional<std::string>("the input is already APT CL data")
+                                                    : std::nullopt);
 }
 
 /// The two passes of `post<M>` (see `block_translator`).
@@ -176,8 +201,9 @@ std::unique_ptr<block_translator> make_post(program::dialect source_language, pr
   return std::make_unique<two_pass_translator<cl_source, nc_target<M>>>(
       nc_target<M>(rigid_transform::identity(), feed_policy::tcp, source_language, output_dialect, true), file,
       output_dialect, detail,
-      output_dialect == program::dialect::apt
-          ? std::optional<std::string>("post writes NC: choose siemens, heidenhain or iso")
+      translate_detail::is_cl_data(output_dialect)
+          ? std::optional<std::string>("post writes NC: choose " +
+                                       one_of(dialect_names([](const program::capabilities& can) { return !can.cl_data; })))
           : std::nullopt);
 }
 
