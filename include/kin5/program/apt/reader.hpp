@@ -1,10 +1,12 @@
 /// @file program/apt/reader.hpp
 /// The second stage of the APT reader: a statement (lexer.hpp) becomes a `block`.
-/// `GOTO/x,y,z[,i,j,k]` (tool tip in mm, tool-axis vector), `RAPID` (the next GOTO is rapid),
-/// `FEDRAT/[MMPM,|INVERS,]f`, `SPINDL/[RPM,]n[,CLW|CCLW]`, `SPINDL/ON|OFF|CLW|CCLW`, `LOADTL/n`,
-/// `COOLNT/ON|FLOOD|MIST|OFF`, `STOP`, `OPSTOP`, `UNITS/MM`, `PARTNO name`, `FINI`, `PPRINT/text`
-/// and `$$ text` comments. `MULTAX`, `INSERT` and unknown statements pass through. Rejected:
-/// `UNITS/INCHES`, inch and per-revolution feeds, `CIRCLE`, GOTO with other than 3 or 6 values.
+/// `GOTO/x,y,z[,i,j,k]` (tool tip, tool-axis vector), `RAPID` (the next GOTO is rapid),
+/// `FEDRAT/[MMPM,|IPM,|INVERS,]f`, `SPINDL/[RPM,]n[,CLW|CCLW]`, `SPINDL/ON|OFF|CLW|CCLW`, `LOADTL/n`,
+/// `COOLNT/ON|FLOOD|MIST|OFF`, `STOP`, `OPSTOP`, `UNITS/MM|INCHES`, `PARTNO name`, `FINI`,
+/// `PPRINT/text` and `$$ text` comments. After `UNITS/INCHES` GOTO points and unit-less feeds are
+/// inches, converted to mm (units.hpp); `IPM` feeds always are. `MULTAX`, `INSERT` and unknown
+/// statements pass through. Rejected: per-revolution feeds, `CIRCLE`, GOTO with other than 3 or 6
+/// values.
 #pragma once
 
 #include <cstddef>
@@ -19,6 +21,7 @@
 #include "../number.hpp"
 #include "../text.hpp"
 #include "../transmission.hpp"
+#include "../units.hpp"
 #include "lexer.hpp"
 
 namespace kin5::program::apt::detail {
@@ -62,6 +65,7 @@ class statement_reader {
   bool& rapid_pending_;
   std::vector<diagnostic>& errors_;
   const statement* st_ = nullptr;
+  bool inch_ = false;  // UNITS/INCHES: GOTO points (and FEDRAT without a unit) in inches
   code c_;
   std::vector<argument> args_;
 
@@ -137,8 +141,7 @@ class statement_reader {
   void other(block& b, const std::string& word) {
     const std::string& m = c_.major;
     if (m == "UNITS") {
-      if (word == "MM") b.metric = true;
-      else if (word == "INCHES" || word == "INCH") error(c_.rest, "inch programs are not supported");
+      if (word == "MM" || word == "INCHES" || word == "INCH") b.metric = word == "MM", inch_ = word != "MM";
       else b.passthrough = true;
     } else if (m == "PARTNO") {
       b.program_begin = std::string(c_.tail);
@@ -164,20 +167,22 @@ class statement_reader {
     bool good = true;
     for (std::size_t a = 0; a < args_.size(); ++a) good = number(args_[a], v[a]) && good;
     if (!good) return;
-    b.axes.x_mm = v[0], b.axes.y_mm = v[1], b.axes.z_mm = v[2];
+    const double unit_mm = inch_ ? mm_per_inch : 1.0;
+    b.axes.x_mm = v[0] * unit_mm, b.axes.y_mm = v[1] * unit_mm, b.axes.z_mm = v[2] * unit_mm;
     if (args_.size() == 6) b.axes.tool_axis = vec3{v[3], v[4], v[5]};
   }
 
-  /// `FEDRAT/[MMPM,|INVERS,]f`.
+  /// `FEDRAT/[MMPM,|IPM,|INVERS,]f` (f alone: per minute in the program's unit).
   void feed_rate(block& b) {
     if (!c_.slash || c_.tail.empty()) return error(c_.major_at, "FEDRAT needs a feed value");
     std::optional<feed_unit> mode = feed_unit::per_minute;
+    double unit_mm = inch_ ? mm_per_inch : 1.0;
     const argument* value = nullptr;
     for (const argument& a : args_) {
       const std::string word = lexing::upper(a.text);
-      if (word == "MMPM") mode = feed_unit::per_minute;
-      else if (word == "INVERS") mode = feed_unit::inverse_time;
-      else if (word == "IPM") return error(a.offset, "inch programs are not supported");
+      if (word == "MMPM") mode = feed_unit::per_minute, unit_mm = 1.0;
+      else if (word == "INVERS") mode = feed_unit::inverse_time, unit_mm = 1.0;
+      else if (word == "IPM") mode = feed_unit::per_minute, unit_mm = mm_per_inch;
       else if (word == "MMPR" || word == "IPR") return error(a.offset, "feed per revolution is not supported");
       else if (!value) value = &a;
       else return error(a.offset, "unexpected '" + std::string(a.text) + "' after FEDRAT");
@@ -185,7 +190,7 @@ class statement_reader {
     double f = 0;
     if (!value) return error(c_.major_at, "FEDRAT needs a feed value");
     if (!number(*value, f)) return;
-    b.feed = f;
+    b.feed = f * unit_mm;
     b.feed_mode = mode;
   }
 

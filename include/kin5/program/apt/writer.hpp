@@ -1,6 +1,8 @@
 /// @file program/apt/writer.hpp
-/// Blocks written as APT CL data, one statement per line, no continuations. Axis-word rotary
-/// angles, arcs and inch programs cannot be written (std::invalid_argument naming the block);
+/// Blocks written as APT CL data, one statement per line, no continuations. After a block that
+/// says inch (`metric == false`, written `UNITS/INCHES`) GOTO points are written in inches and
+/// per-minute feeds as `FEDRAT/IPM`, each with one decimal more. A feed under inverse time (from
+/// the block or an earlier one) is `FEDRAT/INVERS`. Axis-word rotary angles and arcs cannot be written (std::invalid_argument naming the block);
 /// anything else without an APT form becomes a `$$` comment carrying the block's text.
 #pragma once
 
@@ -13,6 +15,7 @@
 
 #include "../block.hpp"
 #include "../number.hpp"
+#include "../units.hpp"
 
 namespace kin5::program::apt {
 
@@ -47,10 +50,14 @@ class writer {
     }
     lines_.clear();
     foreign_note_ = false;
-    setup(b);
-    machine_functions(b);
-    feed(b);
-    motion(b);
+    if (b.metric) inch_ = !*b.metric;
+    if (b.feed_mode) inverse_time_ = *b.feed_mode == feed_unit::inverse_time;
+    block in_unit = b;
+    if (inch_) mm_to_inches(in_unit, !inverse_time_);
+    setup(in_unit);
+    machine_functions(in_unit);
+    feed(in_unit);
+    motion(in_unit);
     if (b.program_end) lines_.push_back("FINI");
     if (foreign_note_) lines_.insert(lines_.begin(), "$$ " + one_line(b, b.text));
     if (b.comment) {
@@ -65,6 +72,8 @@ class writer {
   bool same_;  // the blocks were read as APT
   write_options options_;
   bool rapid_pending_ = false;
+  bool inch_ = false;          // UNITS/INCHES written: lengths in inches
+  bool inverse_time_ = false;  // inverse-time feed in effect (this block's or an earlier one's)
   std::vector<std::string> lines_;  // the block's statements
   bool foreign_note_ = false;       // something without an APT form: carry the block's text
 
@@ -83,10 +92,7 @@ class writer {
       const std::string& name = one_line(b, *b.program_begin);
       lines_.push_back(name.empty() ? "PARTNO" : name.front() == '/' ? "PARTNO/" + name : "PARTNO " + name);
     }
-    if (b.metric) {
-      if (!*b.metric) fail(b, "inch units");
-      lines_.push_back("UNITS/MM");
-    }
+    if (b.metric) lines_.push_back(*b.metric ? "UNITS/MM" : "UNITS/INCHES");
     if (b.tool) lines_.push_back("LOADTL/" + std::to_string(*b.tool));
   }
 
@@ -113,8 +119,8 @@ class writer {
   /// FEDRAT/MMPM,f or FEDRAT/INVERS,f.
   void feed(const block& b) {
     if (b.feed) {
-      const bool inverse = b.feed_mode == feed_unit::inverse_time;
-      lines_.push_back(std::string("FEDRAT/") + (inverse ? "INVERS," : "MMPM,") + format_number(*b.feed, options_.feed_decimals));
+      const char* mode = inverse_time_ ? "INVERS," : inch_ ? "IPM," : "MMPM,";
+      lines_.push_back(std::string("FEDRAT/") + mode + format_number(*b.feed, options_.feed_decimals + (inch_ ? 1 : 0)));
     } else if (b.feed_mode) {
       foreign_note_ = true;
     }
@@ -132,9 +138,9 @@ class writer {
       if (!b.axes.x_mm || !b.axes.y_mm || !b.axes.z_mm) fail(b, "GOTO needs x, y and z");
       if (rapid && !rapid_pending_) lines_.push_back("RAPID");
       if (!rapid && rapid_pending_) fail(b, "a linear move cannot follow RAPID");
-      std::string go = "GOTO/" + format_number(*b.axes.x_mm, options_.linear_decimals) + "," +
-                       format_number(*b.axes.y_mm, options_.linear_decimals) + "," +
-                       format_number(*b.axes.z_mm, options_.linear_decimals);
+      const int linear = options_.linear_decimals + (inch_ ? 1 : 0);
+      std::string go = "GOTO/" + format_number(*b.axes.x_mm, linear) + "," + format_number(*b.axes.y_mm, linear) +
+                       "," + format_number(*b.axes.z_mm, linear);
       if (b.axes.tool_axis) {
         const vec3& v = *b.axes.tool_axis;
         go += "," + format_number(v.x, options_.vector_decimals) + "," + format_number(v.y, options_.vector_decimals) +

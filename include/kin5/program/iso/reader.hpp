@@ -2,8 +2,9 @@
 /// The second stage of the ISO / Fanuc reader: the words of a line (lexer.hpp) become a `block`.
 /// G0–G3 with `I J K` (incremental centre) or `R`, G17/G18/G19, `G43.4` / `G43.5` (tool-tip
 /// tracking; under G43.5 `I J K` in G0/G1 blocks are the tool-axis vector), `G49`, G93/G94, G21,
-/// `G53` / `G28` / `G30` (machine coordinates), M30/M2. Errors: G91 (except in `G91 G28`/`G30`
-/// homing blocks), G95, G20, active frames (G68, G68.2, G51, G52 with offsets), canned cycles.
+/// `G53` / `G28` / `G30` (machine coordinates), M30/M2, G20/G21 (an inch program's lengths and
+/// per-minute feeds are converted to mm: units.hpp). Errors: G91 (except in `G91 G28`/`G30`
+/// homing blocks), G95, a unit change after motion, active frames (G68, G68.2, G51, G52 with offsets), canned cycles.
 /// Harmless modal words (G40, G54, G90, G05.1 Q1, H1, D1, …) are kept as written; a line not
 /// understood that moves nothing passes through.
 #pragma once
@@ -22,6 +23,7 @@
 #include "../lexing.hpp"
 #include "../text.hpp"
 #include "../transmission.hpp"
+#include "../units.hpp"
 #include "lexer.hpp"
 #include "vocabulary.hpp"
 
@@ -48,7 +50,10 @@ struct reader_state {
   bool vector_tcp = false;    // G43.5 active
   bool incremental = false;   // G91 from a homing block, until G90
   std::size_t incremental_line = 0;
-  std::optional<double> last[3];
+  std::optional<double> last[3];  // in the program's unit
+  bool inch = false;          // G20 active: lengths are inches
+  bool inverse_time = false;  // G93 active: F is not a length
+  bool moved = false;         // a block has moved: the unit is fixed
 };
 
 /// Reads the lines of one program into blocks.
@@ -140,6 +145,8 @@ class reader {
       if (b.axes.y_mm) state_.last[1] = b.axes.y_mm;
       if (b.axes.z_mm) state_.last[2] = b.axes.z_mm;
     }
+    if (state_.inch) inches_to_mm(b, !state_.inverse_time);
+    state_.moved = state_.moved || b.moves();
     // The order the writer uses: G codes first, then the others (H, D, P, Q), each as written.
     std::stable_partition(b.kept_words.begin(), b.kept_words.end(),
                           [](const std::string& k) { return to_upper(k.front()) == 'G'; });
@@ -236,6 +243,7 @@ class reader {
       state_.incremental = true, state_.incremental_line = line_;
       keep();
     } else if (g == 930 || g == 940) {
+      state_.inverse_time = g == 930;
       b.feed_mode = g == 930 ? feed_unit::inverse_time : feed_unit::per_minute;
     } else if (g == 434 || g == 435 || g == 490) {
       b.tcp = g != 490;
@@ -250,10 +258,11 @@ class reader {
 
   /// G20, G95, cycles and frames are refused (G21 is read); other G codes are not understood.
   void refused_g(block& b, const word& w, int g, line_words& l) {
-    if (g == 200) {
-      error(w.column, "inch programs are not supported");
-    } else if (g == 210) {
-      b.metric = true;
+    if (g == 200 || g == 210) {
+      if (state_.moved && state_.inch != (g == 200))
+        return error(w.column, "G" + std::to_string(g / 10) + " after motion: a unit change inside a program is not supported");
+      b.metric = g == 210;
+      state_.inch = g == 200;
     } else if (g == 950) {
       error(w.column, "feed per revolution (G95) is not supported");
     } else if (g == 730 || g == 740 || g == 760 || (g >= 810 && g <= 890 && g % 10 == 0)) {

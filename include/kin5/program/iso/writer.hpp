@@ -1,7 +1,9 @@
 /// @file program/iso/writer.hpp
 /// Blocks written as ISO / Fanuc G code, one block per line, words in the order
-/// `N  kept G  G0-G3  G43.4/G43.5/G49  G93/G94  G21  X Y Z A B C  I J K  R  F S T M  kept  (comment)`.
-/// A block ISO cannot express (inch units, a tool-axis vector outside G43.5 or with an arc)
+/// `N  kept G  G0-G3  G43.4/G43.5/G49  G93/G94  G21/G20  X Y Z A B C  I J K  R  F S T M  kept  (comment)`.
+/// After a block that says inch (`metric == false`, written G20) lengths and per-minute feeds are
+/// written in inches with one decimal more. A block ISO cannot express (a tool-axis vector outside
+/// G43.5 or with an arc)
 /// throws `std::invalid_argument` naming the block's `file:line`.
 #pragma once
 
@@ -17,6 +19,7 @@
 #include "../block.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
+#include "../units.hpp"
 #include "vocabulary.hpp"
 
 namespace kin5::program::iso {
@@ -74,10 +77,14 @@ class writer {
     words_.clear();
     tail_.clear();
     notes_.clear();
-    head(b);
-    modes(b, vector_tcp_ahead);
-    coordinates(b);
-    codes(b);
+    if (b.metric) inch_ = !*b.metric;
+    if (b.feed_mode) inverse_time_ = *b.feed_mode == feed_unit::inverse_time;
+    block in_unit = b;
+    if (inch_) mm_to_inches(in_unit, !inverse_time_);
+    head(in_unit);
+    modes(in_unit, vector_tcp_ahead);
+    coordinates(in_unit);
+    codes(in_unit);
     for (std::string& k : tail_) words_.push_back(std::move(k));
     if (!notes_.empty()) words_.push_back(detail::as_comment(notes_));
     if (b.comment) words_.push_back(detail::as_comment(*b.comment));
@@ -91,6 +98,8 @@ class writer {
   bool same_;  // the blocks were read as ISO
   write_options options_;
   bool vector_tcp_ = false;
+  bool inch_ = false;          // G20 written: lengths in inches
+  bool inverse_time_ = false;  // G93 written: F is not a length
   arc_plane plane_ = arc_plane::xy;
   std::optional<double> last_[3];
   bool ended_ = false;              // the last block written had an M2 / M30 M function
@@ -159,18 +168,16 @@ class writer {
       words_.push_back(!*b.tcp ? "G49" : vector_tcp_ ? "G43.5" : "G43.4");
     }
     if (b.feed_mode) words_.push_back(*b.feed_mode == feed_unit::inverse_time ? "G93" : "G94");
-    if (b.metric) {
-      if (!*b.metric) fail(b, "inch units");
-      words_.push_back("G21");
-    }
+    if (b.metric) words_.push_back(*b.metric ? "G21" : "G20");
   }
 
   /// X Y Z A B C, the tool-axis I J K, the arc's R or I J K; the last point moves on.
   void coordinates(const block& b) {
     const axis_words& a = b.axes;
-    if (a.x_mm) put('X', *a.x_mm, options_.linear_decimals);
-    if (a.y_mm) put('Y', *a.y_mm, options_.linear_decimals);
-    if (a.z_mm) put('Z', *a.z_mm, options_.linear_decimals);
+    const int linear = options_.linear_decimals + (inch_ ? 1 : 0);
+    if (a.x_mm) put('X', *a.x_mm, linear);
+    if (a.y_mm) put('Y', *a.y_mm, linear);
+    if (a.z_mm) put('Z', *a.z_mm, linear);
     if (a.a_deg) put('A', *a.a_deg, options_.angle_decimals);
     if (a.b_deg) put('B', *a.b_deg, options_.angle_decimals);
     if (a.c_deg) put('C', *a.c_deg, options_.angle_decimals);
@@ -182,14 +189,14 @@ class writer {
       put('K', a.tool_axis->z, options_.vector_decimals);
     }
     if (b.arc && b.arc->radius_mm) {
-      put('R', *b.arc->radius_mm, options_.linear_decimals);
+      put('R', *b.arc->radius_mm, linear);
     } else if (b.arc && b.arc->centre_mm) {
       if (!last_[0] || !last_[1] || !last_[2]) fail(b, "arc centre with no known start point");
       const double centre[3] = {b.arc->centre_mm->x, b.arc->centre_mm->y, b.arc->centre_mm->z};
       const int first = plane_ == arc_plane::xy ? 0 : plane_ == arc_plane::zx ? 2 : 1;
       const int second = plane_ == arc_plane::xy ? 1 : plane_ == arc_plane::zx ? 0 : 2;
       for (int k : {std::min(first, second), std::max(first, second)})
-        put(static_cast<char>('I' + k), centre[k] - *last_[k], options_.linear_decimals);
+        put(static_cast<char>('I' + k), centre[k] - *last_[k], linear);
     }
     const std::optional<double>* given[3] = {&a.x_mm, &a.y_mm, &a.z_mm};
     for (int k = 0; k < 3; ++k)
@@ -198,7 +205,7 @@ class writer {
 
   /// F S T, M codes, and the program end (never a second M2 / M30).
   void codes(const block& b) {
-    if (b.feed) put('F', *b.feed, options_.feed_decimals);
+    if (b.feed) put('F', *b.feed, options_.feed_decimals + (inch_ && !inverse_time_ ? 1 : 0));
     if (b.spindle_rpm) put('S', *b.spindle_rpm, options_.feed_decimals);
     if (b.tool) words_.push_back(code('T', *b.tool));
     bool ends = false;  // an M2 / M30 written in this block

@@ -27,8 +27,6 @@ std::vector<kin5::test::bad_input> kin5::test::contract<apt::dialect>::bad_input
       {"GOTO/1,,3\n", "t.cls:1:8: error: GOTO value is missing"},
       {"GOTO/1,2,2000000000\n", "t.cls:1:10: error: value out of range"},
       {"GOTO/1,2\x01,3\n", "t.cls:1:9: error: unexpected byte 0x01"},
-      {"UNITS/INCHES\n", "t.cls:1:7: error: inch programs are not supported"},
-      {"FEDRAT/IPM,10\n", "t.cls:1:8: error: inch programs are not supported"},
       {"FEDRAT/MMPR,0.1\n", "t.cls:1:8: error: feed per revolution is not supported"},
       {"FEDRAT/\n", "t.cls:1:1: error: FEDRAT needs a feed value"},
       {"SPINDL/SMM,200\n", "t.cls:1:8: error: constant surface speed is not supported"},
@@ -70,7 +68,4 @@ TEST_CASE("apt: the writer names the block it cannot write") {
   p.blocks[0].axes.z_mm = 3;
   p.blocks[0].motion = motion_kind::arc_cw;
   CHECK_THROWS_AS(apt::write(p), std::invalid_argument);
-  p.blocks[0].motion = motion_kind::linear;
-  p.blocks[0].metric = false;
-  CHECK_THROWS_WITH(apt::write(p), "part.cls:12: block cannot be written in APT: inch units");
 }
