@@ -2,8 +2,9 @@
 /// The target side for APT CL data (`reverse`): each motion block becomes one
 /// GOTO/x,y,z,i,j,k with the tool tip and tool axis of its source step, in the source
 /// workpiece frame (CL data names no machine, so there is no setup and nothing to plan). F is
-/// kept: CL feed is tool-tip feed. TCP switches become comments (CL data is tool-tip data);
-/// arcs and inverse-time feed are errors, since GOTO points cannot say them. Blocks that are
+/// kept: CL feed is tool-tip feed, and an inverse-time F (G93) stays one, `FEDRAT/INVERS`: each
+/// GOTO is the whole of its source block, so 1/(block time) means the same time. TCP switches
+/// become comments (CL data is tool-tip data); arcs are errors, since GOTO points cannot say them. Blocks that are
 /// not motion are copied, their dialect text carried over (`carry_over.hpp`).
 /// @code
 ///   kin5::translate_detail::cl_target target(kin5::program::dialect::siemens);
@@ -42,10 +43,6 @@ class cl_target {
     }
     program::block o = b;
     carry_over(o, source_language_, program::dialect::apt);
-    if (b.feed_mode == program::feed_unit::inverse_time) {
-      out.errors.push_back(at(b, "inverse-time feed (G93) cannot be written as APT CL data"));
-      return;
-    }
     if (o.tcp) {  // CL data is tool-tip data: tracking is implied
       if (!o.comment) o.comment = *o.tcp ? "tool-tip tracking on" : "tool-tip tracking off";
       o.tcp.reset();
