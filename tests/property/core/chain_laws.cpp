@@ -10,6 +10,7 @@
 
 #include <kin5/eigen.hpp>
 #include <kin5/kin5.hpp>
+#include <kin5/machines/every_machine.hpp>
 
 #include "generators.hpp"
 
@@ -68,7 +69,7 @@ machine_model runtime_copy() {
 }  // namespace
 
 TEMPLATE_LIST_TEST_CASE("(G6) forward equals the Eigen chain with translations", "[core][chain]",
-                        kin5::machines::catalog) {
+                        kin5::machines::every_machine) {
   using M = TestType;
   rc::prop("tip to 1e-9 mm, axis to 1e-12, any axis values, tool length and work offset", [] {
     const auto q = *rc::gen::oneOf(test::axis_values_within<M>(), test::axis_values_anywhere<M>());
@@ -98,7 +99,7 @@ TEMPLATE_LIST_TEST_CASE("(G6) forward equals the Eigen chain with translations",
 }
 
 TEMPLATE_LIST_TEST_CASE("(G7) pose inverse: FK∘IK = id and IK∘FK lists the generating axis values",
-                        "[core][chain]", kin5::machines::catalog) {
+                        "[core][chain]", kin5::machines::every_machine) {
   using M = TestType;
   rc::prop("every listed solution reproduces the tip (1e-8 mm) and the axis (1e-12)", [] {
     const auto q = *test::axis_values_within<M>();
@@ -129,7 +130,7 @@ TEMPLATE_LIST_TEST_CASE("(G7) pose inverse: FK∘IK = id and IK∘FK lists the g
         const auto& t = M::linear[i].travel;
         const double e = std::max({0.0, t.lower_mm - x[i], x[i] - t.upper_mm});
         excess = std::max(excess, e);
-        linear_inside = linear_inside && e <= 1e-9;
+        linear_inside = linear_inside && e <= inverse_options{}.linear_slack_mm;
       }
       RC_ASSERT(s.within_travel == (s.rotary_within_travel && linear_inside));
       RC_ASSERT(std::abs(s.linear_excess_mm - (linear_inside ? 0.0 : excess)) <= 1e-12);
@@ -145,7 +146,7 @@ TEMPLATE_LIST_TEST_CASE("(G7) pose inverse: FK∘IK = id and IK∘FK lists the g
   });
 }
 
-TEMPLATE_LIST_TEST_CASE("(G7) at the poles and at the linear limits", "[core][chain]", kin5::machines::catalog) {
+TEMPLATE_LIST_TEST_CASE("(G7) at the poles and at the linear limits", "[core][chain]", kin5::machines::every_machine) {
   using M = TestType;
   rc::prop("near and at ±p every solution still puts the tip on the target", [] {
     const vec3 u = *test::near_axis(M::rotary[0].direction);
@@ -164,11 +165,15 @@ TEMPLATE_LIST_TEST_CASE("(G7) at the poles and at the linear limits", "[core][ch
     const run_inputs in{*test::real_in(0, 200), {}};
     const tool_pose target = oracle<M>(q, in);
     RC_PRE(distance_to_singular<M>(target.axis) > 1e-5);
-    const auto at = inverse<M>(target, in);
+    // The slides of (G7) carry the rotary round-off times the lever arm (~1e-11 rad × 1 m), so a
+    // pose made exactly at a limit can come back ~1e-8 mm beyond it: allow 1e-6 mm here.
+    inverse_options slack{};
+    slack.linear_slack_mm = 1e-6;
+    const auto at = inverse<M>(target, in, slack);
     RC_ASSERT(listed<M>(at, q));
     RC_ASSERT(at.reachable());
     *x[axis] += upper ? 1e-3 : -1e-3;
-    const auto beyond = inverse<M>(oracle<M>(q, in), in);
+    const auto beyond = inverse<M>(oracle<M>(q, in), in, slack);
     bool found = false;
     for (const auto& s : beyond)
       if (std::abs(s.joints.xyz_mm.x - q.xyz_mm.x) + std::abs(s.joints.xyz_mm.y - q.xyz_mm.y) +
@@ -181,7 +186,7 @@ TEMPLATE_LIST_TEST_CASE("(G7) at the poles and at the linear limits", "[core][ch
   });
 }
 
-TEMPLATE_LIST_TEST_CASE("the value API is the template API", "[core][chain]", kin5::machines::catalog) {
+TEMPLATE_LIST_TEST_CASE("the value API is the template API", "[core][chain]", kin5::machines::every_machine) {
   using M = TestType;
   const machine_model m = runtime_copy<M>();
   rc::prop("inverse, forward and the pose inverse agree exactly with a model built at run time", [&] {

@@ -11,6 +11,7 @@
 
 #include <kin5/eigen.hpp>
 #include <kin5/kin5.hpp>
+#include <kin5/machines/every_machine.hpp>
 
 #include "generators.hpp"
 #include "sweep.hpp"
@@ -103,7 +104,7 @@ rc::Gen<vec3> near_reach_edge() {
 }  // namespace
 
 TEMPLATE_LIST_TEST_CASE("forward kinematics equals the Eigen chain (P1, P2)", "[core][forward]",
-                        kin5::machines::catalog) {
+                        kin5::machines::every_machine) {
   using M = TestType;
   rc::prop("|u| = 1 and tool_axis = chain_tool_axis to 1e-12", [] {
     const auto a = *rc::gen::oneOf(test::angles_within<M>(), test::angles_anywhere<M>());
@@ -114,7 +115,7 @@ TEMPLATE_LIST_TEST_CASE("forward kinematics equals the Eigen chain (P1, P2)", "[
 }
 
 TEMPLATE_LIST_TEST_CASE("FK∘IK = id and IK∘FK contains the generating angles", "[core][inverse]",
-                        kin5::machines::catalog) {
+                        kin5::machines::every_machine) {
   using M = TestType;
   rc::prop("every listed solution reproduces u", [] {
     const auto a = *test::angles_within<M>();
@@ -162,7 +163,7 @@ TEMPLATE_LIST_TEST_CASE("FK∘IK = id and IK∘FK contains the generating angles
   });
 }
 
-TEMPLATE_LIST_TEST_CASE("travel flags and output ranges", "[core][inverse]", kin5::machines::catalog) {
+TEMPLATE_LIST_TEST_CASE("travel flags and output ranges", "[core][inverse]", kin5::machines::every_machine) {
   using M = TestType;
   rc::prop("within_travel is exactly 'every axis inside its travel'; status agrees", [] {
     const vec3 u = *rc::gen::oneOf(test::unit_vector(), near_reach_edge<M>(), test::near_axis(M::rotary[0].direction),
@@ -188,7 +189,7 @@ TEMPLATE_LIST_TEST_CASE("travel flags and output ranges", "[core][inverse]", kin
 }
 
 TEMPLATE_LIST_TEST_CASE("reach and gap agree with a dense sweep of the Eigen chain", "[core][reach]",
-                        kin5::machines::catalog) {
+                        kin5::machines::every_machine) {
   using M = TestType;
   rc::prop("unreachable exactly when the sweep finds no pose; gap = sweep minimum", [] {
     const vec3 u = *rc::gen::oneOf(test::unit_vector(), near_reach_edge<M>(), test::near_axis(M::rotary[0].direction));
@@ -256,7 +257,7 @@ TEST_CASE("closed-form gaps of single machines (P7, P14, K25)", "[core][reach]")
   });
 }
 
-TEMPLATE_LIST_TEST_CASE("poles (S2): keep and approach policies", "[core][pole]", kin5::machines::catalog) {
+TEMPLATE_LIST_TEST_CASE("poles (S2): keep and approach policies", "[core][pole]", kin5::machines::every_machine) {
   using M = TestType;
   if constexpr (rotary_count<M> == 2) {
     const vec3 p = M::rotary[0].direction;
@@ -319,7 +320,7 @@ TEST_CASE("Tian 2010 pole convention by approach (P16)", "[core][pole]") {
   });
 }
 
-TEMPLATE_LIST_TEST_CASE("unwrap_continuous and nearest_within_travel", "[core][branch]", kin5::machines::catalog) {
+TEMPLATE_LIST_TEST_CASE("unwrap_continuous and nearest_within_travel", "[core][branch]", kin5::machines::every_machine) {
   using M = TestType;
   rc::prop("unwrap: continuous axes land within 180 deg of previous, congruent; bounded unchanged", [] {
     const auto a = *test::angles_anywhere<M>();
@@ -387,7 +388,7 @@ TEST_CASE("nearest_within_travel: equal largest moves are decided by the sum of 
 }
 
 TEMPLATE_LIST_TEST_CASE("nearest_within_travel: least largest move, ties to 1e-9 rad decided by the sum",
-                        "[core][branch]", kin5::machines::catalog) {
+                        "[core][branch]", kin5::machines::every_machine) {
   using M = TestType;
   // Previous angles at zero make the two branches of an orthogonal chain tilt by exactly the same
   // amount (A = ±arccos k on ac-trunnion), the case where rounding used to decide; 20,000 fixed
@@ -427,7 +428,7 @@ TEMPLATE_LIST_TEST_CASE("nearest_within_travel: least largest move, ties to 1e-9
 }
 
 TEMPLATE_LIST_TEST_CASE("principal branch: branch 0 of the full inverse gives the angles back", "[core][branch]",
-                        kin5::machines::catalog) {
+                        kin5::machines::every_machine) {
   using M = TestType;
   // The definition, through every solution `inverse` returns (all branches, all 360° shifts).
   const auto by_inverse = [](const rotary_angles<M>& a) {
