@@ -9,6 +9,7 @@ packages=(
   coinor-libipopt-dev      # kin5::reach
   libbenchmark-dev         # bench/
   libcli11-dev             # command-line tool
+  libtomlplusplus-dev      # machine files (TOML)
   clang libclang-rt-14-dev # libFuzzer targets
   chromium fonts-dejavu-core libpng-dev  # the sphere maps checked in a browser (tests/match)
 )
