@@ -1,7 +1,8 @@
 // The core subcommands of the kin5 tool, each a few calls into the headers on a machine value
 // (machine_model), so a machine known only at run time runs the same code:
 //
-//   kin5 machines                                   the catalog, one machine per line
+//   kin5 machines [--file ID | --machine-file FILE] the bundled machines, one per line; or the
+//                                                   machine file of one; or a file's machine
 //   kin5 solve --machine ID --vector I,J,K          every rotary solution within travel (G1)-(G5)
 //              [--tip X,Y,Z [--tool-length L] [--work-offset X,Y,Z]]
 //                                                   with --tip: every axis solution (G7)
@@ -9,7 +10,9 @@
 //           [X=MM Y=MM Z=MM] [--tool-length L] [--work-offset X,Y,Z]
 //                                                   with X, Y, Z: the tip and the axis (G6)
 //
-// Exit codes are those of commands.hpp: 0 success, 1 bad arguments, 3 no solution.
+// Wherever --machine ID is accepted, --machine-file FILE may be given instead (machine_option.hpp).
+// Exit codes are those of commands.hpp: 0 success, 1 bad arguments, 2 a bad machine file,
+// 3 no solution.
 // Messages go to stderr as one line starting with "kin5 <command>:".
 #include <algorithm>
 #include <array>
@@ -24,21 +27,15 @@
 #include <vector>
 
 #include <kin5/kin5.hpp>
+#include <kin5/machines/every_machine.hpp>
+#include <kin5/machines/machine_file_writer.hpp>
 
 #include "commands.hpp"
 #include "format.hpp"
+#include "machine_option.hpp"
 
 namespace kin5::tool {
 namespace {
-
-/// The catalog model with id `id`, or null.
-const machine_model* find_machine(std::string_view id) {
-  const machine_model* found = nullptr;
-  kin5::machines::for_each_machine([&]<class M>() {
-    if (!found && M::id == id) found = &M::model;
-  });
-  return found;
-}
 
 /// The indices of m's rotary axes in NC address order (A, B, C), the order output is written in.
 std::vector<std::size_t> letter_order(const machine_model& m) {
@@ -74,10 +71,6 @@ std::string describe(const rotary_axis& a) {
                              : " [" + format_limit(a.travel.lower.value) + ", " + format_limit(a.travel.upper.value) + "] deg";
   out += a.sense == angle_sense::physical ? " physical" : " tool-relative";
   return out;
-}
-
-void report_unknown_machine(std::string_view command, std::string_view id) {
-  std::cerr << "kin5 " << command << ": unknown machine '" << id << "'; valid ids: " << join(machine_ids()) << '\n';
 }
 
 /// "X,Y,Z" as a vector, or an error naming `option`.
@@ -136,27 +129,49 @@ std::optional<run_inputs> parse_inputs(const std::string& tool_length, const std
 
 // ---- machines ---------------------------------------------------------------------------
 
-int run_machines() {
+struct machines_arguments {
+  std::string file_of;       // --file ID
+  std::string machine_file;  // --machine-file FILE
+};
+
+/// "id  structure; axes workpiece to tool: ..." for one machine, the id padded to `width`.
+std::string machine_line(const machine_model& m, std::size_t width) {
+  std::string line(m.geometry.id);
+  line.resize(std::max(width, line.size()) + 2, ' ');
+  line += m.geometry.structure;
+  line += "; axes workpiece to tool: ";
+  for (std::size_t i = 0; i < m.rotary_count; ++i) {
+    if (i) line += ", ";
+    line += describe(m.rotary(i));
+  }
+  return line;
+}
+
+int run_machines(const machines_arguments& args) {
+  if (!args.file_of.empty() && !args.machine_file.empty()) {
+    std::cerr << "kin5 machines: give at most one of --file and --machine-file\n";
+    return exit_codes::usage;
+  }
+  int exit_code = exit_codes::ok;
+  if (!args.file_of.empty() || !args.machine_file.empty()) {
+    const auto m = resolve_machine({args.file_of, args.machine_file, "--file"}, "machines", exit_code);
+    if (!m) return exit_code;
+    if (!args.file_of.empty()) std::cout << to_machine_file(m->model().geometry);
+    else std::cout << machine_line(m->model(), 0) << '\n';
+    return exit_codes::ok;
+  }
   std::size_t width = 0;
-  for (auto id : machine_ids()) width = std::max(width, id.size());
-  kin5::machines::for_each_machine([&]<class M>() {
-    std::string line(M::id);
-    line.resize(width + 2, ' ');
-    line += M::structure;
-    line += "; axes workpiece to tool: ";
-    for (std::size_t i = 0; i < rotary_count<M>; ++i) {
-      if (i) line += ", ";
-      line += describe(M::rotary[i]);
-    }
-    std::cout << line << '\n';
-  });
+  kin5::machines::for_each_machine_in<kin5::machines::every_machine>(
+      [&]<class M>() { width = std::max(width, M::id.size()); });
+  kin5::machines::for_each_machine_in<kin5::machines::every_machine>(
+      [&]<class M>() { std::cout << machine_line(M::model, width) << '\n'; });
   return exit_codes::ok;
 }
 
 // ---- solve ------------------------------------------------------------------------------
 
 struct solve_arguments {
-  std::string machine_id;
+  machine_choice machine;
   std::string vector_text;
   std::string tip_text;
   std::string tool_length;
@@ -225,18 +240,16 @@ int run_solve(const solve_arguments& args) {
     std::cerr << "kin5 solve: " << error << '\n';
     return exit_codes::usage;
   }
-  const machine_model* m = find_machine(args.machine_id);
-  if (!m) {
-    report_unknown_machine("solve", args.machine_id);
-    return exit_codes::usage;
-  }
-  return tip ? solve_pose(*m, {*tip, *u}, *in) : solve_axis(*m, *u);
+  int exit_code = exit_codes::ok;
+  const auto m = resolve_machine(args.machine, "solve", exit_code);
+  if (!m) return exit_code;
+  return tip ? solve_pose(m->model(), {*tip, *u}, *in) : solve_axis(m->model(), *u);
 }
 
 // ---- fk ---------------------------------------------------------------------------------
 
 struct fk_arguments {
-  std::string machine_id;
+  machine_choice machine;
   std::vector<std::string> values;  // "NAME=VALUE"
   std::string tool_length;
   std::string work_offset;
@@ -332,25 +345,26 @@ int fk_on(const machine_model& m, const fk_arguments& args) {
 }
 
 int run_fk(const fk_arguments& args) {
-  const machine_model* m = find_machine(args.machine_id);
-  if (!m) {
-    report_unknown_machine("fk", args.machine_id);
-    return exit_codes::usage;
-  }
-  return fk_on(*m, args);
+  int exit_code = exit_codes::ok;
+  const auto m = resolve_machine(args.machine, "fk", exit_code);
+  if (!m) return exit_code;
+  return fk_on(m->model(), args);
 }
 
 }  // namespace
 
 void add_machines_command(CLI::App& app, int& exit_code) {
-  auto* sub = app.add_subcommand("machines", "List the catalog machines: id, structure, rotary axes and travel");
-  sub->callback([&exit_code] { exit_code = run_machines(); });
+  auto args = std::make_shared<machines_arguments>();
+  auto* sub = app.add_subcommand("machines", "List the bundled machines: id, structure, rotary axes and travel");
+  sub->add_option("--file", args->file_of, "Print the machine file (TOML) of the bundled machine ID");
+  sub->add_option("--machine-file", args->machine_file, "Check a machine file and describe its machine");
+  sub->callback([args, &exit_code] { exit_code = run_machines(*args); });
 }
 
 void add_solve_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<solve_arguments>();
   auto* sub = app.add_subcommand("solve", "Every set of axis values within travel that gives a tool axis (and tip)");
-  sub->add_option("--machine,-m", args->machine_id, "Catalog machine id (see `kin5 machines`)")->required();
+  add_machine_options(*sub, args->machine);
   sub->add_option("--vector,-v", args->vector_text,
                   "Tool axis I,J,K in the workpiece frame, tip towards spindle; need not be unit")
       ->required();
@@ -367,7 +381,7 @@ void add_solve_command(CLI::App& app, int& exit_code) {
 void add_fk_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<fk_arguments>();
   auto* sub = app.add_subcommand("fk", "The unit tool axis for rotary angles; with X Y Z, the tool tip too");
-  sub->add_option("--machine,-m", args->machine_id, "Catalog machine id (see `kin5 machines`)")->required();
+  add_machine_options(*sub, args->machine);
   sub->add_option("--tool-length", args->tool_length, "Tool length, gauge point to tip, mm (with X Y Z; default 0)");
   sub->add_option("--work-offset", args->work_offset,
                   "Workpiece origin X,Y,Z in machine coordinates at the zero pose, mm (with X Y Z; default 0,0,0)");
