@@ -35,6 +35,7 @@ struct line_parse {
   bool has_geometry = false;   ///< axis, vector, centre or radius words (or failed attempts at them)
   bool has_content = false;    ///< anything besides N, comments and MSG
   bool has_msg = false;
+  std::optional<std::size_t> mcall_column;         ///< MCALL seen (a call after it is a modal cycle call)
   bool frame_arguments = false;  ///< RPL= and the like
   std::vector<std::pair<std::string, std::size_t>> frame_words;  ///< TRANS, ROT, G58, … (column)
   std::vector<diagnostic> unknown;  ///< errors if the block has geometry, else it is passthrough
@@ -295,6 +296,12 @@ class word_reader {
     const std::string& name = w.name;
     const std::size_t start = w.column;
     block& b = out_.b;
+    if (name == "MCALL") {  // alone it cancels a modal call: harmless; with a call it is refused there
+      out_.has_content = true;
+      out_.mcall_column = start;
+      b.kept_words.push_back(name);
+      return;
+    }
     const bool known = name == "TRAORI" || name == "TRAFOOF" || name == "SUPA" || is_kept_keyword(name) ||
                        is_frame_reset_keyword(name) || is_frame_keyword(name);
     if (!known) return unknown(start, "unknown word '" + name + "'");
@@ -317,6 +324,8 @@ class word_reader {
     const std::string& name = w.name;
     const std::size_t start = w.column;
     if (!w.closed) return error(w.open_column, "missing ')'");
+    if (out_.mcall_column)
+      return error(*out_.mcall_column, "MCALL " + name + ": a modal cycle call is not supported (the cycle would run at every later position)");
     const std::string args(w.text);
     if (name == "TRAORI") {
       out_.has_content = true;
