@@ -56,27 +56,30 @@ using dialects = std::tuple<siemens::dialect, heidenhain::dialect, iso::dialect,
 /// How many dialects there are.
 inline constexpr std::size_t dialect_count = std::tuple_size_v<dialects>;
 
-/// Calls `f(std::type_identity<D>{}, index)` for every dialect D of the list, in order.
-template <class F>
+/// Calls `f(std::type_identity<D>{}, index)` for every dialect D of the list, in order. Every
+/// fold below takes the list as a template argument, `dialects` by default, so a test can run
+/// them on the list with one entry more (tests/property/dialects/adding_a_dialect.cpp).
+template <class List = dialects, class F>
 constexpr void for_each_dialect(F&& f) {
   [&]<std::size_t... I>(std::index_sequence<I...>) {
-    (f(std::type_identity<std::tuple_element_t<I, dialects>>{}, I), ...);
-  }(std::make_index_sequence<dialect_count>{});
+    (f(std::type_identity<std::tuple_element_t<I, List>>{}, I), ...);
+  }(std::make_index_sequence<std::tuple_size_v<List>>{});
 }
 
 /// `f(std::type_identity<D>{})` for the dialect D whose id is `d`; `otherwise()` if none is.
-template <class F, class Otherwise>
+template <class List = dialects, class F, class Otherwise>
 constexpr auto visit_dialect(dialect d, F&& f, Otherwise&& otherwise) -> decltype(otherwise()) {
   std::optional<decltype(otherwise())> result;
-  for_each_dialect([&]<class D>(std::type_identity<D> type, std::size_t) {
+  for_each_dialect<List>([&]<class D>(std::type_identity<D> type, std::size_t) {
     if (!result && D::id == d) result.emplace(f(type));
   });
   return result ? std::move(*result) : otherwise();
 }
 
 /// The name of dialect `d` ("siemens", "heidenhain", …); "?" for a value that names no dialect.
+template <class List = dialects>
 constexpr std::string_view name(dialect d) {
-  return visit_dialect(d, []<class D>(std::type_identity<D>) { return D::name; }, [] { return std::string_view("?"); });
+  return visit_dialect<List>(d, []<class D>(std::type_identity<D>) { return D::name; }, [] { return std::string_view("?"); });
 }
 
 namespace detail {
@@ -101,14 +104,16 @@ static_assert(detail::all_dialects<dialects>::value, "every entry of program::di
 static_assert(detail::distinct_ids(), "every dialect has its own id and name");
 
 /// The capabilities of dialect `d` (all false for a value that names no dialect).
+template <class List = dialects>
 constexpr capabilities capabilities_of(dialect d) {
-  return visit_dialect(d, []<class D>(std::type_identity<D>) { return D::can; }, [] { return capabilities{}; });
+  return visit_dialect<List>(d, []<class D>(std::type_identity<D>) { return D::can; }, [] { return capabilities{}; });
 }
 
 /// The dialect named `s` ("siemens", "heidenhain", …), if any.
+template <class List = dialects>
 constexpr std::optional<dialect> parse_dialect(std::string_view s) {
   std::optional<dialect> found;
-  for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t) {
+  for_each_dialect<List>([&]<class D>(std::type_identity<D>, std::size_t) {
     if (D::name == s) found = D::id;
   });
   return found;

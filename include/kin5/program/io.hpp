@@ -31,8 +31,9 @@ namespace kin5::program {
 
 /// Reads `text` (the bytes of a file, any line endings) as a program in dialect `d`.
 /// `file_name` is only used in the locations of blocks and diagnostics.
-inline read_result read(dialect d, std::string_view text, std::string file_name) {
-  return visit_dialect(
+template <class List = dialects>
+read_result read(dialect d, std::string_view text, std::string file_name) {
+  return visit_dialect<List>(
       d, [&]<class D>(std::type_identity<D>) { return read_whole(D::id, text, std::move(file_name), &D::read_blocks); },
       [] { return read_result{}; });
 }
@@ -184,15 +185,16 @@ constexpr std::string_view skip_block_number(std::string_view line) {
 /// in a line: `TRAORI`, `TRAFOOF` (siemens), `M128`, `FUNCTION TCPM` (heidenhain), `G43.4`,
 /// `G43.5` (iso). Text with markers of two dialects, or none, gives nothing: the caller then
 /// decides (for example with `default_dialect`). Cost: one pass over the first 200 lines.
+template <class List = dialects>
 constexpr std::optional<dialect> guess_dialect(std::string_view text) {
-  std::array<bool, dialect_count> seen{};
+  std::array<bool, std::tuple_size_v<List>> seen{};
   std::size_t start = 0, lines = 0;
   while (start < text.size() && lines < 200) {
     std::size_t end = start;
     while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
     const std::string_view line = text.substr(start, end - start);
     const std::string_view statement = detail::skip_block_number(line);
-    for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t i) {
+    for_each_dialect<List>([&]<class D>(std::type_identity<D>, std::size_t i) {
       for (const marker& m : D::markers)
         if (m.where == marker::place::block_start ? starts_with_keyword(statement, m.keyword)
                                                   : detail::contains_keyword(line, m.keyword))
@@ -203,7 +205,7 @@ constexpr std::optional<dialect> guess_dialect(std::string_view text) {
   }
   std::optional<dialect> found;
   std::size_t count = 0;
-  for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t i) {
+  for_each_dialect<List>([&]<class D>(std::type_identity<D>, std::size_t i) {
     if (seen[i]) found = D::id, ++count;
   });
   return count == 1 ? found : std::nullopt;
