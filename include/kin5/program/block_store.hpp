@@ -5,7 +5,9 @@
 /// Each block is packed into a byte record: one word of flags (which fields are present), then
 /// only the fields present, numbers as their exact bytes, strings with their length. A motion
 /// block `N… G1 X Y Z A B F` takes about 70 bytes, a quarter of `sizeof(block)` and without
-/// its heap parts. Records go into 1 MiB chunks, so the store grows without copying.
+/// its heap parts. Records go into 1 MiB chunks, so the store grows without copying: a record
+/// that does not fit the rest of the last chunk starts a new one, of its own size if it is
+/// larger than a chunk.
 /// `replay` gives back blocks equal (`==`) to those stored, except:
 /// - `where.file` is the store's file name (one per program, not one per block);
 /// - `text` is dropped where the caller asks (`keep_text`), for blocks whose consumer never
@@ -30,14 +32,19 @@ namespace kin5::program {
 /// The blocks of one program as compact records, replayed in the order stored.
 class block_store {
  public:
-  explicit block_store(std::string file) : file_(std::move(file)) {}
+  /// Bytes of a chunk, unless a record needs more.
+  static constexpr std::size_t default_chunk_bytes = std::size_t{1} << 20;
+
+  explicit block_store(std::string file, std::size_t chunk_bytes = default_chunk_bytes)
+      : file_(std::move(file)), chunk_bytes_(std::max<std::size_t>(chunk_bytes, 1)) {}
 
   /// Appends `b` (without its text unless `keep_text`).
   void push(const block& b, bool keep_text = true) {
     encode(b, keep_text);
     record_.resize(static_cast<std::size_t>(write_ - record_.data()));
-    if (chunks_.empty() || chunk_size - used_ < record_.size()) {
-      chunks_.push_back(std::make_unique<unsigned char[]>(std::max(chunk_size, record_.size())));
+    if (chunks_.empty() || capacity_ - used_ < record_.size()) {  // used_ <= capacity_ always
+      capacity_ = std::max(chunk_bytes_, record_.size());
+      chunks_.push_back(std::make_unique<unsigned char[]>(capacity_));
       sizes_.push_back(0);
       used_ = 0;
     }
@@ -64,7 +71,9 @@ class block_store {
   }
 
   std::size_t size() const { return count_; }
-  /// Bytes held by the records (chunks are allocated 1 MiB at a time).
+  /// Chunks allocated so far.
+  std::size_t chunks() const { return chunks_.size(); }
+  /// Bytes held by the records (chunks are allocated a chunk at a time).
   std::size_t bytes() const {
     std::size_t n = 0;
     for (std::size_t s : sizes_) n += s;
@@ -72,8 +81,6 @@ class block_store {
   }
 
  private:
-  static constexpr std::size_t chunk_size = std::size_t{1} << 20;
-
   // One bit per optional field or flag, in the order the fields follow the flags.
   enum flag : std::uint32_t {
     has_text = 1u << 0, has_number = 1u << 1, has_begin = 1u << 2, has_end = 1u << 3, has_comment = 1u << 4,
@@ -88,7 +95,8 @@ class block_store {
   std::string file_;
   std::vector<std::unique_ptr<unsigned char[]>> chunks_;
   std::vector<std::size_t> sizes_;
-  std::size_t used_ = 0, count_ = 0;
+  std::size_t chunk_bytes_;
+  std::size_t capacity_ = 0, used_ = 0, count_ = 0;  // of the last chunk: its size, bytes used
   std::vector<unsigned char> record_;  // the record being built
   unsigned char* write_ = nullptr;     // where `put` writes in it
 
@@ -175,13 +183,17 @@ class block_store {
     set(b.machine_coordinates, machine_coordinates);
     set(!b.kept_words.empty(), has_kept);
     set(b.passthrough, passthrough);
-    // An upper bound of the record's size: the fixed part, then the strings and lists.
-    std::size_t size = 4 + 10 + 10 + 8 + 8 + 8 + 8 * 6 + 24 + 4 + 24 + 8 + 8 + 3 * 10;
-    if (flags & has_text) size += 10 + b.text.size();
+    // An upper bound of the record's size: the fixed part, then the strings and lists (a
+    // LEB128 size takes at most 10 bytes).
+    constexpr std::size_t leb = 10;
+    std::size_t size = sizeof flags + 2 * leb + sizeof(long long) + sizeof(feed_unit) + sizeof(long long) +
+                       sizeof(double) + sizeof(motion_kind) + 6 * sizeof(double) + sizeof(vec3) + sizeof(arc_plane) +
+                       sizeof(vec3) + sizeof(double) + sizeof(double) + leb;
+    if (flags & has_text) size += leb + b.text.size();
     for (const auto* s : {&b.program_begin, &b.program_end, &b.comment})
-      if (*s) size += 10 + (*s)->size();
-    size += 10 + 4 * b.m_codes.size();
-    for (const auto& w : b.kept_words) size += 10 + w.size();
+      if (*s) size += leb + (*s)->size();
+    size += leb + sizeof(int) * b.m_codes.size();
+    for (const auto& w : b.kept_words) size += leb + w.size();
     record_.resize(size);
     write_ = record_.data();
     put(flags);

@@ -125,3 +125,86 @@ TEST_CASE("records that do not fit the rest of a chunk start a new one, however 
   store.replay([&](const block& b) { CHECK(b == in[k++]); });
   CHECK(k == in.size());
 }
+
+namespace {
+
+/// A block whose record is exactly `bytes` long (at least the record of its empty comment):
+/// a comment of the right length, found from the record size of the empty one.
+block block_of_record_size(std::size_t bytes, std::size_t line) {
+  block b;
+  b.where = {"c.mpf", line, 1};
+  b.comment = std::string();
+  block_store probe("c.mpf");
+  probe.push(b);
+  const std::size_t empty = probe.bytes();  // the comment's size takes one byte in it
+  if (bytes <= empty) return b;
+  const auto leb = [](std::size_t n) {
+    std::size_t k = 1;
+    while (n >>= 7) ++k;
+    return k;
+  };
+  std::size_t length = bytes - empty + 1;  // record = empty - 1 + leb(length) + length
+  while (length > 0 && empty - 1 + leb(length) + length > bytes) --length;
+  b.comment = std::string(length, 'c');
+  return b;
+}
+
+}  // namespace
+
+TEST_CASE("records of any size, on either side of every chunk boundary and in any order") {
+  rc::prop("a small chunk; sizes relative to the space left, to the chunk, or small", [] {
+    const auto chunk = *rc::gen::inRange<std::size_t>(40, 600);
+    const auto n = *rc::gen::inRange<std::size_t>(1, 40);
+    block_store store("c.mpf", chunk);
+    std::vector<block> in;
+    // The store's rule as a model: a record that does not fit what is left of the last chunk
+    // starts a new chunk, of max(chunk, record) bytes.
+    std::size_t chunks = 0, capacity = 0, used = 0, total = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto d = *rc::gen::inRange<long>(-3, 4);
+      const std::size_t left = chunks ? capacity - used : 0;
+      const std::size_t base = *rc::gen::element(left, chunk, 2 * chunk, chunk / 2, std::size_t{0}, 5 * chunk);
+      const auto wanted = static_cast<std::size_t>(std::max<long>(1, static_cast<long>(base) + d));
+      in.push_back(block_of_record_size(wanted, k + 1));
+      const std::size_t before = store.bytes();
+      store.push(in.back());
+      const std::size_t record = store.bytes() - before;
+      if (chunks == 0 || capacity - used < record) capacity = std::max(chunk, record), used = 0, ++chunks;
+      used += record;
+      total += record;
+      RC_ASSERT(store.chunks() == chunks);
+    }
+    RC_ASSERT(store.bytes() == total);
+    std::size_t k = 0;
+    store.replay([&](const block& b) {
+      RC_ASSERT(k < in.size());
+      RC_ASSERT(b == in[k]);
+      ++k;
+    });
+    RC_ASSERT(k == in.size());
+  });
+}
+
+TEST_CASE("a record larger than a chunk, then small ones: each after it starts a chunk of its own") {
+  // The 1 MiB chunks of the tool: a 1.1 MB comment line first, then ordinary blocks.
+  block_store store("y.mpf");
+  std::vector<block> in;
+  block huge;
+  huge.where = {"y.mpf", 1, 1};
+  huge.comment = std::string(1100000, 'c');
+  in.push_back(huge);
+  store.push(huge);
+  CHECK(store.chunks() == 1);
+  for (std::size_t k = 0; k < 3; ++k) {
+    block b;
+    b.where = {"y.mpf", k + 2, 1};
+    b.axes.x_mm = static_cast<double>(k);
+    b.comment = std::string(100, 'd');
+    in.push_back(b);
+    store.push(b);
+  }
+  CHECK(store.chunks() == 2);
+  std::size_t k = 0;
+  store.replay([&](const block& b) { CHECK(b == in[k++]); });
+  CHECK(k == in.size());
+}
