@@ -2,13 +2,16 @@
 /// Numbers as NC programs write them: an optional sign (`+` or `-`), digits, an optional
 /// decimal point with optional digits on either side (`-450.`, `.5`, `+34.983`). No exponents,
 /// no `inf`/`nan`, and magnitudes up to `max_magnitude`. Writing uses the shortest fixed form
-/// with a given number of decimals and no trailing zeros beyond them.
+/// with a given number of decimals and no trailing zeros beyond them, and refuses (throws
+/// `number_out_of_range`, before writing anything) what reading would refuse: so every number
+/// written reads back.
 #pragma once
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -19,6 +22,19 @@ namespace kin5::program {
 
 /// Largest magnitude accepted in an NC number (1e9 mm is a kilometre of travel and then some).
 inline constexpr double max_magnitude = 1e9;
+
+/// Shortest tool-axis vector (I J K, TX TY TZ, GOTO's i,j,k) taken as a direction. Components
+/// are written to about 7 decimals; below this length their rounding turns the direction by
+/// more than 1e-4 rad, and a vector such as (1e-28, 0, 0) is no direction at all.
+inline constexpr double min_direction_length = 1e-3;
+
+/// Whether the components `i, j, k` of a written tool-axis vector make a direction.
+inline bool is_direction(double i, double j, double k) {
+  const double m = std::max({std::abs(i), std::abs(j), std::abs(k)});  // scaled: no underflow
+  if (!(m > 0.0) || !std::isfinite(m)) return false;
+  const double x = i / m, y = j / m, z = k / m;
+  return m * std::sqrt(x * x + y * y + z * z) >= min_direction_length;
+}
 
 /// Why a number could not be read.
 enum class number_error { none, empty, not_a_number, too_large };
@@ -63,13 +79,33 @@ inline parsed_number read_number(std::string_view s) {
   return out;
 }
 
-/// Appends `value` to `out` in fixed notation with at most `decimals` decimals (0 to 12),
-/// trailing zeros and a trailing point removed, `-0` written as `0`; with `plus`, a `+` before
-/// a value that is not negative (Heidenhain's `X+34.983`). No allocation beyond `out`'s growth.
+/// A number that no NC program can hold: not finite, or larger in magnitude than
+/// `max_magnitude`. A `std::invalid_argument`, as the writers' other refusals.
+struct number_out_of_range : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+/// Whether `value` can be written as an NC number: finite, and |value| ≤ `max_magnitude` (its
+/// rounding to any number of decimals is then within the bound too, 1e9 being exact).
+constexpr bool writable(double value) { return value == value && value >= -max_magnitude && value <= max_magnitude; }
+
+/// Appends `value` to `out` in fixed notation with at most `decimals` decimals (clamped to 0 to
+/// 12), trailing zeros and a trailing point removed, `-0` written as `0`; with `plus`, a `+`
+/// before a value that is not negative (Heidenhain's `X+34.983`). Throws `number_out_of_range`,
+/// `out` unchanged, for a value that is not `writable`. No allocation beyond `out`'s growth.
 inline void append_number(std::string& out, double value, int decimals, bool plus = false) {
-  char buf[64];
+  if (!writable(value)) {
+    char text[32];
+    const auto shown = std::to_chars(text, text + sizeof text, value);  // shortest form: fits 32
+    throw number_out_of_range("the number " + std::string(text, shown.ptr) +
+                              " cannot be written in an NC program (finite, magnitude at most 1e9)");
+  }
+  decimals = std::clamp(decimals, 0, 12);
+  // Sign, 10 digits up to 1e9, point, 12 decimals, and the '+' in front: 25 of the 32 bytes.
+  char buf[32];
   char* const first = buf + 1;  // room for a leading '+'
   const auto r = std::to_chars(first, buf + sizeof buf, value, std::chars_format::fixed, decimals);
+  if (r.ec != std::errc{}) throw number_out_of_range("a number too long to write");  // not reached
   char* end = r.ptr;
   if (std::find(first, end, '.') != end) {
     while (end > first && end[-1] == '0') --end;
@@ -82,7 +118,7 @@ inline void append_number(std::string& out, double value, int decimals, bool plu
 }
 
 /// `value` in fixed notation with at most `decimals` decimals, trailing zeros and a trailing
-/// point removed, `-0` written as `0`.
+/// point removed, `-0` written as `0`; throws `number_out_of_range` as `append_number`.
 inline std::string format_number(double value, int decimals) {
   std::string s;
   append_number(s, value, decimals);

@@ -1,9 +1,13 @@
 // NC numbers: `read_number` reads the longest `[+-]digits[.digits]` (at least one digit) at the
 // start of any text, with the value strtod gives for it; `append_number` writes what
 // `std::to_chars` writes, trimmed, and reads back to the value rounded to its decimals.
+#include <algorithm>
+#include <bit>
 #include <clocale>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 #include <catch2/catch.hpp>
@@ -89,5 +93,53 @@ TEST_CASE("append_number writes to_chars' digits, trimmed, and reads back") {
     std::string plus;
     append_number(plus, v, decimals, true);
     RC_ASSERT(plus == (want.front() == '-' ? want : "+" + want));
+  });
+}
+
+namespace {
+
+/// Any double, by its bits: huge, tiny, subnormal, ±0, ±inf and NaNs with any payload included.
+rc::Gen<double> any_bits_double() {
+  return rc::gen::oneOf(
+      rc::gen::map(rc::gen::arbitrary<std::uint64_t>(), [](std::uint64_t bits) { return std::bit_cast<double>(bits); }),
+      rc::gen::element(0.0, -0.0, max_magnitude, -max_magnitude, std::nextafter(max_magnitude, 2e9),
+                       std::nextafter(-max_magnitude, -2e9), 999999999.99999994, 1e62, 1e100, 1e300,
+                       std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
+                       std::numeric_limits<double>::min(), std::numeric_limits<double>::denorm_min(),
+                       -std::numeric_limits<double>::denorm_min(), 1e-80, std::numeric_limits<double>::infinity(),
+                       -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(),
+                       -std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::signaling_NaN()),
+      rc::gen::map(rc::gen::arbitrary<double>(), [](double x) { return x * 1e9; }));
+}
+
+}  // namespace
+
+TEST_CASE("append_number, for every double: the NC number read_number reads back, or a refusal with nothing written") {
+  rc::prop("any bits, any decimals", [] {
+    const double v = *any_bits_double();
+    const int decimals = *rc::gen::inRange(-3, 20);
+    const bool plus = *rc::gen::arbitrary<bool>();
+    std::string out = "X";
+    bool refused = false;
+    try {
+      append_number(out, v, decimals, plus);
+    } catch (const number_out_of_range&) {
+      refused = true;
+    }
+    const bool holdable = std::isfinite(v) && std::abs(v) <= max_magnitude;
+    RC_ASSERT(refused == !holdable);
+    if (refused) {
+      RC_ASSERT(out == "X");
+      return;
+    }
+    // What was written is one whole NC number, the value rounded to the clamped decimals.
+    const std::string text = out.substr(1);
+    const parsed_number back = read_number(text);
+    RC_ASSERT(back.error == number_error::none);
+    RC_ASSERT(back.length == text.size());
+    const int d = std::clamp(decimals, 0, 12);
+    RC_ASSERT(std::abs(back.value - v) <= 0.5 * std::pow(10.0, -d) * (1 + 1e-9) + 1e-15 * std::abs(v));
+    for (char c : text) RC_ASSERT((is_digit(c) || c == '.' || c == '-' || c == '+'));
+    RC_ASSERT(text.size() <= 25);
   });
 }
