@@ -169,7 +169,9 @@ class statement_reader {
     if (!good) return;
     const double unit_mm = inch_ ? mm_per_inch : 1.0;
     b.axes.x_mm = v[0] * unit_mm, b.axes.y_mm = v[1] * unit_mm, b.axes.z_mm = v[2] * unit_mm;
-    if (args_.size() == 6) b.axes.tool_axis = vec3{v[3], v[4], v[5]};
+    if (args_.size() == 6 && !is_direction(v[3], v[4], v[5]))
+      error(args_[3].offset, "tool-axis vector shorter than 0.001 is not a direction");
+    else if (args_.size() == 6) b.axes.tool_axis = vec3{v[3], v[4], v[5]};
   }
 
   /// `FEDRAT/[MMPM,|IPM,|INVERS,]f` (f alone: per minute in the program's unit).

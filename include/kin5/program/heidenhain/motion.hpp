@@ -164,7 +164,8 @@ class motion_reader : public word_checks {
     } else if (key == "DR" && arc_ && w.sign && !direction_) {
       direction_ = w.sign;
     } else if (key == "F") {
-      if (value_ok(w)) b_.feed = *w.value;
+      if (b_.feed) error(w.pos, "word 'F' given twice");
+      else if (value_ok(w)) b_.feed = *w.value;
     } else if (key == "FMAX" && bare) {
       b_.feed_rapid = true;
       b_.motion = arc_ ? b_.motion : motion_kind::rapid;
@@ -200,8 +201,11 @@ class motion_reader : public word_checks {
     axis_words& ax = b_.axes;
     ax.x_mm = axis_[0], ax.y_mm = axis_[1], ax.z_mm = axis_[2];
     ax.a_deg = axis_[3], ax.b_deg = axis_[4], ax.c_deg = axis_[5];
-    if (tool_axis_[0] || tool_axis_[1] || tool_axis_[2])
-      ax.tool_axis = vec3{tool_axis_[0].value_or(0.0), tool_axis_[1].value_or(0.0), tool_axis_[2].value_or(0.0)};
+    if (tool_axis_[0] || tool_axis_[1] || tool_axis_[2]) {
+      const vec3 t{tool_axis_[0].value_or(0.0), tool_axis_[1].value_or(0.0), tool_axis_[2].value_or(0.0)};
+      if (is_direction(t.x, t.y, t.z)) ax.tool_axis = t;
+      else error(i, "tool-axis vector shorter than 0.001 is not a direction");
+    }
     if (!arc_) return;
     b_.motion = direction_ == '-' ? motion_kind::arc_cw : motion_kind::arc_ccw;
     if (!direction_) error(i, "arc needs a direction (DR+ or DR-)");

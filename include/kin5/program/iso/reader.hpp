@@ -21,6 +21,7 @@
 
 #include "../block.hpp"
 #include "../lexing.hpp"
+#include "../number.hpp"
 #include "../text.hpp"
 #include "../transmission.hpp"
 #include "../units.hpp"
@@ -293,14 +294,19 @@ class reader {
 
   /// I J K and R: arc data, or the G43.5 tool-axis vector.
   void centre_or_vector(block& b, line_words& l) {
-    const bool arc = !l.g43_5 && !b.machine_coordinates &&
-                     (state_.motion == motion_kind::arc_cw || state_.motion == motion_kind::arc_ccw);
+    const bool arc_motion = !b.machine_coordinates &&
+                            (state_.motion == motion_kind::arc_cw || state_.motion == motion_kind::arc_ccw);
+    const bool arc = !l.g43_5 && arc_motion;
     if (l.suppress) return;
-    if (l.any_ijk() && !arc && !(state_.vector_tcp || l.g43_5)) {
+    if (arc_motion && l.g43_5 && b.moves() && !l.radius) {  // I J K are G43.5's: no centre
+      error(b.where.column, "arc needs I, J, K or R (in a G43.5 block I, J, K are the tool axis)");
+    } else if (l.any_ijk() && !arc && !(state_.vector_tcp || l.g43_5)) {
       const word* w = l.first_ijk();
       error(w->column, std::string("word '") + w->letter + "' needs G2, G3 or G43.5");
     } else if (l.any_ijk() && !arc) {
       if (!l.ijk[0] || !l.ijk[1] || !l.ijk[2]) error(l.first_ijk()->column, "tool-axis vector needs I, J and K");
+      else if (!is_direction(*l.ijk[0], *l.ijk[1], *l.ijk[2]))
+        error(l.first_ijk()->column, "tool-axis vector shorter than 0.001 is not a direction");
       else b.axes.tool_axis = vec3{*l.ijk[0], *l.ijk[1], *l.ijk[2]};
     } else if (arc && (l.any_ijk() || l.radius || b.moves())) {
       b.arc = arc_data(b, l);

@@ -54,6 +54,7 @@ inline void tool_axis_vector(line_parse& p, std::vector<diagnostic>& errors) {
   const source_location at{p.b.where.file, p.b.where.line, p.vector_column + 1};
   if (!v[0] || !v[1] || !v[2]) errors.push_back({at, "tool-axis vector needs A3, B3 and C3"});
   else if (p.b.axes.has_rotary()) errors.push_back({at, "rotary axes and a tool-axis vector in one block"});
+  else if (!is_direction(*v[0], *v[1], *v[2])) errors.push_back({at, "tool-axis vector shorter than 0.001 is not a direction"});
   else p.b.axes.tool_axis = vec3{*v[0], *v[1], *v[2]};
 }
 
