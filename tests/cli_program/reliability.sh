@@ -1,14 +1,16 @@
 #!/bin/sh
-# End-to-end tests of how the program commands write OUT (tools/kin5/output_file.hpp).
+# End-to-end regression tests of the program commands under hostile input and surroundings
+# (docs/reliability.md).
 #
-#   output_file.sh KIN5_EXE EXAMPLES_DIR TEST_NAME
+#   reliability.sh KIN5_EXE EXAMPLES_DIR TEST_NAME
 #
-# Each test runs the built tool in a fresh directory with OUT of one kind (regular file,
-# symbolic link, hard link, read-only file, FIFO, character device, stdout) or under one kind
-# of interruption (a signal, a file-size limit, a closed pipe), and checks the exit code, the
-# message, what OUT holds afterwards, and that no temporary file is left. Signals are reset to
-# their default action for the tool (`env --default-signal`), so that a tool which relies on
-# inheriting them ignored is caught.
+# How OUT is written (tools/kin5/output_file.hpp): each test runs the built tool in a fresh
+# directory with OUT of one kind (regular file, symbolic link, hard link, read-only file, FIFO,
+# character device, stdout) or under one kind of interruption (a signal, a file-size limit, a
+# closed pipe), and checks the exit code, the message, what OUT holds afterwards, and that no
+# temporary file is left. Signals are reset to their default action for the tool
+# (`env --default-signal`), so that a tool which relies on inheriting them ignored is caught.
+# Then inputs and options that once corrupted memory, wrote garbage or were accepted silently.
 set -u
 
 exe=$1 examples=$2 name=$3
@@ -183,8 +185,50 @@ case "$name" in
       done
     done
     ;;
+  huge-record)
+    # A 1.1 MB comment line, larger than a chunk of the block store, then ordinary blocks: the
+    # record after it once went past the end of the chunk (a crash, or a corrupt heap and exit 0).
+    {
+      printf 'N10 TRAORI\nN20 G1 X1 Y2 Z3 A-10 B20 F100 ; '
+      head -c 1100000 /dev/zero | tr '\0' c
+      printf '\nN30 G1 X2 Y2 Z3\nN40 TRAFOOF\nN50 M30\n'
+    } >y.mpf
+    run 0 $translate -o y.h y.mpf
+    grep -q '5 blocks read, 5 written' err || { report "summary"; show err; }
+    [ "$(grep -c '^[0-9]* L ' y.h)" = 2 ] || report "the two moves not written"
+    grep -q "$(head -c 1000 /dev/zero | tr '\0' c)" y.h || report "the long comment not kept"
+    ;;
+  number-range)
+    # Numbers no NC program can hold are refused, never written as garbage: a setup offset
+    # beyond 1e9 mm (exit 1), and an inverse-time F of 1/(1e-81 mm / 100 mm/min) (exit 2,
+    # naming the block).
+    run 1 $translate --setup-offset=1e100,0,0 -o o.h "$example"
+    grep -q -- '--setup-offset: each number must be within' err || { report "no offset message"; show err; }
+    run 1 $translate --setup-offset=1e20,0,0 -o o.h "$example"
+    zeros=$(awk 'BEGIN { while (n++ < 80) printf "0" }')
+    printf 'N10 TRAORI\nN20 G1 X0 Y0 Z0 A-10 B20 F100\nN30 G1 X0.%s1\nN40 M30\n' "$zeros" >tiny.mpf
+    run 2 $translate --to-dialect iso --feed inverse-time -o o.h tiny.mpf
+    grep -q "^tiny.mpf:3:1: error: cannot write the program as iso: the number 1e+83 cannot be written" err || { report "no number message"; show err; }
+    [ -e o.h ] && report "o.h written"
+    ;;
+  setup-angle)
+    # A setup angle that is not a finite number is a bad argument, as a bad offset is.
+    for angle in nan inf -inf; do
+      run 1 $translate --setup-axis 0,0,1 --setup-angle "$angle" -o o.h "$example"
+      grep -q -- '--setup-angle must be a finite number' err || { report "$angle: no message"; show err; }
+    done
+    [ -e o.h ] && report "o.h written"
+    ;;
+  error-cap)
+    # A long line of bad words: the first 100 errors, then their count, not 20000 lines.
+    { printf 'N10 TRAORI\nN20 G1'; awk 'BEGIN { while (n++ < 20000) printf " X1.2." }'; printf '\nN30 M30\n'; } >bad.mpf
+    run 2 $translate -o o.h bad.mpf
+    [ "$(grep -c ': error: ' err)" = 100 ] || report "$(grep -c ': error: ' err) errors printed, expected 100"
+    grep -q '^kin5 translate: 19900 more errors not shown' err || { report "no count of the rest"; tail -n 3 err >&2; }
+    grep -q '^kin5 translate: 20000 errors in bad.mpf' err || report "total not given"
+    ;;
   *)
-    echo "output_file.sh: unknown test '$name'" >&2
+    echo "reliability.sh: unknown test '$name'" >&2
     exit 2
     ;;
 esac

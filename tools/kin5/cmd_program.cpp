@@ -19,6 +19,7 @@
 // non-zero exit OUT is neither created nor changed (output_file.hpp: a temporary file linked or
 // renamed into place when complete; FIFOs, devices and stdout get the text only then).
 #include <algorithm>
+#include <cmath>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -33,6 +34,7 @@
 #include <vector>
 
 #include <kin5/program/io.hpp>
+#include <kin5/program/number.hpp>
 #include <kin5/translate/by_id.hpp>
 #include <kin5/translate/stream.hpp>
 
@@ -103,22 +105,38 @@ void collect(std::vector<message>& to, const std::vector<prog::diagnostic>& from
   for (const auto& d : from) to.push_back({severity, d});
 }
 
+/// Messages of one severity printed by one `print_in_source_order`; the rest are counted.
+constexpr std::size_t max_shown = 100;
+
 /// Prints `messages` in source order (line, then column; ties in the order collected), each
 /// as `FILE:LINE:COL: severity: text`, the format compilers use (`FILE: severity: text` for a
-/// message about the whole file).
-void print_in_source_order(std::vector<message> messages) {
+/// message about the whole file): the first `max_shown` of each severity, then one line with
+/// the count of those not shown.
+void print_in_source_order(std::vector<message> messages, const std::string& prefix) {
   std::stable_sort(messages.begin(), messages.end(), [](const message& a, const message& b) {
     const auto& l = a.diagnostic.where;
     const auto& r = b.diagnostic.where;
     return l.line != r.line ? l.line < r.line : l.column < r.column;
   });
+  constexpr std::string_view severities[] = {"error", "warning", "note"};
+  std::size_t shown[3] = {}, hidden[3] = {};
   for (const auto& m : messages) {
+    const auto k = static_cast<std::size_t>(std::find(severities, severities + 2, m.severity) - severities);
+    if (shown[k] == max_shown) {
+      ++hidden[k];
+      continue;
+    }
+    ++shown[k];
     const auto& where = m.diagnostic.where;
     if (where.line == 0)  // about the whole file
       std::cerr << where.file.str() << ": " << m.severity << ": " << m.diagnostic.message << '\n';
     else
       std::cerr << m.diagnostic.to_string(m.severity) << '\n';
   }
+  for (std::size_t k = 0; k < 3; ++k)
+    if (hidden[k])
+      std::cerr << prefix << hidden[k] << " more " << severities[k] << (hidden[k] == 1 ? "" : "s")
+                << " not shown (the first " << max_shown << " are)\n";
 }
 
 /// A note for a block translated on the other solution branch (listed with --verbose).
@@ -181,14 +199,14 @@ int execute(const job& j) {
     std::vector<message> messages;
     collect(messages, run.input.errors, "error");
     collect(messages, run.input.warnings, "warning");
-    print_in_source_order(std::move(messages));
+    print_in_source_order(std::move(messages), prefix);
   }
   if (!run.input.ok()) {
     std::cerr << prefix << run.input.errors.size() << (run.input.errors.size() == 1 ? " error" : " errors") << " in "
               << file << " (read as " << prog::name(dialect) << "); nothing written\n";
     return exit_codes::input_error;
   }
-  const std::optional<std::string>& writer_error = run.writer_error;  // a block the output dialect cannot express
+  const std::optional<prog::diagnostic>& writer_error = run.writer_error;  // a block the output dialect cannot say
   const bool file_failed = run.sink_failed;                            // the output file: `out.error()` says why
 
   const translation& result = translator->result();
@@ -200,7 +218,7 @@ int execute(const job& j) {
     if (j.verbose)
       for (const auto& r : result.reports)
         if (r.match == matchability::other_branch) messages.push_back({"note", other_branch_note(r)});
-    print_in_source_order(std::move(messages));
+    print_in_source_order(std::move(messages), prefix);
   }
   const auto count = [&](matchability m) { return result.per_class[static_cast<std::size_t>(m)]; };
   const std::size_t unreachable = count(matchability::unreachable);
@@ -211,8 +229,9 @@ int execute(const job& j) {
   } else if (unreachable > 0) {
     code = exit_codes::unreachable;
   } else if (writer_error) {
-    std::cerr << prefix << "cannot write the program as " << prog::name(j.output_dialect) << ": " << *writer_error
-              << '\n';
+    prog::diagnostic d = *writer_error;
+    d.message = "cannot write the program as " + std::string(prog::name(j.output_dialect)) + ": " + d.message;
+    std::cerr << d.to_string("error") << '\n';
     code = exit_codes::input_error;
   }
 
@@ -313,13 +332,17 @@ std::optional<rigid_transform> parse_setup(const translate_arguments& a) {
   } else if (!a.setup_axis.empty() || a.setup_angle_deg) {
     const auto axis = parse_list(a.setup_axis, 3);
     if (!axis || !a.setup_angle_deg) return fail("--setup-axis X,Y,Z and --setup-angle DEG go together");
+    if (!std::isfinite(*a.setup_angle_deg)) return fail("--setup-angle must be a finite number of degrees");
     const vec3 axis_source{(*axis)[0], (*axis)[1], (*axis)[2]};
     if (!(norm(axis_source) > 1e-12)) return fail("--setup-axis must not be the zero vector");
+    if (!std::isfinite(norm(axis_source))) return fail("--setup-axis is too long to normalise; scale it down");
     setup.rotation = rotation(normalized(axis_source), to_radians(degrees{*a.setup_angle_deg}));
   }
   if (!a.setup_offset.empty()) {
     const auto offset_mm = parse_list(a.setup_offset, 3);
     if (!offset_mm) return fail("--setup-offset needs 3 numbers (millimetres) separated by commas");
+    for (double v : *offset_mm)  // what an NC program can hold; no controller takes more
+      if (!prog::writable(v)) return fail("--setup-offset: each number must be within ±1e9 mm");
     setup.translation_mm = {(*offset_mm)[0], (*offset_mm)[1], (*offset_mm)[2]};
   }
   return setup;

@@ -24,6 +24,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "../program/block.hpp"
 #include "../program/block_store.hpp"
@@ -54,7 +55,9 @@ using block_source = std::function<void(program::read_result& diagnostics, const
 /// What a streamed run found besides the translator's own result.
 struct stream_result {
   program::read_result input;              ///< the reader's errors and warnings (`parsed` stays empty)
-  std::optional<std::string> writer_error; ///< the first block the output dialect cannot say
+  /// The first block the output dialect cannot say (a construct, or a number no NC program can
+  /// hold), at that block.
+  std::optional<program::diagnostic> writer_error;
   bool sink_failed = false;                ///< `flush_if_full` failed
   /// Whether the whole output reached the sink: no error anywhere.
   bool ok(block_translator& t) const {
@@ -80,8 +83,11 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
     if (run.writer_error || run.sink_failed || !t.result().ok()) return;
     try {
       writer.write(sink.buffer(), o);
-    } catch (const std::invalid_argument& e) {
-      run.writer_error = e.what();
+    } catch (const std::invalid_argument& e) {  // a number or a construct: at its block
+      std::string_view why = e.what();
+      const std::string line = o.where.file.str() + ":" + std::to_string(o.where.line) + ": ";
+      if (why.starts_with(line)) why.remove_prefix(line.size());  // the writer named the block
+      run.writer_error = program::diagnostic{o.where, std::string(why)};
       return;
     }
     run.sink_failed = !sink.flush_if_full();
