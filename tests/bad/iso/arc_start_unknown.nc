@@ -1,0 +1,3 @@
+; expect: 3:11: arc centre needs a known start point
+G43.4 H1
+G2 X10 Y0 I5 J0 F100
