@@ -1,7 +1,8 @@
 /// @file reach/program_report.hpp
 /// What a target machine makes of one program: its motion blocks per class, the unreachable
 /// ones as runs of lines with their worst gap, the rotary travel the target needs (the
-/// translator's own branch plan), and the tool-tip range in the target's workpiece frame.
+/// translator's own branch plan), the tool-tip range in the target's workpiece frame, and the
+/// slide values (G7) each reachable block needs against the target's linear travel.
 /// Classes and gaps come from `translate` itself, so the report and a translation never
 /// disagree; the tool axes come from `reverse` (one per motion block written as a GOTO).
 /// @code
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "../kinematics/branch_plan.hpp"
+#include "../kinematics/inverse_pose.hpp"
 #include "../translate/translate.hpp"
 #include "pair_geometry.hpp"
 #include "setup_search.hpp"
@@ -37,6 +39,24 @@ struct axis_span {
   double travel_lo_deg = 0.0, travel_hi_deg = 0.0;
 };
 
+/// The range of one target linear axis over the reachable blocks, mm, and its travel.
+struct slide_span {
+  char letter = 0;
+  double lo_mm = 0.0, hi_mm = 0.0;
+  double travel_lo_mm = 0.0, travel_hi_mm = 0.0;
+  bool exceeded() const { return lo_mm < travel_lo_mm - 1e-6 || hi_mm > travel_hi_mm + 1e-6; }
+};
+
+/// One motion block on the target: its tip (target workpiece frame) and, when reachable, the
+/// planned rotary angles (radians) and the slide values X, Y, Z they need (G7), mm.
+struct block_on_target {
+  std::size_t line = 0;
+  vec3 tip_mm{};
+  bool reachable = false;
+  std::array<double, 2> rotary_rad{};
+  vec3 slides_mm{};
+};
+
 /// One program on one target under one setup.
 struct program_report {
   std::string file, from, to;
@@ -50,6 +70,15 @@ struct program_report {
   vec3 tip_lo_mm{}, tip_hi_mm{};                  ///< tool tips in the target's workpiece frame, mm
   std::vector<program::diagnostic> other_errors;  ///< what else stops a translation
   std::vector<vec3> source_axes;            ///< tool axes of the motion blocks, source frame
+  run_inputs target_inputs;                 ///< tool length and work offset on the target
+  std::vector<block_on_target> blocks;      ///< the motion blocks, as `source_axes`
+  std::vector<slide_span> linear;           ///< X, Y, Z over the reachable blocks (none reachable: empty)
+  /// Whether some slide leaves its travel.
+  bool linear_exceeded() const {
+    for (const auto& s : linear)
+      if (s.exceeded()) return true;
+    return false;
+  }
   std::size_t motion_blocks() const { return per_class[0] + per_class[1] + per_class[2]; }
 };
 
@@ -92,12 +121,41 @@ std::vector<axis_span> spans_of(const rotary_path<To>& path) {
   return out;
 }
 
+/// The slide values of each reachable block with the planned angles (G7), and their ranges.
+template <machine To>
+void place_slides(program_report& out, const rotary_path<To>& path) {
+  std::array<double, 3> lo{}, hi{};
+  bool any = false;
+  for (std::size_t i = 0; i < out.blocks.size(); ++i) {
+    auto& b = out.blocks[i];
+    if (!path.angles[i]) continue;
+    b.reachable = true;
+    for (std::size_t k = 0; k < rotary_count<To>; ++k) b.rotary_rad[k] = (*path.angles[i])[k].value;
+    b.slides_mm = linear_axes_for(To::model, *path.angles[i], out.target_inputs.work_offset.map_point(b.tip_mm),
+                                  out.target_inputs);
+    const std::array<double, 3> x{b.slides_mm.x, b.slides_mm.y, b.slides_mm.z};
+    for (std::size_t k = 0; k < 3; ++k) lo[k] = any ? std::min(lo[k], x[k]) : x[k], hi[k] = any ? std::max(hi[k], x[k]) : x[k];
+    any = true;
+  }
+  if (!any) return;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const linear_axis& a = To::linear[k];
+    out.linear.push_back({to_char(a.letter), lo[k], hi[k], a.travel.lower_mm, a.travel.upper_mm});
+  }
+}
+
 }  // namespace detail
 
-/// The report of program `nc` (of machine From) on machine To under `setup`.
+/// The report of program `nc` (of machine From) on machine To under `setup`; `target_inputs`
+/// place the slides: the tool length, and where the workpiece frame sits on the target (the
+/// translation of its work offset; how the part is turned is the setup's rotation, so the
+/// offset's rotation is not used).
 template <machine From, machine To>
-program_report make_program_report(const program::program& nc, const rigid_transform& setup, bool is_default_setup) {
+program_report make_program_report(const program::program& nc, const rigid_transform& setup, bool is_default_setup,
+                                   const run_inputs& target_inputs = {}) {
   program_report out;
+  out.target_inputs = target_inputs;
+  out.target_inputs.work_offset.rotation = mat3::identity();
   out.file = nc.file, out.from = From::id, out.to = To::id;
   out.setup = setup, out.default_setup = is_default_setup;
   translate_options options;
@@ -121,10 +179,12 @@ program_report make_program_report(const program::program& nc, const rigid_trans
     out.tip_lo_mm = out.has_tips ? vec3{std::min(out.tip_lo_mm.x, tip.x), std::min(out.tip_lo_mm.y, tip.y), std::min(out.tip_lo_mm.z, tip.z)} : tip;
     out.tip_hi_mm = out.has_tips ? vec3{std::max(out.tip_hi_mm.x, tip.x), std::max(out.tip_hi_mm.y, tip.y), std::max(out.tip_hi_mm.z, tip.z)} : tip;
     out.has_tips = true;
+    out.blocks.push_back({b.where.line, tip});
   }
   const rotary_path<To> path = plan_rotary_path<To>(target_axes);
   out.rotary = detail::spans_of<To>(path);
   out.rotary_travel_rad = path.travel_rad;
+  detail::place_slides<To>(out, path);
   return out;
 }
 
@@ -137,20 +197,23 @@ struct chosen_setup {
   std::string first_reason;     ///< the first error of the first one passed over
 };
 
-/// Tries `search.ranked` in order (offset: the pair's default translation, mm).
+/// Tries `search.ranked` in order (offset: the pair's default translation, mm): the first with
+/// which the program translates and every slide stays within its travel.
 template <machine From, machine To>
 std::optional<chosen_setup> choose_setup(const program::program& nc, const setup_search_result& search,
-                                         const vec3& offset_mm) {
+                                         const vec3& offset_mm, const run_inputs& target_inputs = {}) {
   chosen_setup out;
   for (const auto& c : search.ranked) {
-    program_report r = make_program_report<From, To>(nc, {c.rotation, offset_mm}, false);
-    if (r.unreachable.empty() && r.other_errors.empty()) {
+    program_report r = make_program_report<From, To>(nc, {c.rotation, offset_mm}, false, target_inputs);
+    if (r.unreachable.empty() && r.other_errors.empty() && !r.linear_exceeded()) {
       out.candidate = c;
       out.report = std::move(r);
       return out;
     }
     if (out.passed_over++ == 0)
-      out.first_reason = r.other_errors.empty() ? "blocks unreachable" : r.other_errors.front().message;
+      out.first_reason = !r.other_errors.empty() ? r.other_errors.front().message
+                         : r.unreachable.empty()   ? "a slide leaves its travel"
+                                                   : "blocks unreachable";
   }
   return std::nullopt;
 }

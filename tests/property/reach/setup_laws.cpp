@@ -140,3 +140,45 @@ TEST_CASE("Program report: classes, unreachable runs with their gap, planned tra
   // Tool tips through (K11): (x_d, y_d, z_d) = (-x_s, z_s, y_s).
   CHECK((r.tip_lo_mm.x == Approx(-5.0) && r.tip_hi_mm.x == Approx(0.0) && r.tip_lo_mm.y == Approx(50.0)));
 }
+
+TEST_CASE("Program report: the slides of each reachable block put the tool back on its tip (G6)", "[reach][setup]") {
+  // The same wall; tool length 120 mm, the workpiece frame 30 mm above and beside the origin.
+  const std::string text =
+      "N10 G90 G17 G54\nN20 TRAORI\nN30 G1 X0 Y0 Z50 A-45 B30 F1000\nN40 G1 X1 A5\nN50 G1 X2 A6\n"
+      "N60 G1 X3 A-30\nN70 G1 X4 A-100\nN80 G1 X5 A20\nN90 TRAFOOF\nN100 M30\n";
+  const auto in = program::read(program::dialect::siemens, text, "wall.mpf");
+  REQUIRE(in.ok());
+  const rigid_transform setup = default_setup<sajo_12000p, dmu_80p>();
+  run_inputs inputs{.tool_length_mm = 120.0};
+  inputs.work_offset.translation_mm = {30.0, -30.0, -200.0};
+  const auto r = reach::make_program_report<sajo_12000p, dmu_80p>(in.parsed, setup, true, inputs);
+  REQUIRE(r.blocks.size() == 6);
+  REQUIRE(r.linear.size() == 3);
+  std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  std::size_t reachable = 0;
+  for (std::size_t i = 0; i < r.blocks.size(); ++i) {
+    const auto& b = r.blocks[i];
+    INFO("block on line " << b.line);
+    CHECK(b.reachable == inverse<dmu_80p>(setup.rotation * r.source_axes[i]).reachable());
+    if (!b.reachable) continue;
+    ++reachable;
+    // Forward through the whole chain, independent of the (G7) inverse that placed the slides.
+    const auto pose = forward<dmu_80p>({b.slides_mm, {radians{b.rotary_rad[0]}, radians{b.rotary_rad[1]}}}, inputs);
+    CHECK(norm(pose.tip_mm - b.tip_mm) < 1e-9);
+    CHECK(norm(pose.axis - setup.rotation * r.source_axes[i]) < 1e-12);
+    const std::array<double, 3> x{b.slides_mm.x, b.slides_mm.y, b.slides_mm.z};
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], x[k]), hi[k] = std::max(hi[k], x[k]);
+  }
+  CHECK(reachable == 3);
+  for (int k = 0; k < 3; ++k) {
+    CHECK(r.linear[k].letter == "XYZ"[k]);
+    CHECK((r.linear[k].lo_mm == lo[k] && r.linear[k].hi_mm == hi[k]));
+    CHECK(r.linear[k].travel_lo_mm == dmu_80p::linear[k].travel.lower_mm);
+    CHECK(r.linear[k].travel_hi_mm == dmu_80p::linear[k].travel.upper_mm);
+  }
+  // The DMU 80P's Z travel is [-600, 0] mm: a workpiece frame 2 m up puts every block out of it.
+  inputs.work_offset.translation_mm = {0.0, 0.0, 2000.0};
+  const auto high = reach::make_program_report<sajo_12000p, dmu_80p>(in.parsed, setup, true, inputs);
+  CHECK(high.linear_exceeded());
+  CHECK(high.linear[2].lo_mm == Approx(r.linear[2].lo_mm + 2200.0));  // the slides follow the offset
+}
