@@ -53,5 +53,14 @@ run 0 refixtured translate --from sajo-12000p --to dmu-80p --setup-rotation "$ro
 [ -s "$out/flank.h" ] || report "refixtured: nothing written"
 grep -q "7 direct, 0 other-branch, 0 unreachable" "$out/refixtured.err" || report "refixtured: not every block direct"
 
+# The slides (G7) against the DMU 80P's linear travel: a workpiece frame 2 m above the machine's
+# origin puts Z beyond its [-600, 0] mm.
+run 3 flank_placed match --from sajo-12000p --to dmu-80p --program "$dir/flank.mpf" --tool-length 100 --work-offset 0,0,-300
+has flank_placed "Linear travel on dmu-80p"
+has flank_placed "tool length 100.000 mm, work offset (0.000, 0.000, -300.000) mm"
+run 3 flank_high match --from sajo-12000p --to dmu-80p --program "$dir/flank.mpf" --work-offset 0,0,2000
+has flank_high "[-600.000, 0.000] exceeded"
+has flank_high "or a slide leaves its travel"
+
 [ "$fail" = 0 ] && echo "kin5 match: all checks passed"
 exit "$fail"

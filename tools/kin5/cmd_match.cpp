@@ -1,11 +1,14 @@
 // The matchability subcommand of the kin5 tool:
 //
 //   kin5 match --from ID --to ID [--program FILE] [--from-dialect D] [--format md|csv|svg|json]
+//              [--tool-length MM] [--work-offset X,Y,Z]
 //
 // Without a program: the pair's table (the same text as docs/tables/, computed afresh, Ipopt
 // checks included) or its sphere map. With one: the program's report — motion blocks per class,
 // the unreachable ones as runs of lines with their worst gap, the rotary travel the target
-// needs, the tool-tip range — and, when blocks are unreachable, a setup search whose result is
+// needs, the tool-tip range and the slides each block needs against the target's linear travel
+// (with the tool length and work offset given) — and, when blocks are unreachable, a setup
+// search whose result is
 // printed as the `--setup-rotation` option of `kin5 translate`. docs/matchability.md explains
 // all of it.
 //
@@ -25,6 +28,7 @@
 #include <iterator>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include <kin5/program/io.hpp>
 #include <kin5/reach.hpp>
@@ -40,7 +44,15 @@ namespace prog = kin5::program;
 
 struct match_arguments {
   std::string from, to, program, from_dialect, format = "md";
+  double tool_length_mm = 0.0;
+  std::vector<double> work_offset_mm;  ///< X, Y, Z of the workpiece frame on the target, or empty
 };
+
+run_inputs target_inputs(const match_arguments& a) {
+  run_inputs in{.tool_length_mm = a.tool_length_mm};
+  if (a.work_offset_mm.size() == 3) in.work_offset.translation_mm = {a.work_offset_mm[0], a.work_offset_mm[1], a.work_offset_mm[2]};
+  return in;
+}
 
 std::optional<std::string> read_file(const std::string& path) {
   if (path == "-") return std::string(std::istreambuf_iterator<char>(std::cin), {});
@@ -80,12 +92,12 @@ int with_program(const match_arguments& a) {
     return exit_codes::input_error;
   }
   const rigid_transform setup = default_setup<From, To>();
-  const auto report = reach::make_program_report<From, To>(in.parsed, setup, true);
+  const auto report = reach::make_program_report<From, To>(in.parsed, setup, true, target_inputs(a));
   std::optional<reach::setup_search_result> search;
   std::optional<reach::chosen_setup> chosen;
   if (!report.unreachable.empty()) {
     search = reach::search_setup<From, To>(report.source_axes, setup.rotation);
-    chosen = reach::choose_setup<From, To>(in.parsed, *search, setup.translation_mm);
+    chosen = reach::choose_setup<From, To>(in.parsed, *search, setup.translation_mm, target_inputs(a));
   }
   if (a.format == "svg") {
     const auto t = reach::make_pair_table<From, To>(setup, true, false);
@@ -132,6 +144,11 @@ void add_match_command(CLI::App& app, int& exit_code) {
   sub->add_option("--format", a->format, "md, csv, svg or json")
       ->check(CLI::IsMember({"md", "csv", "svg", "json"}))
       ->capture_default_str();
+  sub->add_option("--tool-length", a->tool_length_mm, "Tool length on the target, mm (places the slides)")
+      ->check(CLI::Range(0.0, 1e6));
+  sub->add_option("--work-offset", a->work_offset_mm, "Origin of the workpiece frame on the target X,Y,Z, mm")
+      ->delimiter(',')
+      ->expected(3);
   sub->footer("Exit codes: 0 every block reachable (or no program), 1 bad arguments, 2 the program cannot be read,\n"
               "3 blocks unreachable under the pair's default setup (the report says which, and a setup that helps).");
   sub->callback([a, &exit_code] { exit_code = run_match(*a); });

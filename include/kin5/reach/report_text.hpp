@@ -85,8 +85,18 @@ inline std::string report_markdown(const program_report& r, const std::optional<
     o += "Tool tips in the " + r.to + " workpiece frame: X [" + fixed(r.tip_lo_mm.x, 3) + ", " + fixed(r.tip_hi_mm.x, 3) +
          "], Y [" + fixed(r.tip_lo_mm.y, 3) + ", " + fixed(r.tip_hi_mm.y, 3) + "], Z [" + fixed(r.tip_lo_mm.z, 3) + ", " +
          fixed(r.tip_hi_mm.z, 3) + "] mm: a stroke of " + fixed(r.tip_hi_mm.x - r.tip_lo_mm.x, 3) + " \u00d7 " +
-         fixed(r.tip_hi_mm.y - r.tip_lo_mm.y, 3) + " \u00d7 " + fixed(r.tip_hi_mm.z - r.tip_lo_mm.z, 3) + " mm. The catalog gives " +
-         r.to + " no linear travel yet, so the stroke is not checked against it.\n\n";
+         fixed(r.tip_hi_mm.y - r.tip_lo_mm.y, 3) + " \u00d7 " + fixed(r.tip_hi_mm.z - r.tip_lo_mm.z, 3) + " mm.\n\n";
+  if (!r.linear.empty()) {
+    const vec3 w = r.target_inputs.work_offset.translation_mm;
+    o += "Linear travel on " + r.to + " (reachable blocks, slides (G7) with the planned angles; tool length " +
+         fixed(r.target_inputs.tool_length_mm, 3) + " mm, work offset (" + fixed(w.x, 3) + ", " + fixed(w.y, 3) + ", " +
+         fixed(w.z, 3) + ") mm):\n\n| axis | from (mm) | to (mm) | stroke (mm) | travel of the axis (mm) |\n|---|---|---|---|---|\n";
+    for (const auto& s : r.linear)
+      o += "| " + std::string(1, s.letter) + " | " + fixed(s.lo_mm, 3) + " | " + fixed(s.hi_mm, 3) + " | " +
+           fixed(s.hi_mm - s.lo_mm, 3) + " of " + fixed(s.travel_hi_mm - s.travel_lo_mm, 3) + " | [" + fixed(s.travel_lo_mm, 3) +
+           ", " + fixed(s.travel_hi_mm, 3) + "]" + (s.exceeded() ? " exceeded" : "") + " |\n";
+    o += "\n";
+  }
   if (!r.other_errors.empty())
     o += std::to_string(r.other_errors.size()) + " other errors stop a translation; `kin5 translate` lists them.\n\n";
   if (!search) return o;
@@ -99,9 +109,9 @@ inline std::string report_markdown(const program_report& r, const std::optional<
            std::to_string(search->closest.unreachable) + " unreachable (worst gap " + deg(search->closest.worst_gap_rad, 3) +
            "\u00b0).\n";
   if (!chosen)
-    return o + "None of them translates the whole program: " +
-           (search->ranked.empty() ? std::string() : "with the best, ") + "the program has constructs the turned setup "
-           "cannot carry; `kin5 translate` with its options lists them.\n\n```\n" +
+    return o + "None of them translates the whole program within the target's travel: " +
+           (search->ranked.empty() ? std::string() : "with each, ") + "the program has constructs the turned setup "
+           "cannot carry, or a slide leaves its travel; `kin5 translate` with the best lists the constructs.\n\n```\n" +
            translate_command(r, search->ranked.front().rotation) + "\n```\n";
   const auto& b = chosen->candidate;
   const auto& w = chosen->report;
@@ -144,7 +154,14 @@ inline std::string report_json(const program_report& r, const std::optional<chos
     o += std::string(i ? ", " : "") + "{\"axis\": \"" + std::string(1, s.letter) + "\", \"from_deg\": " + fixed(s.lo_deg, 6) +
          ", \"to_deg\": " + fixed(s.hi_deg, 6) + "}";
   }
-  o += "], \"rotary_travel_deg\": " + deg(r.rotary_travel_rad);
+  o += "], \"rotary_travel_deg\": " + deg(r.rotary_travel_rad) + ",\n \"linear\": [";
+  for (std::size_t i = 0; i < r.linear.size(); ++i) {
+    const auto& s = r.linear[i];
+    o += std::string(i ? ", " : "") + "{\"axis\": \"" + std::string(1, s.letter) + "\", \"from_mm\": " + fixed(s.lo_mm, 6) +
+         ", \"to_mm\": " + fixed(s.hi_mm, 6) + ", \"travel_from_mm\": " + fixed(s.travel_lo_mm, 6) +
+         ", \"travel_to_mm\": " + fixed(s.travel_hi_mm, 6) + ", \"exceeded\": " + (s.exceeded() ? "true" : "false") + "}";
+  }
+  o += "]";
   if (chosen)
     o += ",\n \"setup\": {\"rotation\": [" + rotation_option(chosen->candidate.rotation) + "], \"axis_aligned\": " +
          (chosen->candidate.axis_aligned ? "true" : "false") + ", \"rotary_travel_deg\": " +
