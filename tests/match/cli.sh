@@ -58,6 +58,7 @@ grep -q "7 direct, 0 other-branch, 0 unreachable" "$out/refixtured.err" || repor
 run 3 flank_placed match --from sajo-12000p --to dmu-80p --program "$dir/flank.mpf" --tool-length 100 --work-offset 0,0,-300
 has flank_placed "Linear travel on dmu-80p"
 has flank_placed "tool length 100.000 mm, work offset (0.000, 0.000, -300.000) mm"
+grep -q "exceeded" "$out/flank_placed" && report "flank_placed: a slide beyond its travel"
 run 3 flank_high match --from sajo-12000p --to dmu-80p --program "$dir/flank.mpf" --work-offset 0,0,2000
 has flank_high "[-600.000, 0.000] exceeded"
 has flank_high "or a slide leaves its travel"
