@@ -54,6 +54,9 @@ run_inputs target_inputs(const match_arguments& a) {
   return in;
 }
 
+/// Whether --work-offset says where the part sits: then the slides' ends are checked.
+bool placed(const match_arguments& a) { return a.work_offset_mm.size() == 3; }
+
 std::optional<std::string> read_file(const std::string& path) {
   if (path == "-") return std::string(std::istreambuf_iterator<char>(std::cin), {});
   std::ifstream in(path, std::ios::binary);
@@ -92,12 +95,12 @@ int with_program(const match_arguments& a) {
     return exit_codes::input_error;
   }
   const rigid_transform setup = default_setup<From, To>();
-  const auto report = reach::make_program_report<From, To>(in.parsed, setup, true, target_inputs(a));
+  const auto report = reach::make_program_report<From, To>(in.parsed, setup, true, target_inputs(a), placed(a));
   std::optional<reach::setup_search_result> search;
   std::optional<reach::chosen_setup> chosen;
   if (!report.unreachable.empty()) {
     search = reach::search_setup<From, To>(report.source_axes, setup.rotation);
-    chosen = reach::choose_setup<From, To>(in.parsed, *search, setup.translation_mm, target_inputs(a));
+    chosen = reach::choose_setup<From, To>(in.parsed, *search, setup.translation_mm, target_inputs(a), placed(a));
   }
   if (a.format == "svg") {
     const auto t = reach::make_pair_table<From, To>(setup, true, false);

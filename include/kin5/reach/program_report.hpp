@@ -44,7 +44,12 @@ struct slide_span {
   char letter = 0;
   double lo_mm = 0.0, hi_mm = 0.0;
   double travel_lo_mm = 0.0, travel_hi_mm = 0.0;
-  bool exceeded() const { return lo_mm < travel_lo_mm - 1e-6 || hi_mm > travel_hi_mm + 1e-6; }
+  bool placed = false;  ///< the work offset was given: the range itself is checked, not only its length
+  /// Placed: the range leaves the travel; not placed: the stroke is longer than the travel.
+  bool exceeded() const {
+    if (!placed) return hi_mm - lo_mm > travel_hi_mm - travel_lo_mm + 1e-6;
+    return lo_mm < travel_lo_mm - 1e-6 || hi_mm > travel_hi_mm + 1e-6;
+  }
 };
 
 /// One motion block on the target: its tip (target workpiece frame) and, when reachable, the
@@ -71,6 +76,7 @@ struct program_report {
   std::vector<program::diagnostic> other_errors;  ///< what else stops a translation
   std::vector<vec3> source_axes;            ///< tool axes of the motion blocks, source frame
   run_inputs target_inputs;                 ///< tool length and work offset on the target
+  bool placed = false;                      ///< the work offset was given (else the machine's origin)
   std::vector<block_on_target> blocks;      ///< the motion blocks, as `source_axes`
   std::vector<slide_span> linear;           ///< X, Y, Z over the reachable blocks (none reachable: empty)
   /// Whether some slide leaves its travel.
@@ -140,7 +146,7 @@ void place_slides(program_report& out, const rotary_path<To>& path) {
   if (!any) return;
   for (std::size_t k = 0; k < 3; ++k) {
     const linear_axis& a = To::linear[k];
-    out.linear.push_back({to_char(a.letter), lo[k], hi[k], a.travel.lower_mm, a.travel.upper_mm});
+    out.linear.push_back({to_char(a.letter), lo[k], hi[k], a.travel.lower_mm, a.travel.upper_mm, out.placed});
   }
 }
 
@@ -149,12 +155,14 @@ void place_slides(program_report& out, const rotary_path<To>& path) {
 /// The report of program `nc` (of machine From) on machine To under `setup`; `target_inputs`
 /// place the slides: the tool length, and where the workpiece frame sits on the target (the
 /// translation of its work offset; how the part is turned is the setup's rotation, so the
-/// offset's rotation is not used).
+/// offset's rotation is not used). `placed`: the work offset is the part's real place, so the
+/// slides are checked against the travel's ends; otherwise only their strokes against its length.
 template <machine From, machine To>
 program_report make_program_report(const program::program& nc, const rigid_transform& setup, bool is_default_setup,
-                                   const run_inputs& target_inputs = {}) {
+                                   const run_inputs& target_inputs = {}, bool placed = false) {
   program_report out;
   out.target_inputs = target_inputs;
+  out.placed = placed;
   out.target_inputs.work_offset.rotation = mat3::identity();
   out.file = nc.file, out.from = From::id, out.to = To::id;
   out.setup = setup, out.default_setup = is_default_setup;
@@ -201,10 +209,11 @@ struct chosen_setup {
 /// which the program translates and every slide stays within its travel.
 template <machine From, machine To>
 std::optional<chosen_setup> choose_setup(const program::program& nc, const setup_search_result& search,
-                                         const vec3& offset_mm, const run_inputs& target_inputs = {}) {
+                                         const vec3& offset_mm, const run_inputs& target_inputs = {},
+                                         bool placed = false) {
   chosen_setup out;
   for (const auto& c : search.ranked) {
-    program_report r = make_program_report<From, To>(nc, {c.rotation, offset_mm}, false, target_inputs);
+    program_report r = make_program_report<From, To>(nc, {c.rotation, offset_mm}, false, target_inputs, placed);
     if (r.unreachable.empty() && r.other_errors.empty() && !r.linear_exceeded()) {
       out.candidate = c;
       out.report = std::move(r);

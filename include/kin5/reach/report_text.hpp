@@ -90,7 +90,8 @@ inline std::string report_markdown(const program_report& r, const std::optional<
     const vec3 w = r.target_inputs.work_offset.translation_mm;
     o += "Linear travel on " + r.to + " (reachable blocks, slides (G7) with the planned angles; tool length " +
          fixed(r.target_inputs.tool_length_mm, 3) + " mm, work offset (" + fixed(w.x, 3) + ", " + fixed(w.y, 3) + ", " +
-         fixed(w.z, 3) + ") mm):\n\n| axis | from (mm) | to (mm) | stroke (mm) | travel of the axis (mm) |\n|---|---|---|---|---|\n";
+         fixed(w.z, 3) + ") mm" + (r.placed ? "" : ", the workpiece origin at the machine's origin: only the strokes are checked") +
+         "):\n\n| axis | from (mm) | to (mm) | stroke (mm) | travel of the axis (mm) |\n|---|---|---|---|---|\n";
     for (const auto& s : r.linear)
       o += "| " + std::string(1, s.letter) + " | " + fixed(s.lo_mm, 3) + " | " + fixed(s.hi_mm, 3) + " | " +
            fixed(s.hi_mm - s.lo_mm, 3) + " of " + fixed(s.travel_hi_mm - s.travel_lo_mm, 3) + " | [" + fixed(s.travel_lo_mm, 3) +

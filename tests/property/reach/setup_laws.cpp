@@ -151,7 +151,7 @@ TEST_CASE("Program report: the slides of each reachable block put the tool back 
   const rigid_transform setup = default_setup<sajo_12000p, dmu_80p>();
   run_inputs inputs{.tool_length_mm = 120.0};
   inputs.work_offset.translation_mm = {30.0, -30.0, -200.0};
-  const auto r = reach::make_program_report<sajo_12000p, dmu_80p>(in.parsed, setup, true, inputs);
+  const auto r = reach::make_program_report<sajo_12000p, dmu_80p>(in.parsed, setup, true, inputs, true);
   REQUIRE(r.blocks.size() == 6);
   REQUIRE(r.linear.size() == 3);
   std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
@@ -178,7 +178,10 @@ TEST_CASE("Program report: the slides of each reachable block put the tool back 
   }
   // The DMU 80P's Z travel is [-600, 0] mm: a workpiece frame 2 m up puts every block out of it.
   inputs.work_offset.translation_mm = {0.0, 0.0, 2000.0};
-  const auto high = reach::make_program_report<sajo_12000p, dmu_80p>(in.parsed, setup, true, inputs);
+  const auto high = reach::make_program_report<sajo_12000p, dmu_80p>(in.parsed, setup, true, inputs, true);
   CHECK(high.linear_exceeded());
   CHECK(high.linear[2].lo_mm == Approx(r.linear[2].lo_mm + 2200.0));  // the slides follow the offset
+  // Not placed, only the strokes count, and these few millimetres fit.
+  const auto loose = reach::make_program_report<sajo_12000p, dmu_80p>(in.parsed, setup, true, inputs, false);
+  CHECK(!loose.linear_exceeded());
 }
