@@ -19,6 +19,7 @@
 
 #include "../core/vec.hpp"
 #include "dialect_id.hpp"
+#include "resolution.hpp"
 #include "state_words.hpp"
 
 namespace kin5::program {
@@ -167,6 +168,11 @@ using block_sink = std::function<void(block&&)>;
 struct diagnostic {
   source_location where;
   std::string message;
+  /// The construct refused or warned about, by the name `--allow` takes ("unset-rotary"), when
+  /// it has one; empty otherwise.
+  std::string construct{};
+  /// The option that resolves it ("--allow unset-rotary", "--angle-tolerance"), when one does.
+  std::string option{};
 
   /// `FILE:LINE:COL: error: message`, the format compilers use, so editors can jump to it.
   std::string to_string(std::string_view severity = "error") const {
@@ -181,6 +187,9 @@ struct read_result {
   program parsed;
   std::vector<diagnostic> errors;
   std::vector<diagnostic> warnings;  ///< accepted, but worth a look (printed as "warning:")
+  /// How finely the text writes its numbers. The streaming driver fills it from the text
+  /// (`scan_resolution`) where the reader leaves it empty.
+  number_resolution resolution{};
   bool ok() const { return errors.empty(); }
 };
 

@@ -1,0 +1,148 @@
+/// @file program/address_words.hpp
+/// A light scan of NC text for address words with a plain number — `X+10.5`, `A=30`, `B-.5`,
+/// `F1200` — outside comments, with their place and their decimals. It does not read a program
+/// (the readers do, and refuse what they do not understand): the translation uses it to point
+/// at a word the reader turned into a value (an axis word the machine lacks), and the streaming
+/// driver to see how finely a program writes its numbers before reading it (`scan_resolution`).
+///
+/// A word is a letter not preceded by a letter, digit-free identifier or `#`/`_`, then an
+/// optional `=`, an optional sign and a decimal number not followed by `=` (so `A3=0.5`, a
+/// Siemens vector component, and `R1=5`, a parameter, are not words). Comments: `;` to the end
+/// of the line, `( … )` in ISO, strings `"…"` skipped. APT CL data is scanned by its records
+/// (`GOTO/x,y,z,i,j,k`, `FEDRAT/f`, `SPINDL/s`).
+/// @code
+///   kin5::program::for_each_address_word("N10 G1 X10.25 A-30", kin5::program::dialect::iso,
+///                                        [](const kin5::program::address_word& w) { /* X 2, A 0 */ });
+///   const auto r = kin5::program::scan_resolution(text, kin5::program::dialect::siemens);
+/// @endcode
+#pragma once
+
+#include <cstddef>
+#include <string_view>
+
+#include "block.hpp"
+#include "resolution.hpp"
+#include "text.hpp"
+
+namespace kin5::program {
+
+/// One address word found by `for_each_address_word`.
+struct address_word {
+  char letter = 0;             ///< upper case
+  std::size_t offset = 0;      ///< of the letter in the scanned text
+  std::string_view text;       ///< the word as written, letter to the number's last digit
+  int decimals = 0;            ///< digits after the decimal point
+};
+
+namespace detail {
+
+/// The end of the number starting at `i` in `s` (sign, digits, point), and its decimals; `i`
+/// itself when there is no digit.
+constexpr std::size_t scan_number(std::string_view s, std::size_t i, int& decimals) {
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+  std::size_t digits = 0;
+  decimals = 0;
+  while (i < s.size() && is_digit(s[i])) ++i, ++digits;
+  if (i < s.size() && s[i] == '.') {
+    ++i;
+    while (i < s.size() && is_digit(s[i])) ++i, ++digits, ++decimals;
+  }
+  return digits > 0 ? i : 0;
+}
+
+/// Whether `c` may stand just before an address letter.
+constexpr bool word_boundary(char c) { return !is_letter(c) && c != '_' && c != '#' && c != '$'; }
+
+}  // namespace detail
+
+/// Calls `f(address_word)` for each address word of one line of letter-address text (Siemens,
+/// Heidenhain, ISO), in order; comments and strings are skipped (see the file comment).
+template <class F>
+constexpr void for_each_address_word(std::string_view line, dialect d, F&& f) {
+  int depth = 0;  // ISO comment nesting
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (depth > 0) {
+      depth += c == '(' ? 1 : (c == ')' ? -1 : 0);
+      continue;
+    }
+    if (c == ';') return;
+    if (c == '(' && d == dialect::iso) {
+      depth = 1;
+      continue;
+    }
+    if (c == '"') {
+      const std::size_t close = line.find('"', i + 1);
+      if (close == std::string_view::npos) return;
+      i = close;
+      continue;
+    }
+    if (!is_letter(c) || (i > 0 && !detail::word_boundary(line[i - 1]))) continue;
+    std::size_t j = i + 1;
+    if (j < line.size() && line[j] == '=') ++j;
+    int decimals = 0;
+    const std::size_t end = detail::scan_number(line, j, decimals);
+    if (end == 0 || (end < line.size() && line[end] == '=')) continue;
+    f(address_word{to_upper(c), i, line.substr(i, end - i), decimals});
+    i = end - 1;
+  }
+}
+
+namespace detail {
+
+/// Adds the decimals of word `w` to its class in `r`.
+constexpr void count_word(number_resolution& r, char letter, int decimals) {
+  auto take = [decimals](std::optional<int>& d) {
+    if (!d || decimals > *d) d = decimals;
+  };
+  switch (letter) {
+    case 'X': case 'Y': case 'Z': case 'I': case 'J': case 'K': case 'R': take(r.linear_decimals); break;
+    case 'A': case 'B': case 'C': take(r.angle_decimals); break;
+    case 'F': take(r.feed_decimals); break;
+    case 'S': take(r.speed_decimals); break;
+    default: break;
+  }
+}
+
+/// The resolution of one APT statement: GOTO/x,y,z[,i,j,k], FEDRAT/[MMPM,]f, SPINDL/[RPM,]s.
+constexpr void count_apt_statement(number_resolution& r, std::string_view s) {
+  std::size_t k = 0;
+  while (k < s.size() && is_space(s[k])) ++k;
+  s.remove_prefix(k);
+  const int kind = starts_with_keyword(s, "GOTO/") ? 0 : starts_with_keyword(s, "FEDRAT/") ? 1
+                   : starts_with_keyword(s, "SPINDL/")                                      ? 2
+                                                                                            : -1;
+  if (kind < 0) return;
+  std::size_t i = s.find('/') + 1;
+  bool counted = false;  // FEDRAT, SPINDL: the first number, wherever its unit word stands
+  for (int field = 0; i <= s.size(); ++field) {
+    while (i < s.size() && is_space(s[i])) ++i;
+    int decimals = 0;
+    const std::size_t end = scan_number(s, i, decimals);
+    if (end != 0) {
+      if (kind == 0 && field < 3) count_word(r, 'X', decimals);
+      if (kind == 0 && field >= 3 && field < 6 && (!r.vector_decimals || decimals > *r.vector_decimals))
+        r.vector_decimals = decimals;
+      if (kind != 0 && !counted) count_word(r, kind == 1 ? 'F' : 'S', decimals);
+      counted = counted || kind != 0;
+    }
+    const std::size_t comma = s.find(',', i);
+    if (comma == std::string_view::npos) break;
+    i = comma + 1;
+  }
+}
+
+}  // namespace detail
+
+/// How finely `text`, a program in dialect `d`, writes its numbers (see the file comment): one
+/// pass over the bytes, no reading.
+inline number_resolution scan_resolution(std::string_view text, dialect d) {
+  number_resolution r;
+  for_each_line(text, [&](const text_line& line) {
+    if (d == dialect::apt) return detail::count_apt_statement(r, line.text);
+    for_each_address_word(line.text, d, [&](const address_word& w) { detail::count_word(r, w.letter, w.decimals); });
+  });
+  return r;
+}
+
+}  // namespace kin5::program
