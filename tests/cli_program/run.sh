@@ -276,6 +276,76 @@ case "$name" in
     done
     [ "$fail" = 0 ] || show p.h err
     ;;
+  source-checks)
+    # A program must fit its own machine (translate/source_checks.hpp): the SAJO 12000P has A
+    # and B, A travels over [-120, 30] deg. A C word, an A past -120 and the Table 1 example
+    # given with the wrong --from are errors at the word, and nothing is written.
+    printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A-30 B10 F500' 'N30 G1 X1 C77' 'N40 G1 X2 A-150' 'N50 M30' >foreign.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p -o f.h foreign.mpf
+    grep -q '^foreign\.mpf:3:11: error: C77: sajo-12000p has no C axis' err || { report "C77 not refused at 3:11"; show err; }
+    grep -q '^foreign\.mpf:4:11: error: A-150: outside the travel of A on sajo-12000p, \[-120°, 30°\]' err ||
+      { report "A-150 not refused at 4:11"; show err; }
+    [ -e f.h ] && report "f.h written"
+    run 2 translate --from dmu-80p --to sajo-12000p -o w.mpf "$example"
+    grep -q "^.*table1-sajo\.mpf:14:[0-9]*: error: A-77.954: dmu-80p has no A axis" err ||
+      { report "wrong --from not detected"; show err; }
+    # Within the angle tolerance a value past the edge is on it; the default, half a unit of the
+    # 4th decimal, is 0.00005 deg: 0.0004 past is refused.
+    printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A-120.0004 B10 F500' 'N30 M30' >edge.mpf
+    run 0 translate --from sajo-12000p --to sajo-12000p --to-dialect siemens --angle-tolerance 0.001 -o e.mpf edge.mpf
+    run 2 translate --from sajo-12000p --to sajo-12000p --to-dialect siemens -o e.mpf edge.mpf
+    ;;
+  unset-rotary)
+    # A rotary axis with no value at a motion is refused (its pose would be a guess), unless
+    # allowed by name.
+    printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A-30 F500' 'N30 G1 X1 B10' 'N40 M30' >unset.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p -o u.h unset.mpf
+    grep -q '^unset\.mpf:2:1: error: rotary axis B has no value yet' err || { report "unset B not refused"; show err; }
+    grep -q -- '--allow unset-rotary' err || report "the option is not named"
+    run 0 translate --from sajo-12000p --to dmu-80p --allow unset-rotary -o u.h unset.mpf
+    grep -q '^unset\.mpf:2:1: warning: rotary axis B has no value yet.*allowed' err || { report "no allowed warning"; show err; }
+    run 1 translate --from sajo-12000p --to dmu-80p --allow everything -o u.h unset.mpf
+    ;;
+  empty-input)
+    # No block at all: an input error, nothing written.
+    : >empty.mpf
+    printf '\n  \n\n' >blank.mpf
+    for f in empty.mpf blank.mpf; do
+      run 2 translate --from sajo-12000p --to dmu-80p -o e.h "$f"
+      grep -q "^$f: error: empty program" err || { report "$f: no empty-program error"; show err; }
+      [ -e e.h ] && report "$f: e.h written"
+    done
+    ;;
+  post-nc)
+    # post reads CL data: an NC program given to it is refused, by its markers or because no
+    # statement of it is APT, never written as comments.
+    run 2 post --machine dmu-80p -o p.h "$example"
+    grep -q 'not APT CL data: it reads as a siemens NC program' err || { report "Siemens program accepted"; show err; }
+    printf '%s\n' '%' 'O1000' 'G0 X0 Y0 Z50' 'G1 X10 F500' 'M30' '%' >plain.nc
+    run 2 post --machine dmu-80p -o p.h plain.nc
+    grep -q 'not APT CL data: no GOTO/ moves the tool' err || { report "plain ISO accepted"; show err; }
+    [ -e p.h ] && report "p.h written"
+    ;;
+  summary-after-write)
+    # The summary comes after the output is committed and counts what OUT holds: nothing when
+    # the device is full.
+    if [ -w /dev/full ]; then
+      run 2 translate --from sajo-12000p --to dmu-80p -o /dev/full "$example"
+      grep -q "cannot write '/dev/full'" err || { report "no write error"; show err; }
+      grep -q '23 written' err && { report "summary counts blocks never written"; show err; }
+      grep -Eq '23 blocks read, 0 written' err || { report "summary line"; show err; }
+    fi
+    ;;
+  precision)
+    # A source with 4 decimals keeps them in the output (the TNC reads 4); --digits 2 rounds.
+    sed 's/X-34.983 Y9.100/X-34.9834 Y9.1006/' "$example" >fine.mpf
+    run 0 translate --from sajo-12000p --to dmu-80p -o fine.h fine.mpf
+    l=$(line_with fine.h X 34.9834)
+    [ -n "$l" ] || { report "X34.9834 not kept"; show fine.h; }
+    near "$(value "$l" Z)" 9.1006 1e-9 || report "Z9.1006 not kept: $l"
+    run 0 translate --from sajo-12000p --to dmu-80p --digits 2 -o d2.h fine.mpf
+    [ -n "$(line_with d2.h X 34.98)" ] || { report "--digits 2"; show d2.h; }
+    ;;
   setup)
     # A setup given three ways. T of (K10) written as a matrix and as the half turn about
     # (0,1,1) ((K10): T = R((0,1,1)/sqrt2, 180 deg)) must give Table 1 exactly as the default.

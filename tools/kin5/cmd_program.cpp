@@ -215,6 +215,10 @@ int execute(const job& j) {
     std::vector<message> messages;
     collect(messages, result.errors, "error");
     collect(messages, result.warnings, "warning");
+    for (auto d : result.allowed) {  // refusals the user accepted (--allow)
+      d.message += " [allowed by " + d.option + "]";
+      messages.push_back({"warning", std::move(d)});
+    }
     if (j.verbose)
       for (const auto& r : result.reports)
         if (r.match == matchability::other_branch) messages.push_back({"note", other_branch_note(r)});
@@ -234,9 +238,15 @@ int execute(const job& j) {
     std::cerr << d.to_string("error") << '\n';
     code = exit_codes::input_error;
   }
+  // The output is committed before the summary, which then says what OUT holds.
+  const bool committed = code == exit_codes::ok && !file_failed && out.commit();
+  if (code == exit_codes::ok && !committed) {
+    std::cerr << prefix << "cannot write '" << j.output_path << "': " << out.error() << '\n';
+    code = exit_codes::input_error;
+  }
 
   std::cerr << prefix << result.blocks_read << " blocks read, "
-            << (code == exit_codes::ok ? result.blocks_written : 0) << " written, " << result.passed_through
+            << (committed ? result.blocks_written : 0) << " written, " << result.passed_through
             << " passed through; ";
   for (matchability m : {matchability::direct, matchability::other_branch, matchability::unreachable})
     std::cerr << count(m) << ' ' << name(m) << (m == matchability::unreachable ? "\n" : ", ");
@@ -248,13 +258,7 @@ int execute(const job& j) {
     std::cerr << prefix << unreachable << (unreachable == 1 ? " block" : " blocks") << " cannot be reached on "
               << j.target << "; nothing written\n";
   }
-  if (code != exit_codes::ok) return code;
-
-  if (file_failed || !out.commit()) {
-    std::cerr << prefix << "cannot write '" << j.output_path << "': " << out.error() << '\n';
-    return exit_codes::input_error;
-  }
-  return exit_codes::ok;
+  return code;
 }
 
 // ---- argument checks ----------------------------------------------------------------------
@@ -288,10 +292,53 @@ std::string feed_policy_help() {
   return help;
 }
 
+/// The options every program command takes (`common_options`), as given.
+struct common_arguments {
+  std::optional<double> angle_tolerance_deg;
+  std::vector<std::string> allow;
+  std::optional<int> digits;
+};
+
+/// `common_options` from `a`; prints the reason and returns nothing on bad input.
+std::optional<common_options> parse_common(std::string_view command, const common_arguments& a) {
+  common_options c;
+  if (a.angle_tolerance_deg) {
+    if (!(*a.angle_tolerance_deg >= 0.0 && *a.angle_tolerance_deg <= 1.0)) {
+      std::cerr << "kin5 " << command << ": --angle-tolerance: give degrees in [0, 1]\n";
+      return std::nullopt;
+    }
+    c.angle_tolerance = degrees{*a.angle_tolerance_deg};
+  }
+  for (const auto& name : a.allow)
+    if (!c.allow.add(name)) {
+      std::cerr << "kin5 " << command << ": --allow: no refusal is named '" << name << "'; valid: " << allowable_names()
+                << '\n';
+      return std::nullopt;
+    }
+  if (a.digits && (*a.digits < 0 || *a.digits > 9)) {
+    std::cerr << "kin5 " << command << ": --digits: give 0 to 9 decimals\n";
+    return std::nullopt;
+  }
+  c.digits = a.digits;
+  return c;
+}
+
+/// Adds the options of `common_arguments` to `sub`.
+void add_common_options(CLI::App* sub, common_arguments& a) {
+  sub->add_option("--angle-tolerance", a.angle_tolerance_deg,
+                  "Degrees a rotary value may lie past a travel or reach edge and count as on it (default: half a "
+                  "unit of the program's last angle decimal, at most 0.0005)");
+  sub->add_option("--allow", a.allow, "Accept a named refusal knowingly, as a warning: " + allowable_names());
+  sub->add_option("--digits", a.digits,
+                  "Decimals of positions and angles in OUT (default: the source's, within what the output "
+                  "controller reads)");
+}
+
 struct translate_arguments {
   std::string from, to, feed{feed_policies[0].name}, from_dialect, to_dialect, output = "-", input;
   std::string setup_rotation, setup_axis, setup_offset;
   std::optional<double> setup_angle_deg;
+  common_arguments common;
   bool verbose = false;
 };
 
@@ -350,6 +397,7 @@ std::optional<rigid_transform> parse_setup(const translate_arguments& a) {
 
 struct machine_arguments {
   std::string machine, dialect, output = "-", input;
+  common_arguments common;
   bool verbose = false;
 };
 
@@ -383,6 +431,9 @@ int run_translate(const translate_arguments& a) {
     return exit_codes::usage;
   }
   options.output_dialect = j.output_dialect;
+  const auto common = parse_common("translate", a.common);
+  if (!common) return exit_codes::usage;
+  options.common = *common;
   j.make = [&a, options](prog::dialect d, const std::string& file) {
     return kin5::make_translator(a.from, a.to, d, file, options, report_detail::exceptions_only);
   };
@@ -400,8 +451,10 @@ int run_reverse(const machine_arguments& a) {
   j.output_dialect = prog::dialect::apt;
   j.target = "APT CL data";
   j.verbose = a.verbose;
-  j.make = [&a](prog::dialect d, const std::string& file) {
-    return kin5::make_reverse(a.machine, d, file, report_detail::exceptions_only);
+  const auto common = parse_common("reverse", a.common);
+  if (!common) return exit_codes::usage;
+  j.make = [&a, common](prog::dialect d, const std::string& file) {
+    return kin5::make_reverse(a.machine, d, file, report_detail::exceptions_only, *common);
   };
   return execute(j);
 }
@@ -418,8 +471,10 @@ int run_post(const machine_arguments& a) {
   j.target = a.machine;
   j.verbose = a.verbose;
   const prog::dialect out = j.output_dialect;
-  j.make = [&a, out](prog::dialect d, const std::string& file) {
-    return kin5::make_post(a.machine, d, out, file, report_detail::exceptions_only);
+  const auto common = parse_common("post", a.common);
+  if (!common) return exit_codes::usage;
+  j.make = [&a, out, common](prog::dialect d, const std::string& file) {
+    return kin5::make_post(a.machine, d, out, file, report_detail::exceptions_only, *common);
   };
   return execute(j);
 }
@@ -470,6 +525,7 @@ void add_program_commands(CLI::App& app, int& exit_code) {
     sub->add_option("--setup-angle", a->setup_angle_deg, "Setup rotation angle about --setup-axis, degrees, right-handed");
     sub->add_option("--setup-offset", a->setup_offset,
                     "Setup translation X,Y,Z in mm: target point = R * source point + offset (default: the pair's)");
+    add_common_options(sub, a->common);
     sub->add_flag("-v,--verbose", a->verbose, "Also list the blocks translated on the other solution branch");
     sub->add_option("input", a->input, "Input NC program; '-' for stdin")->required();
     sub->footer(default_dialect_table() + exit_code_footer);
@@ -481,6 +537,7 @@ void add_program_commands(CLI::App& app, int& exit_code) {
     sub->add_option("--machine,-m", a->machine, "Machine the program was written for")->required();
     sub->add_option("--dialect", a->dialect, "Dialect of IN (default: the machine's)")->check(dialects);
     sub->add_option("-o,--output", a->output, "Output file; '-' for stdout")->capture_default_str();
+    add_common_options(sub, a->common);
     sub->add_flag("-v,--verbose", a->verbose, "Also list the blocks read on the other solution branch");
     sub->add_option("input", a->input, "Input NC program; '-' for stdin")->required();
     sub->footer(default_dialect_table() + exit_code_footer);
@@ -492,6 +549,7 @@ void add_program_commands(CLI::App& app, int& exit_code) {
     sub->add_option("--machine,-m", a->machine, "Machine to write the program for")->required();
     sub->add_option("--dialect", a->dialect, "Dialect of OUT (default: the machine's)")->check(dialects);
     sub->add_option("-o,--output", a->output, "Output file; '-' for stdout")->capture_default_str();
+    add_common_options(sub, a->common);
     sub->add_flag("-v,--verbose", a->verbose, "Also list the blocks posted on the other solution branch");
     sub->add_option("input", a->input, "Input APT CL file; '-' for stdin")->required();
     sub->footer(default_dialect_table() + exit_code_footer);

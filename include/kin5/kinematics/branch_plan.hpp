@@ -76,12 +76,16 @@ struct rotary_path {
 template <machine M>
 class rotary_planner {
  public:
+  /// `options`: the reach tolerance and travel slack of every `inverse` it solves (its pole
+  /// rule is the planner's own).
+  explicit rotary_planner(const inverse_options& options = {}) : options_(options) {}
+
   /// Adds the tool axis (target frame, unit) of the next block.
   void add(const vec3& u_target) {
     const std::size_t k = count_++;
     if (pending_.empty() && first_.size() != k) throw std::logic_error("rotary_planner: blocks out of order");
     gap_.push_back(radians{0.0});
-    const auto r = inverse<M>(u_target);
+    const auto r = inverse<M>(u_target, options_);
     if (!r.reachable()) gap_[k] = r.gap;
     if (r.status == reach_status::pole) {
       pending_.push_back({k, u_target, true});
@@ -141,7 +145,7 @@ class rotary_planner {
         before = a;
       }
     }
-    *this = rotary_planner{};
+    *this = rotary_planner{options_};
     return path;
   }
 
@@ -170,6 +174,7 @@ class rotary_planner {
     return a.off_principal < b.off_principal;
   }
 
+  inverse_options options_;
   std::size_t count_ = 0;                // blocks added
   std::vector<stored> candidates_;       // every block's candidates, in block order
   std::vector<std::uint32_t> first_;     // per block: its first candidate in candidates_
@@ -248,7 +253,7 @@ class rotary_planner {
       begin_block();
       if (w.pole) {
         for (radians p : free_angles) {
-          inverse_options options{};
+          inverse_options options = options_;
           options.pole = pole_policy::keep(p);
           add_within_travel(inverse<M>(w.u_target, options), true);
         }

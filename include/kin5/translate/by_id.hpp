@@ -58,9 +58,10 @@ inline std::unique_ptr<block_translator> make_translator(std::string_view from_i
 /// `make_reverse<M>` for a catalog id; for an unknown id, a translator whose result holds that error.
 inline std::unique_ptr<block_translator> make_reverse(std::string_view machine_id, program::dialect source_language,
                                                       const std::string& file,
-                                                      report_detail detail = report_detail::every_block) {
+                                                      report_detail detail = report_detail::every_block,
+                                                      const common_options& common = {}) {
   std::unique_ptr<block_translator> out;
-  machines::with_machine(machine_id, [&]<class M>() { out = make_reverse<M>(source_language, file, detail); });
+  machines::with_machine(machine_id, [&]<class M>() { out = make_reverse<M>(source_language, file, detail, common); });
   if (out) return out;
   return translate_detail::unknown_machine(file, program::dialect::apt, machine_id);
 }
@@ -68,9 +69,12 @@ inline std::unique_ptr<block_translator> make_reverse(std::string_view machine_i
 /// `make_post<M>` for a catalog id; for an unknown id, a translator whose result holds that error.
 inline std::unique_ptr<block_translator> make_post(std::string_view machine_id, program::dialect source_language,
                                                    program::dialect output_dialect, const std::string& file,
-                                                   report_detail detail = report_detail::every_block) {
+                                                   report_detail detail = report_detail::every_block,
+                                                   const common_options& common = {}) {
   std::unique_ptr<block_translator> out;
-  machines::with_machine(machine_id, [&]<class M>() { out = make_post<M>(source_language, output_dialect, file, detail); });
+  machines::with_machine(machine_id, [&]<class M>() {
+    out = make_post<M>(source_language, output_dialect, file, detail, common);
+  });
   if (out) return out;
   return translate_detail::unknown_machine(file, output_dialect, machine_id);
 }

@@ -29,6 +29,7 @@ class cl_target {
   static constexpr bool plans_with_tool_axis = false;  // `plan` is empty; `write` writes the axis
   explicit cl_target(program::dialect source_language) : source_language_(source_language) {}
 
+  void set_tool_axis_tolerance(radians) {}  // nothing to reach: CL data names no machine
   void plan(const source_step&) {}
   void finish_plan() {}
 

@@ -71,6 +71,16 @@ class nc_target {
         output_language_(output_language),
         switch_tcp_on_(switch_tcp_on) {}
 
+  /// A tool axis this close to To's reach, or a planned angle this far past a travel limit,
+  /// counts as on the edge (angle_tolerance.hpp); before the first `plan`.
+  void set_tool_axis_tolerance(radians tolerance) {
+    inverse_options options;
+    const radians at_least{tolerance.value > 1e-9 ? tolerance.value : 1e-9};  // inverse's own rounding
+    options.reach_tolerance = at_least;
+    options.travel_slack = at_least;
+    planner_ = rotary_planner<To>(options);
+  }
+
   /// First pass: the step of every block, in order.
   void plan(const source_step& s) {
     if (s.what == source_step::kind::motion) planner_.add(normalized(target_T_source_.map_direction(s.u_source)));

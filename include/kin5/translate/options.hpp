@@ -1,8 +1,9 @@
 /// @file translate/options.hpp
 /// What a translation is asked to do and what it gives back: `translate_options` in (feed
-/// policy, setup transform, output dialect); `translation` out (the output program, one
-/// `block_report` per motion block, errors, warnings and counts). `report_detail` says how many
-/// block reports a long run keeps. Any error means the output must not be written.
+/// policy, setup transform, output dialect, and the `common_options` of every run: angle
+/// tolerance, refusals allowed, output decimals); `translation` out (the output program, one `block_report` per motion
+/// block, errors, warnings, allowed refusals and counts). `report_detail` says how many block
+/// reports a long run keeps. Any error means the output must not be written.
 /// @code
 ///   kin5::translate_options options;
 ///   options.feed = kin5::feed_policy::tcp;
@@ -23,9 +24,23 @@
 #include "../core/units.hpp"
 #include "../kinematics/matchability.hpp"
 #include "../program/block.hpp"
+#include "allowances.hpp"
 #include "feed.hpp"
 
 namespace kin5 {
+
+/// What every run takes, `translate`, `reverse` and `post` alike.
+struct common_options {
+  /// A rotary value this close to its axis' travel, or a tool axis this close (times the
+  /// source's rotary axes) to the target's travel or reach, counts as on the edge. Empty: half a
+  /// unit of the program's angular resolution (translate/angle_tolerance.hpp).
+  std::optional<degrees> angle_tolerance;
+  /// Named refusals turned into warnings (allowances.hpp).
+  allowances allow;
+  /// Decimals of every position word (linear and angle) in the output, overriding the source's
+  /// resolution and the output dialect's limits (precision.hpp): rounding chosen knowingly.
+  std::optional<int> digits;
+};
 
 /// How to translate.
 struct translate_options {
@@ -33,6 +48,7 @@ struct translate_options {
   /// target_T_source; default: `default_setup<From, To>()`.
   std::optional<rigid_transform> setup;
   program::dialect output_dialect = program::dialect::heidenhain;
+  common_options common{};
 };
 
 /// What happened to one motion block.
@@ -50,11 +66,23 @@ struct translation {
   std::vector<block_report> reports;         ///< one per motion block, in program order
   std::vector<program::diagnostic> errors;   ///< any error: the output must not be written
   std::vector<program::diagnostic> warnings; ///< e.g. a branch switch, a passed-through block
+  /// Refusals the user allowed (`common_options::allow`): accepted knowingly, listed as warnings.
+  std::vector<program::diagnostic> allowed;
   std::size_t blocks_read = 0, blocks_written = 0, passed_through = 0;
   /// Motion blocks per matchability class, indexed by `matchability` (direct, other branch,
   /// unreachable): complete even when `reports` keeps only the exceptions.
   std::array<std::size_t, 3> per_class{};
+  /// The angle tolerance the run used (`common_options::angle_tolerance` or the program's default).
+  degrees angle_tolerance{};
+  /// The decimals the output is to be written with (precision.hpp; `write_settings_for`).
+  program::word_decimals output_decimals{};
   bool ok() const { return errors.empty(); }
+
+  /// Refusal `d` (`d.construct` names it): an error, or an allowed construct when `allow` has
+  /// its name.
+  void refuse(program::diagnostic d, const allowances& allow) {
+    (!d.construct.empty() && allow.allows(d.construct) ? allowed : errors).push_back(std::move(d));
+  }
 };
 
 /// Which block reports a translation keeps (`translation::per_class` counts them all anyway).

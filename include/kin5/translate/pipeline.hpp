@@ -26,12 +26,15 @@
 #include <utility>
 #include <vector>
 
+#include "../program/address_words.hpp"
 #include "../program/block.hpp"
 #include "../program/dialect.hpp"
+#include "angle_tolerance.hpp"
 #include "cl_target.hpp"
 #include "feed.hpp"
 #include "nc_target.hpp"
 #include "options.hpp"
+#include "precision.hpp"
 #include "setup.hpp"
 #include "source_walk.hpp"
 
@@ -55,9 +58,13 @@ class block_translator {
   virtual void write(const program::block& b, const program::block_sink& emit) = 0;
   /// Counts, reports, errors and warnings so far (`output` stays empty: blocks go to `emit`).
   translation& result() { return result_; }
+  /// How finely the program writes its numbers, for the default angle tolerance
+  /// (angle_tolerance.hpp); before the first `plan`. Not given: 0.0005°.
+  void source_resolution(const program::number_resolution& r) { resolution_ = r; }
 
  protected:
   translation result_;
+  program::number_resolution resolution_;
 };
 
 /// Whether a `block_translator`'s second pass reads the source text of `b`: not for a block it
@@ -78,10 +85,16 @@ template <class Source, class Target>
 class two_pass_translator final : public block_translator {
  public:
   /// `refusal`: a reason not to run at all (an error for the whole file); blocks are then only
-  /// counted.
+  /// counted. `source`: the program's dialect and the option naming its machine (the context's
+  /// tolerance and `out` are set at the first `plan`); `common`: tolerance, allowed refusals, digits.
   two_pass_translator(Target target, const std::string& file, program::dialect output_language, report_detail detail,
-                      std::optional<std::string> refusal = std::nullopt)
-      : target_(std::move(target)), detail_(detail), refused_(refusal.has_value()) {
+                      std::optional<std::string> refusal = std::nullopt, source_context source = {},
+                      common_options common = {})
+      : target_(std::move(target)),
+        detail_(detail),
+        refused_(refusal.has_value()),
+        source_(source),
+        common_(std::move(common)) {
     result_.output.language = output_language;
     result_.output.file = file;
     if (refusal) result_.errors.push_back(file_error(file, std::move(*refusal)));
@@ -90,6 +103,7 @@ class two_pass_translator final : public block_translator {
   void plan(const program::block& b) override {
     ++result_.blocks_read;
     if (refused_) return;
+    if (result_.blocks_read == 1) configure();
     // The source kinematics (tool axis, branch) run once per block: in the pass that uses them.
     const source_step s = first_.next(b, &result_, Target::plans_with_tool_axis);
     if (Target::plans_with_tool_axis && s.what == source_step::kind::motion) principal_.push_back(s.principal);
@@ -120,10 +134,31 @@ class two_pass_translator final : public block_translator {
   Target target_;
   report_detail detail_;
   bool refused_;
+  source_context source_;
+  common_options common_;
   bool planned_ = false;
   source_walker<Source> first_, second_;
   std::vector<bool> principal_;  // per motion block when the first pass classified it: on branch 0
   std::size_t motion_ = 0;       // motion blocks written so far
+
+  /// The angle tolerance, from the options or the program's resolution, to both sides; the
+  /// output's decimals.
+  void configure() {
+    precision_notes notes;
+    result_.output_decimals = output_decimals(resolution_, result_.output.language, common_.digits, &notes,
+                                              source_.language == program::dialect::apt);
+    if (!notes.rounded.empty()) result_.warnings.push_back(file_error(result_.output.file, notes.rounded));
+    if (!notes.refused.empty()) {
+      program::diagnostic d = file_error(result_.output.file, notes.refused);
+      d.construct = "precision", d.option = "--digits";
+      result_.errors.push_back(std::move(d));
+    }
+    source_.tolerance = common_.angle_tolerance.value_or(default_angle_tolerance(resolution_));
+    result_.angle_tolerance = source_.tolerance;
+    first_.configure(source_, common_.allow);
+    second_.configure(source_, common_.allow);
+    target_.set_tool_axis_tolerance(tool_axis_tolerance(source_.tolerance, Source::rounded_values));
+  }
 };
 
 /// Whether `d` is cutter-location data (tool tip and axis, no machine axes), not an NC dialect.
@@ -137,7 +172,11 @@ inline std::optional<std::string> translate_refusal(program::dialect source_lang
 }
 
 /// Both passes of `t` over a whole program; the output program collects the emitted blocks.
+/// The program's resolution is scanned from its blocks' text.
 inline translation run(block_translator& t, const program::program& in) {
+  program::number_resolution resolution;
+  for (const program::block& b : in.blocks) resolution.merge(program::scan_resolution(b.text, in.language));
+  t.source_resolution(resolution);
   for (const program::block& b : in.blocks) t.plan(b);
   std::vector<program::block> output;
   const program::block_sink emit = [&](program::block&& o) { output.push_back(std::move(o)); };
@@ -178,25 +217,29 @@ std::unique_ptr<block_translator> make_translator(program::dialect source_langua
   return std::make_unique<two_pass_translator<nc_source<From>, nc_target<To>>>(
       nc_target<To>(options.setup.value_or(default_setup<From, To>()), options.feed, source_language,
                     options.output_dialect, false),
-      file, options.output_dialect, detail, translate_refusal(source_language, options));
+      file, options.output_dialect, detail, translate_refusal(source_language, options),
+      source_context{source_language, {}, nullptr, "--from"}, options.common);
 }
 
 /// The two passes of `reverse<M>` (see `block_translator`).
 template <machine M>
 std::unique_ptr<block_translator> make_reverse(program::dialect source_language, const std::string& file,
-                                               report_detail detail = report_detail::every_block) {
+                                               report_detail detail = report_detail::every_block,
+                                               const common_options& common = {}) {
   using namespace translate_detail;
   return std::make_unique<two_pass_translator<nc_source<M>, cl_target>>(
       cl_target(source_language), file, program::dialect::apt, detail,
       translate_detail::is_cl_data(source_language) ? std::optional<std::string>("the input is already APT CL data")
-                                                    : std::nullopt);
+                                                    : std::nullopt,
+      source_context{source_language, {}, nullptr, "--machine"}, common);
 }
 
 /// The two passes of `post<M>` (see `block_translator`).
 template <machine M>
 std::unique_ptr<block_translator> make_post(program::dialect source_language, program::dialect output_dialect,
                                             const std::string& file,
-                                            report_detail detail = report_detail::every_block) {
+                                            report_detail detail = report_detail::every_block,
+                                            const common_options& common = {}) {
   using namespace translate_detail;
   return std::make_unique<two_pass_translator<cl_source, nc_target<M>>>(
       nc_target<M>(rigid_transform::identity(), feed_policy::tcp, source_language, output_dialect, true), file,
@@ -204,7 +247,8 @@ std::unique_ptr<block_translator> make_post(program::dialect source_language, pr
       translate_detail::is_cl_data(output_dialect)
           ? std::optional<std::string>("post writes NC: choose " +
                                        one_of(dialect_names([](const program::capabilities& can) { return !can.cl_data; })))
-          : std::nullopt);
+          : std::nullopt,
+      source_context{source_language, {}, nullptr, "--machine"}, common);
 }
 
 }  // namespace kin5

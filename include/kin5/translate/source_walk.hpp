@@ -7,11 +7,15 @@
 ///     u_source      = tool_axis<From>(commanded angles)      (K1), (G1)   — `nc_source<From>`
 ///                   | the written vector (GOTO/x,y,z,i,j,k)               — `cl_source`
 ///
-/// Motion without tool-tip tracking, an unknown tip, or an arc that cannot be mapped is an
-/// error at the block; a block not understood or in machine coordinates passes through with a
-/// warning. The walker runs once per pass: diagnostics go to the result in the first only.
+/// Every block is first checked against the source machine (`source_checks.hpp`: axis words
+/// it lacks, values outside its travel). Motion without tool-tip tracking, an unknown tip, or an
+/// arc that cannot be mapped is an error at the block; a rotary axis with no value yet is
+/// refused (`unset-rotary`, which `--allow` turns into taking it as 0); a block not understood or
+/// in machine coordinates passes through with a warning. The walker runs once per pass:
+/// diagnostics go to the result in the first only.
 /// @code
-///   kin5::translate_detail::source_walker<kin5::machines::sajo_12000p> walk;
+///   kin5::translate_detail::source_walker<kin5::translate_detail::nc_source<kin5::machines::sajo_12000p>> walk;
+///   walk.configure({program::dialect::siemens, 0.0005_deg}, {});
 ///   for (const auto& b : nc.blocks) {
 ///     const auto s = walk.next(b, &result, true);
 ///     if (s.what == source_step::kind::motion) use(s.tip_source_mm, s.u_source);
@@ -31,8 +35,10 @@
 #include "../kinematics/matchability.hpp"
 #include "../program/block.hpp"
 #include "../program/modal.hpp"
+#include "allowances.hpp"
 #include "arc_plane.hpp"
 #include "options.hpp"
+#include "source_checks.hpp"
 
 namespace kin5::translate_detail {
 
@@ -93,9 +99,15 @@ template <machine From>
 struct nc_source {
   static constexpr bool needs_tcp = true;
   static constexpr bool has_angles = true;
+  /// Values rounded into a tool axis: one per rotary axis (angle_tolerance.hpp).
+  static constexpr std::size_t rounded_values = rotary_count<From>;
+  /// The checks of block `b` against From (source_checks.hpp); false on an error.
+  static bool check(const program::block& b, const source_context& ctx) { return check_source_axes<From>(b, ctx); }
   /// `kinematics`: whether to compute the tool axis and the branch (else only the angles).
+  /// `notes`: refusals, by name (a rotary axis with no value yet: `unset-rotary`).
   static std::optional<std::string> pose(const program::modal_state& modal, source_step& s, std::string& warned,
-                                         std::vector<std::string>& notes, bool kinematics) {
+                                         std::vector<program::diagnostic>& notes, const program::block& b,
+                                         bool kinematics) {
     if (modal.tool_axis) {  // a tool-axis vector written in the program (G43.5 IJK, LN TX TY TZ)
       s.u_source = *modal.tool_axis;
       s.rotary_count = 0;
@@ -108,7 +120,11 @@ struct nc_source {
       const auto v_deg = modal.value(letter);
       if (!v_deg && warned.find(letter) == std::string::npos) {
         warned.push_back(letter);
-        notes.push_back(std::string("rotary axis ") + letter + " has no value yet; taken as 0 (the zero pose)");
+        notes.push_back({b.where,
+                         std::string("rotary axis ") + letter +
+                             " has no value yet: its pose would be a guess (--allow unset-rotary takes it as 0, "
+                             "the zero pose)",
+                         "unset-rotary", "--allow unset-rotary"});
       }
       s.rotary_letters[i] = letter;
       s.rotary_source_deg[i] = v_deg.value_or(0.0);
@@ -125,8 +141,11 @@ struct nc_source {
 struct cl_source {
   static constexpr bool needs_tcp = false;
   static constexpr bool has_angles = false;
+  static constexpr std::size_t rounded_values = 1;  // the vector
+  /// CL data names no machine axes: nothing to check against a machine.
+  static bool check(const program::block&, const source_context&) { return true; }
   static std::optional<std::string> pose(const program::modal_state& modal, source_step& s, std::string&,
-                                         std::vector<std::string>&, bool) {
+                                         std::vector<program::diagnostic>&, const program::block&, bool) {
     s.u_source = modal.tool_axis.value_or(unit_z);
     if (!(norm(s.u_source) > 0.5)) return std::string("tool-axis vector of zero length");
     return std::nullopt;
@@ -139,13 +158,26 @@ struct cl_source {
 template <class Source>
 class source_walker {
  public:
+  /// Sets the program's dialect and angle tolerance (`ctx.out` is ignored) and the refusals
+  /// allowed; before the first `next`.
+  void configure(const source_context& ctx, const allowances& allow) {
+    context_ = ctx;
+    allow_ = allow;
+  }
+
   /// The step of block `b`; `kinematics`: whether to compute the tool axis and
   /// `source_step::principal` of a motion step (else only its angles).
   source_step next(const program::block& b, translation* out, bool kinematics) {
-    const report to{out};
+    const report to{out, &allow_};
     const program::modal_state before = modal_;
     modal_.apply(b);
     source_step s;
+    source_context ctx = context_;
+    ctx.out = out;
+    if (b.moves() && !Source::check(b, ctx)) {
+      s.what = source_step::kind::failed;
+      return s;
+    }
     if (b.machine_coordinates || b.passthrough) {
       s.what = source_step::kind::passthrough;
       to.warn(at(b, b.machine_coordinates ? "machine-coordinate move passed through unchanged, not through "
@@ -156,12 +188,12 @@ class source_walker {
     if (!b.moves()) return s;  // copy
     s.what = source_step::kind::failed;
     if (!tool_tip(b, before, s, to)) return s;
-    std::vector<std::string> notes;
-    if (auto error = Source::pose(modal_, s, warned_letters_, notes, kinematics)) {
+    std::vector<program::diagnostic> notes;
+    if (auto error = Source::pose(modal_, s, warned_letters_, notes, b, kinematics)) {
       to.fail(at(b, *error));
       return s;
     }
-    for (auto& note : notes) to.warn(at(b, std::move(note)));
+    for (auto& note : notes) to.refuse(std::move(note));
     s.feed_mode = modal_.feed_mode;
     if (modal_.feed_mode == program::feed_unit::per_minute) s.feed_mm_per_min = modal_.feed;
     if (program::is_arc(s.motion) && !arc_of(b, before, s, to)) return s;
@@ -172,15 +204,21 @@ class source_walker {
  private:
   program::modal_state modal_;
   std::string warned_letters_;  // rotary axes already warned about as having no value
+  source_context context_;
+  allowances allow_;
 
   /// Where diagnostics go: the result of the first pass, or nowhere.
   struct report {
     translation* out;
+    const allowances* allow;
     void warn(program::diagnostic d) const {
       if (out) out->warnings.push_back(std::move(d));
     }
     void fail(program::diagnostic d) const {
       if (out) out->errors.push_back(std::move(d));
+    }
+    void refuse(program::diagnostic d) const {
+      if (out) out->refuse(std::move(d), *allow);
     }
   };
 

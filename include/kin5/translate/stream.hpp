@@ -9,7 +9,13 @@
 /// The output is written only while the run is clean: once any error is known (a reader error
 /// stops before pass 2; a translation error; a block the output dialect cannot say; the sink
 /// failing), nothing more reaches the sink, so the sink holds the whole program exactly when
-/// `ok` holds. The `kin5` tool and the laws run this same code.
+/// `ok` holds. A program with no block at all (empty, or blank lines only) is an input error:
+/// there is nothing to translate, and an empty output would pass for one. Input read as APT CL
+/// data that is an NC program (recognised by its markers, or with no GOTO/ and statements that
+/// are not APT) is an input error too, not a program of comments. `stream_text` scans the text
+/// for its resolution first (`program::scan_resolution`), for the default angle tolerance and
+/// the output's decimals (precision.hpp); a caller of `stream_blocks` gives it to the translator
+/// (`block_translator::source_resolution`). The `kin5` tool and the laws run this same code.
 /// @code
 ///   auto t = kin5::make_translator<From, To>(program::dialect::siemens, "part.mpf", options);
 ///   kin5::string_sink out;  // or the tool's output file: any `text_sink`
@@ -26,6 +32,7 @@
 #include <string>
 #include <string_view>
 
+#include "../program/address_words.hpp"
 #include "../program/block.hpp"
 #include "../program/block_store.hpp"
 #include "../program/io.hpp"
@@ -65,6 +72,26 @@ struct stream_result {
   }
 };
 
+/// Whether block `b` says nothing: blanks only (a reader may pass a blank line on as text).
+inline bool blank(const program::block& b) {
+  if (b.text.find_first_not_of(" \t\f\v\r\n") != std::string::npos) return false;
+  program::block content = b;
+  content.where = {};
+  content.text.clear();
+  content.passthrough = false;
+  return content == program::block{};
+}
+
+/// Why a file read as APT CL data is not: it moves the tool nowhere and `not_understood` of its
+/// statements are not APT (an NC program given to `post` would otherwise become comments).
+inline std::string not_cl_data(std::size_t not_understood, std::optional<program::dialect> looks_like = {}) {
+  std::string why = "not APT CL data: ";
+  why += looks_like ? "it reads as a " + std::string(program::name(*looks_like)) + " NC program (by its markers)"
+                    : "no GOTO/ moves the tool and " + std::to_string(not_understood) +
+                          (not_understood == 1 ? " statement is" : " statements are") + " not APT";
+  return why + "; post reads CL data, translate and reverse read NC programs";
+}
+
 /// Both passes of `t` over the blocks `read` gives (see the file comment); output blocks are
 /// written in `output_language` to `sink`.
 template <text_sink Sink>
@@ -72,13 +99,23 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
                             program::dialect source_language, program::dialect output_language, Sink& sink) {
   stream_result run;
   program::block_store records(file);
+  bool says_something = false;  // a block with more than blanks
+  std::size_t moving = 0, not_understood = 0;
   read(run.input, [&](program::block&& b) {
+    says_something = says_something || !blank(b);
+    moving += b.moves() ? 1 : 0;
+    not_understood += b.passthrough ? 1 : 0;
     t.plan(b);
     records.push(b, second_pass_reads_text(b));
   });
+  if (run.input.ok() && !says_something)
+    run.input.errors.push_back(translate_detail::file_error(file, "empty program: no block to translate"));
+  if (run.input.ok() && source_language == program::dialect::apt && moving == 0 && not_understood > 0)
+    run.input.errors.push_back(translate_detail::file_error(file, not_cl_data(not_understood)));
   if (!run.input.ok()) return run;
 
-  program::block_writer writer(output_language, source_language, file);
+  program::block_writer writer(output_language, source_language, file,
+                               write_settings_for(output_language, t.result().output_decimals));
   const program::block_sink emit = [&](program::block&& o) {
     if (run.writer_error || run.sink_failed || !t.result().ok()) return;
     try {
@@ -101,8 +138,16 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
 template <text_sink Sink>
 stream_result stream_text(block_translator& t, std::string text, program::dialect source_language,
                           const std::string& file, program::dialect output_language, Sink& sink) {
+  const program::number_resolution resolution = program::scan_resolution(text, source_language);
+  t.source_resolution(resolution);
   const block_source read = [&](program::read_result& diagnostics, const program::block_sink& on_block) {
+    const auto guessed = source_language == program::dialect::apt ? program::guess_dialect(text) : std::nullopt;
+    if (guessed && *guessed != program::dialect::apt) {  // NC given as CL data: refused before reading
+      diagnostics.errors.push_back(translate_detail::file_error(file, not_cl_data(0, guessed)));
+      return;
+    }
     program::read_blocks(source_language, text, file, diagnostics, on_block);
+    if (diagnostics.resolution.empty()) diagnostics.resolution = resolution;
     std::string().swap(text);  // freed (assigning an empty string would keep the capacity)
   };
   return stream_blocks(t, read, file, source_language, output_language, sink);

@@ -72,7 +72,9 @@ TEST_CASE("two passes block by block write what translate + write produce, and c
     RC_ASSERT(counted == whole.per_class);
     RC_ASSERT(streamed.reports.size() == exception_lines.size());
     for (std::size_t i = 0; i < exception_lines.size(); ++i) RC_ASSERT(streamed.reports[i].where.line == exception_lines[i]);
-    if (whole.ok()) RC_ASSERT(out.text == program::write(options.output_dialect, whole.output));
+    if (whole.ok())
+      RC_ASSERT(out.text == program::write(options.output_dialect, whole.output,
+                                           write_settings_for(options.output_dialect, whole.output_decimals)));
   });
 }
 
@@ -84,9 +86,9 @@ std::string siemens_program(std::size_t lines, std::size_t bad_line = 0) {
   std::string text = "N10 TRAORI\n";
   for (std::size_t k = 1; k <= lines; ++k) {
     const double t = static_cast<double>(k) / static_cast<double>(lines);
-    text += "N" + std::to_string(10 * (k + 1)) + " G1 X" + std::to_string(100.0 * t) + " Y" +
-            std::to_string(-50.0 * t) + " Z50 A" + std::to_string(-20.0 - 40.0 * t) + " B" +
-            std::to_string(-30.0 + 60.0 * t) + (k == bad_line ? " F7..0\n" : " F700\n");
+    auto number = [](double v) { return translate_detail::fixed(v, 4); };  // what the TNC output reads
+    text += "N" + std::to_string(10 * (k + 1)) + " G1 X" + number(100.0 * t) + " Y" + number(-50.0 * t) + " Z50 A" +
+            number(-20.0 - 40.0 * t) + " B" + number(-30.0 + 60.0 * t) + (k == bad_line ? " F7..0\n" : " F700\n");
   }
   return text + "N" + std::to_string(10 * (lines + 2)) + " M30\n";
 }
@@ -118,7 +120,8 @@ TEST_CASE("the streaming driver over text: the whole output, or nothing after an
   REQUIRE(read.ok());
   const translation whole = translate<From, To>(read.parsed, options);
   REQUIRE(whole.ok());
-  const std::string expected = program::write(options.output_dialect, whole.output);
+  const std::string expected = program::write(options.output_dialect, whole.output,
+                                              write_settings_for(options.output_dialect, whole.output_decimals));
   REQUIRE(expected.size() > (std::size_t{1} << 20));
 
   SECTION("a clean run gives the sink every byte, in order, across flushes") {

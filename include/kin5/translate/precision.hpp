@@ -1,0 +1,138 @@
+/// @file translate/precision.hpp
+/// How many decimals the output writes, per word class (linear, angle, feed and speed, tool-axis
+/// vector): at least as many as the source writes, at least the output dialect's usual, and no
+/// more than its controller reads —
+///
+///     decimals = min(max(source decimals, usual), finest)        per class
+///     linear and angle = --digits when given (overrides both bounds, knowingly)
+///
+/// so a 4-decimal source is no longer written with 3, and a value is never written finer than
+/// the controller's input resolution (where it would be an input error or silently rounded).
+/// Positions or angles an NC source writes finer than the controller reads are refused
+/// (`--digits` rounds them knowingly); feeds and vectors finer than it, angles derived from
+/// vectors and CL data's positions are written to the controller's resolution with a warning. Angles and vectors are converted into each other where the source has one
+/// and the output the other: a vector component's last place 10⁻ᵛ rad needs v − 1 decimals of a
+/// degree; an angle's 10⁻ᵃ° (1.75·10⁻⁽ᵃ⁺²⁾ rad) needs a + 2 decimals of a vector.
+///
+/// The controllers' resolutions (`dialect_resolutions`; docs/dialects/*.md cite them):
+/// | dialect | usual (linear, angle, feed, vector) | finest | source |
+/// |---|---|---|---|
+/// | heidenhain | 3, 3, 1, 7 | 4, 4, 3, 7 | TNC 640 User's Manual DIN/ISO 1/2015, §19.3 p. 631 |
+/// | siemens | 3, 3, 1, 7 | 6, 6, 3, 9 | 840Di Manual (HBI) 06/2003 §10.3.1: input rounded to MD10200/MD10210 |
+/// | iso | 3, 3, 1, 7 | 4, 4, 3, 7 | increment system IS-C (Mitsubishi M700V §2.1); IS-B rounds the 4th |
+/// | apt | 3, 3, 1, 7 | 6, 6, 6, 9 | CL data: no controller |
+/// @code
+///   kin5::precision_notes notes;
+///   const auto d = kin5::output_decimals(read.resolution, program::dialect::heidenhain, std::nullopt, &notes);
+///   program::block_writer writer(program::dialect::heidenhain, source, file,
+///                                kin5::write_settings_for(program::dialect::heidenhain, d));
+/// @endcode
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+
+#include "../program/io.hpp"
+#include "../program/resolution.hpp"
+
+namespace kin5 {
+
+/// What a dialect's controller reads: the decimals written by default and the finest it takes.
+struct dialect_resolution {
+  program::dialect language;
+  program::word_decimals usual;   ///< written when the source is no finer
+  program::word_decimals finest;  ///< the controller's input resolution
+};
+
+/// Per dialect (see the file comment; to move into each entry of the dialect list).
+inline constexpr std::array<dialect_resolution, 4> dialect_resolutions{{
+    {program::dialect::heidenhain, {3, 3, 1, 7}, {4, 4, 3, 7}},
+    {program::dialect::siemens, {3, 3, 1, 7}, {6, 6, 3, 9}},
+    {program::dialect::iso, {3, 3, 1, 7}, {4, 4, 3, 7}},
+    {program::dialect::apt, {3, 3, 1, 7}, {6, 6, 6, 9}},
+}};
+
+/// The entry of `dialect_resolutions` for `d`.
+constexpr const dialect_resolution& resolution_of(program::dialect d) {
+  for (const auto& r : dialect_resolutions)
+    if (r.language == d) return r;
+  return dialect_resolutions[0];
+}
+
+/// The source's decimals per class, angles and vectors standing in for each other where one is
+/// missing (see the file comment); empty where the source writes neither.
+inline program::number_resolution source_decimals(const program::number_resolution& source) {
+  program::number_resolution r = source;
+  if (!r.angle_decimals && source.vector_decimals) r.angle_decimals = *source.vector_decimals - 1;
+  if (!r.vector_decimals && source.angle_decimals) r.vector_decimals = *source.angle_decimals + 2;
+  if (!r.feed_decimals) r.feed_decimals = source.speed_decimals;
+  else if (source.speed_decimals) r.feed_decimals = std::max(*r.feed_decimals, *source.speed_decimals);
+  return r;
+}
+
+/// What `output_decimals` says about the source's resolution against the output controller's.
+struct precision_notes {
+  /// Positions or angles the source writes finer than the controller reads: refused (an error
+  /// naming `--digits`), since rounding them changes what the machine does; empty if none.
+  std::string refused;
+  /// Other classes rounded to the controller's resolution (feeds, vectors, angles derived from
+  /// a CL vector): a warning; empty if none.
+  std::string rounded;
+};
+
+/// The decimals to write a program whose source writes `source` in dialect `out` (see the file
+/// comment), and in `notes` what cannot be kept. `--digits` (`digits`) chooses positions and
+/// angles knowingly: nothing is refused then. `source_is_cl`: the source is CL data, whose
+/// decimals are the CAM system's arithmetic, not a controller's input: rounded with a warning.
+inline program::word_decimals output_decimals(const program::number_resolution& source, program::dialect out,
+                                              std::optional<int> digits, precision_notes* notes = nullptr,
+                                              bool source_is_cl = false) {
+  const dialect_resolution& limits = resolution_of(out);
+  const program::number_resolution s = source_decimals(source);
+  precision_notes said;
+  auto pick = [&](const std::optional<int>& wanted, int usual, int finest, std::string_view what, bool written) {
+    const int d = std::max(wanted.value_or(usual), usual);
+    if (d <= finest) return d;
+    std::string& to = written && !digits && !source_is_cl ? said.refused : said.rounded;
+    to += (to.empty() ? "" : "; ") + std::string(what) + " with " + std::to_string(d) + " decimals, " +
+          std::string(program::name(out)) + " reads " + std::to_string(finest);
+    return finest;
+  };
+  program::word_decimals d;
+  d.linear = pick(s.linear_decimals, limits.usual.linear, limits.finest.linear, "positions", true);
+  d.angle = pick(s.angle_decimals, limits.usual.angle, limits.finest.angle, "angles", source.angle_decimals.has_value());
+  d.feed = pick(s.feed_decimals, limits.usual.feed, limits.finest.feed, "feeds", false);
+  d.vector = pick(s.vector_decimals, limits.usual.vector, limits.finest.vector, "tool-axis vectors", false);
+  if (digits) {
+    d.linear = d.angle = *digits;
+    said = {};
+  }
+  if (notes) {
+    if (!said.refused.empty())
+      notes->refused = "the source writes " + said.refused + ": rounding them would move the machine elsewhere " +
+                       "(--digits N rounds positions and angles knowingly)";
+    if (!said.rounded.empty())
+      notes->rounded = "the source writes " + said.rounded + ": written to the controller's resolution";
+  }
+  return d;
+}
+
+/// Writer settings for dialect `out` with decimals `d` (the other dialects' stay at their defaults).
+inline program::write_settings write_settings_for(program::dialect out, const program::word_decimals& d) {
+  program::write_settings settings;
+  program::for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t) {
+    if (D::id != out) return;
+    auto& o = settings.of<D>();
+    o.linear_decimals = d.linear;
+    o.angle_decimals = d.angle;
+    o.feed_decimals = d.feed;
+    o.vector_decimals = d.vector;
+  });
+  return settings;
+}
+
+}  // namespace kin5

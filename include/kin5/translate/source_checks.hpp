@@ -1,0 +1,141 @@
+/// @file translate/source_checks.hpp
+/// Checks of an NC block against its own machine, before any kinematics: a program that does
+/// not fit the machine it names cannot mean anything on another one.
+///
+///  - a rotary axis word the machine does not have (`A+30` for `dmu-80p`, whose rotary axes are
+///    B and C) is an error at the word: the reader has no machine and keeps it, and the
+///    kinematics would drop it — silently, were it not checked;
+///  - a rotary value outside its axis' travel by more than the angle tolerance
+///    (`angle_tolerance.hpp`) is an error naming the travel (A−150 on `sajo-12000p`, whose A
+///    travels over [−120°, 30°]).
+///
+/// Both are checked in every block with axis words, machine-coordinate moves included. The
+/// reader keeps no column per word, so the word is found again in the block's first line
+/// (`program::for_each_address_word`); where it is not found there, the block's start is named.
+/// @code
+///   kin5::translate_detail::source_context ctx{program::dialect::siemens, 0.0005_deg, &result};
+///   if (!kin5::translate_detail::check_source_axes<kin5::machines::sajo_12000p>(block, ctx)) fail();
+/// @endcode
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "../core/units.hpp"
+#include "../kinematics/machine.hpp"
+#include "../program/address_words.hpp"
+#include "../program/block.hpp"
+#include "../program/dialect.hpp"
+#include "angle_tolerance.hpp"
+#include "options.hpp"
+
+namespace kin5::translate_detail {
+
+/// What the source checks of one program need: its dialect, the angle tolerance, and where
+/// diagnostics go (nowhere in the second pass, which sees the same blocks again).
+struct source_context {
+  program::dialect language = program::dialect::siemens;
+  degrees tolerance = widest_default_angle_tolerance;
+  translation* out = nullptr;
+  std::string_view machine_option = "--from";  ///< the option that names the source machine
+};
+
+/// An address word of block `b` found again in its first line: where it starts and how it is
+/// written; empty when it is not found there.
+struct located_word {
+  program::source_location where;
+  std::string text;
+};
+
+/// The first word with letter `letter` in the first line of `b` (see the file comment).
+inline std::optional<located_word> locate_word(const program::block& b, char letter, program::dialect language) {
+  const std::string_view text = b.text;
+  const std::string_view line = text.substr(0, text.find('\n'));
+  std::size_t first = 0;  // b.where names the first non-blank byte of the line
+  while (first < line.size() && program::is_space(line[first])) ++first;
+  std::optional<located_word> found;
+  program::for_each_address_word(line, language, [&](const program::address_word& w) {
+    if (found || w.letter != letter || w.offset < first) return;
+    program::source_location where = b.where;
+    where.column = b.where.column + (w.offset - first);
+    found = located_word{where, std::string(w.text)};
+  });
+  return found;
+}
+
+/// `v` with as few decimals as it needs, at most 6: "-120", "30", "0.0005".
+inline std::string short_number(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6f", v);
+  std::string s(buf);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  if (s == "-0") s = "0";
+  return s;
+}
+
+/// `v` degrees as `short_number` writes it, with the degree sign.
+inline std::string degrees_text(double v) { return short_number(v) + "°"; }
+
+/// The rotary words of `b` that machine From checks: letter and value, in A B C order.
+struct rotary_value {
+  char letter;
+  std::optional<double> value_deg;
+};
+inline std::array<rotary_value, 3> rotary_values(const program::block& b) {
+  return {{{'A', b.axes.a_deg}, {'B', b.axes.b_deg}, {'C', b.axes.c_deg}}};
+}
+
+/// "B and C", "A": the rotary letters of machine From, in alphabetical order.
+template <machine From>
+std::string rotary_letters() {
+  std::string s;
+  for (char letter : {'A', 'B', 'C'})
+    if (rotary_index<From>(static_cast<axis_letter>(letter)) < rotary_count<From>)
+      s += std::string(s.empty() ? "" : " and ") + letter;
+  return s;
+}
+
+/// Checks block `b` of a program for machine From (see the file comment); false when it has an
+/// error, reported to `ctx.out` when given. The same answer in every pass.
+template <machine From>
+bool check_source_axes(const program::block& b, const source_context& ctx) {
+  bool ok = true;
+  for (const rotary_value& w : rotary_values(b)) {
+    if (!w.value_deg) continue;
+    const auto located = locate_word(b, w.letter, ctx.language);
+    const program::source_location where = located ? located->where : b.where;
+    const std::string word = located ? located->text : std::string(1, w.letter) + short_number(*w.value_deg);
+    const std::size_t i = rotary_index<From>(static_cast<axis_letter>(w.letter));
+    if (i == rotary_count<From>) {
+      ok = false;
+      if (ctx.out)
+        ctx.out->errors.push_back({where,
+                                   word + ": " + std::string(From::id) + " has no " + w.letter +
+                                       " axis (its rotary axes are " + rotary_letters<From>() +
+                                       "): the program is not for this machine",
+                                   word, std::string(ctx.machine_option)});
+      continue;
+    }
+    const rotary_travel& travel = From::rotary[i].travel;
+    if (travel.continuous) continue;
+    const double v = *w.value_deg;
+    const double excess = v < travel.lower.value ? travel.lower.value - v : v - travel.upper.value;
+    if (!(excess > ctx.tolerance.value) && std::isfinite(v)) continue;
+    ok = false;
+    if (ctx.out)
+      ctx.out->errors.push_back(
+          {where,
+           word + ": outside the travel of " + w.letter + " on " + std::string(From::id) + ", [" +
+               degrees_text(travel.lower.value) + ", " + degrees_text(travel.upper.value) + "], by " +
+               degrees_text(excess) + " (angle tolerance " + degrees_text(ctx.tolerance.value) + ")",
+           word, excess <= 10.0 * ctx.tolerance.value ? "--angle-tolerance" : ""});
+  }
+  return ok;
+}
+
+}  // namespace kin5::translate_detail
