@@ -346,6 +346,21 @@ case "$name" in
     run 0 translate --from sajo-12000p --to dmu-80p --digits 2 -o d2.h fine.mpf
     [ -n "$(line_with d2.h X 34.98)" ] || { report "--digits 2"; show d2.h; }
     ;;
+  m-codes)
+    # An M function whose meaning is the machine maker's (Heidenhain M126, shortest rotary path)
+    # is refused at its word in another dialect, or dropped knowingly with --m-map; M3 and M8
+    # mean the same everywhere and are carried.
+    printf '%s\n' '0 BEGIN PGM M MM' '1 M128' '2 L X+0 Y+0 Z+50 B+10 C+0 F500 M3' '3 M126' '4 L X+1 M8' \
+      '5 M129' '6 END PGM M MM' >m.h
+    run 2 translate --from dmu-80p --to dmu-80p --to-dialect iso -o m.nc m.h
+    grep -q '^m\.h:4:3: error: M126: ' err || { report "M126 not refused at 4:3"; show err; }
+    grep -q -- '--m-map 126=' err || report "the option is not named"
+    [ -e m.nc ] && report "m.nc written"
+    run 0 translate --from dmu-80p --to dmu-80p --to-dialect iso --m-map 126= -o m.nc m.h
+    grep -q 'M126' m.nc && { report "M126 written"; show m.nc; }
+    grep -q 'M3' m.nc && grep -q 'M8' m.nc || { report "M3 or M8 lost"; show m.nc; }
+    run 1 translate --from dmu-80p --to dmu-80p --to-dialect iso --m-map 126 -o m.nc m.h
+    ;;
   setup)
     # A setup given three ways. T of (K10) written as a matrix and as the half turn about
     # (0,1,1) ((K10): T = R((0,1,1)/sqrt2, 180 deg)) must give Table 1 exactly as the default.

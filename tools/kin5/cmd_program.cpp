@@ -297,6 +297,7 @@ struct common_arguments {
   std::optional<double> angle_tolerance_deg;
   std::vector<std::string> allow;
   std::optional<int> digits;
+  std::vector<std::string> m_map;
 };
 
 /// `common_options` from `a`; prints the reason and returns nothing on bad input.
@@ -320,6 +321,11 @@ std::optional<common_options> parse_common(std::string_view command, const commo
     return std::nullopt;
   }
   c.digits = a.digits;
+  for (const auto& entry : a.m_map)
+    if (!c.m_codes.add(entry)) {
+      std::cerr << "kin5 " << command << ": --m-map: '" << entry << "' is neither N=M (rename) nor N= (drop)\n";
+      return std::nullopt;
+    }
   return c;
 }
 
@@ -332,6 +338,9 @@ void add_common_options(CLI::App* sub, common_arguments& a) {
   sub->add_option("--digits", a.digits,
                   "Decimals of positions and angles in OUT (default: the source's, within what the output "
                   "controller reads)");
+  sub->add_option("--m-map", a.m_map,
+                  "Into another dialect, write M function N as M (N=M) or drop it (N=); other M functions "
+                  "whose meaning is the machine maker's are refused");
 }
 
 struct translate_arguments {

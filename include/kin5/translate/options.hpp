@@ -26,6 +26,7 @@
 #include "../program/block.hpp"
 #include "allowances.hpp"
 #include "feed.hpp"
+#include "m_codes.hpp"
 
 namespace kin5 {
 
@@ -40,6 +41,8 @@ struct common_options {
   /// Decimals of every position word (linear and angle) in the output, overriding the source's
   /// resolution and the output dialect's limits (precision.hpp): rounding chosen knowingly.
   std::optional<int> digits;
+  /// M functions renamed or dropped on the way into another dialect (m_codes.hpp).
+  m_map m_codes;
 };
 
 /// How to translate.

@@ -115,8 +115,13 @@ class two_pass_translator final : public block_translator {
     if (!planned_) target_.finish_plan(), planned_ = true;
     source_step s = second_.next(b, nullptr, !Target::plans_with_tool_axis);
     if (Target::plans_with_tool_axis && s.what == source_step::kind::motion) s.principal = principal_[motion_++];
+    std::optional<program::block> mapped;  // with the user's M mapping (`--m-map`), when it applies
+    if (!common_.m_codes.empty() && !b.m_codes.empty() && source_.language != source_.output) {
+      mapped = b;
+      mapped->m_codes = mapped_m_codes(b, common_.m_codes);
+    }
     target_.write(
-        b, s, result_,
+        mapped ? *mapped : b, s, result_,
         [&](program::block&& o) {
           ++result_.blocks_written;
           emit(std::move(o));
@@ -154,6 +159,8 @@ class two_pass_translator final : public block_translator {
       result_.errors.push_back(std::move(d));
     }
     source_.tolerance = common_.angle_tolerance.value_or(default_angle_tolerance(resolution_));
+    source_.output = result_.output.language;
+    source_.m_codes = &common_.m_codes;
     result_.angle_tolerance = source_.tolerance;
     first_.configure(source_, common_.allow);
     second_.configure(source_, common_.allow);

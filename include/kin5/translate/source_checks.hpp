@@ -21,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -31,6 +32,7 @@
 #include "../program/block.hpp"
 #include "../program/dialect.hpp"
 #include "angle_tolerance.hpp"
+#include "m_codes.hpp"
 #include "options.hpp"
 
 namespace kin5::translate_detail {
@@ -42,6 +44,8 @@ struct source_context {
   degrees tolerance = widest_default_angle_tolerance;
   translation* out = nullptr;
   std::string_view machine_option = "--from";  ///< the option that names the source machine
+  program::dialect output = program::dialect::siemens;  ///< the dialect written
+  const m_map* m_codes = nullptr;                        ///< the user's M mapping (`--m-map`), if any
 };
 
 /// An address word of block `b` found again in its first line: where it starts and how it is
@@ -51,8 +55,10 @@ struct located_word {
   std::string text;
 };
 
-/// The first word with letter `letter` in the first line of `b` (see the file comment).
-inline std::optional<located_word> locate_word(const program::block& b, char letter, program::dialect language) {
+/// The first word with letter `letter` (and value `value`, when given) in the first line of `b`
+/// (see the file comment).
+inline std::optional<located_word> locate_word(const program::block& b, char letter, program::dialect language,
+                                               std::optional<double> value = std::nullopt) {
   const std::string_view text = b.text;
   const std::string_view line = text.substr(0, text.find('\n'));
   std::size_t first = 0;  // b.where names the first non-blank byte of the line
@@ -60,6 +66,9 @@ inline std::optional<located_word> locate_word(const program::block& b, char let
   std::optional<located_word> found;
   program::for_each_address_word(line, language, [&](const program::address_word& w) {
     if (found || w.letter != letter || w.offset < first) return;
+    if (value && !(std::abs(std::strtod(std::string(w.text.substr(w.text[1] == '=' ? 2 : 1)).c_str(), nullptr) -
+                            *value) < 1e-9))
+      return;
     program::source_location where = b.where;
     where.column = b.where.column + (w.offset - first);
     found = located_word{where, std::string(w.text)};
@@ -134,6 +143,29 @@ bool check_source_axes(const program::block& b, const source_context& ctx) {
                degrees_text(travel.lower.value) + ", " + degrees_text(travel.upper.value) + "], by " +
                degrees_text(excess) + " (angle tolerance " + degrees_text(ctx.tolerance.value) + ")",
            word, excess <= 10.0 * ctx.tolerance.value ? "--angle-tolerance" : ""});
+  }
+  return ok;
+}
+
+/// Checks the M functions of block `b` against the output dialect (m_codes.hpp): each is
+/// carried when its meaning is shared or the user maps it, else refused at its word. False on
+/// an error, reported to `ctx.out` when given.
+inline bool check_m_codes(const program::block& b, const source_context& ctx) {
+  bool ok = true;
+  for (int m : b.m_codes) {
+    if (shared_m_code(m, ctx.language, ctx.output, b.machine_coordinates)) continue;
+    if (ctx.m_codes && ctx.m_codes->target_of(m)) continue;
+    ok = false;
+    if (!ctx.out) continue;
+    const auto located = locate_word(b, 'M', ctx.language, static_cast<double>(m));
+    const std::string word = "M" + std::to_string(m);
+    ctx.out->errors.push_back(
+        {located ? located->where : b.where,
+         word + ": an M function of " + std::string(program::name(ctx.language)) +
+             " whose meaning is the machine maker's; it is not written into " +
+             std::string(program::name(ctx.output)) + " (--m-map " + std::to_string(m) + "=N renames it, --m-map " +
+             std::to_string(m) + "= drops it)",
+         word, "--m-map " + std::to_string(m) + "="});
   }
   return ok;
 }

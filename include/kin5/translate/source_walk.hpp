@@ -174,7 +174,7 @@ class source_walker {
     source_step s;
     source_context ctx = context_;
     ctx.out = out;
-    if (b.moves() && !Source::check(b, ctx)) {
+    if ((!b.m_codes.empty() && !check_m_codes(b, ctx)) || (b.moves() && !Source::check(b, ctx))) {
       s.what = source_step::kind::failed;
       return s;
     }

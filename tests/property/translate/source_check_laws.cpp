@@ -324,3 +324,49 @@ TEST_CASE("post refuses an NC program given as CL data, and nothing reaches the 
   // CL data with a statement kin5 does not read still posts (with its warning).
   CHECK(post_text("PARTNO P\nUNITS/MM\nFEDRAT/MMPM,500.0\nGOTO/0.0,0.0,10.0,0.0,0.0,1.0\nFINI\n").ok());
 }
+
+TEST_CASE("M functions whose meaning is the machine maker's are refused across dialects, or mapped knowingly") {
+  using M = machines::dmu_80p;
+  const std::string text = "0 BEGIN PGM T MM\n1 M128\n2 L X+0 Y+0 Z+50 B+10 C+0 F500 M3\n3 M126\n4 L X+1 M8\n"
+                           "5 M129\n6 END PGM T MM\n";
+  const auto run = [&](dialect out, const std::vector<std::string>& map) {
+    auto options = test::options(feed_policy::tcp, out);
+    for (const auto& m : map) REQUIRE(options.common.m_codes.add(m));
+    const auto t = make_translator<M, M>(dialect::heidenhain, "m.h", options);
+    string_sink written;
+    const auto r = stream_text(*t, text, dialect::heidenhain, "m.h", out, written);
+    REQUIRE(r.input.ok());
+    return std::pair{t->result(), r.ok(*t) ? written.text : std::string()};
+  };
+  for (dialect out : {dialect::siemens, dialect::iso}) {
+    const auto [refused, nothing] = run(out, {});
+    REQUIRE(refused.errors.size() == 1);
+    CHECK(refused.errors[0].where.line == 4);
+    CHECK(refused.errors[0].where.column == 3);
+    CHECK(refused.errors[0].construct == "M126");
+    CHECK(refused.errors[0].option == "--m-map 126=");
+    CHECK(nothing.empty());
+    const auto [dropped, without] = run(out, {"126="});
+    CHECK(dropped.ok());
+    CHECK(without.find("M126") == std::string::npos);
+    CHECK(without.find("M3") != std::string::npos);  // shared: carried
+    CHECK(without.find("M8") != std::string::npos);
+    const auto [renamed, with] = run(out, {"126=86"});
+    CHECK(renamed.ok());
+    CHECK(with.find("M86") != std::string::npos);
+  }
+  const auto [same, copied] = run(dialect::heidenhain, {});  // within one dialect: copied
+  CHECK(same.ok());
+  CHECK(copied.find("M126") != std::string::npos);
+
+  // The shared table: mist (M7) has no TNC standard function; M7 between G-code dialects passes.
+  CHECK_FALSE(shared_m_code(7, dialect::siemens, dialect::heidenhain, false));
+  CHECK(shared_m_code(7, dialect::siemens, dialect::iso, false));
+  CHECK_FALSE(shared_m_code(99, dialect::heidenhain, dialect::iso, false));  // cycle call vs subprogram return
+  CHECK(shared_m_code(91, dialect::heidenhain, dialect::iso, true));
+  CHECK_FALSE(shared_m_code(91, dialect::heidenhain, dialect::iso, false));
+  m_map bad;
+  CHECK_FALSE(bad.add("126"));
+  CHECK_FALSE(bad.add("x=1"));
+  CHECK_FALSE(bad.add("1=-2"));
+}

@@ -1,0 +1,99 @@
+/// @file translate/m_codes.hpp
+/// M functions across dialects. Outside a few numbers that DIN 66025 / ISO 6983 fix and every
+/// kin5 dialect reads the same way, an M function means what the machine maker made it mean:
+/// Heidenhain `M126` (shortest rotary path) or `M99` (cycle call) is a subprogram return on a
+/// Fanuc control, `M13` is spindle and coolant on a TNC and a rotary lock on a Haas. So an M
+/// code is written into a program of another dialect only when its meaning is shared
+/// (`shared_m_code`) or the user maps it (`m_map`, `--m-map N=M` renames, `--m-map N=` drops it
+/// knowingly); any other is refused at its word.
+///
+/// | M | meaning | carried between |
+/// |---|---|---|
+/// | 0, 1 | program stop, optional stop | every dialect |
+/// | 2, 30 | program end | every dialect (the writers write one end) |
+/// | 3, 4, 5 | spindle clockwise, counter-clockwise, stop | every dialect |
+/// | 6 | tool change | every dialect (the Heidenhain writer makes it part of TOOL CALL) |
+/// | 8, 9 | coolant on, off | every dialect |
+/// | 7 | mist coolant | Siemens, ISO, APT (`COOLNT/MIST`); a TNC has no standard M7 |
+/// | 91, 92 | machine coordinates (Heidenhain) | written as the target's machine-coordinate word |
+/// @code
+///   kin5::m_map map;
+///   if (!map.add("126=")) usage_error();       // drop M126
+///   const auto m = map.target_of(126);          // std::optional<std::optional<int>>: {nullopt}
+///   if (!kin5::shared_m_code(13, program::dialect::heidenhain, program::dialect::iso, false)) refuse();
+/// @endcode
+#pragma once
+
+#include <charconv>
+#include <vector>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "../program/block.hpp"
+
+namespace kin5 {
+
+/// Whether M function `m` of a block in dialect `from` means the same in dialect `to` (see the
+/// file comment); `machine_coordinates`: the block moves in machine coordinates.
+constexpr bool shared_m_code(int m, program::dialect from, program::dialect to, bool machine_coordinates) {
+  if (from == to) return true;
+  switch (m) {
+    case 0: case 1: case 2: case 3: case 4: case 5: case 6: case 8: case 9: case 30: return true;
+    case 7: return to != program::dialect::heidenhain && from != program::dialect::heidenhain;
+    case 91: case 92: return from == program::dialect::heidenhain && machine_coordinates;
+    default: return false;
+  }
+}
+
+/// The user's mapping of M functions into another dialect (`--m-map N=M`, `--m-map N=`).
+class m_map {
+ public:
+  /// Adds "N=M" (rename) or "N=" (drop); false, nothing changed, when `entry` is neither.
+  bool add(std::string_view entry) {
+    const auto eq = entry.find('=');
+    if (eq == std::string_view::npos) return false;
+    const auto from = number(entry.substr(0, eq));
+    if (!from) return false;
+    if (eq + 1 == entry.size()) {
+      map_[*from] = std::nullopt;
+      return true;
+    }
+    const auto to = number(entry.substr(eq + 1));
+    if (!to) return false;
+    map_[*from] = *to;
+    return true;
+  }
+  /// Empty when `m` is not mapped; else the M function written for it (empty: none).
+  std::optional<std::optional<int>> target_of(int m) const {
+    const auto it = map_.find(m);
+    if (it == map_.end()) return std::nullopt;
+    return it->second;
+  }
+  bool empty() const { return map_.empty(); }
+
+ private:
+  std::map<int, std::optional<int>> map_;
+
+  static std::optional<int> number(std::string_view s) {
+    int v = 0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc{} || end != s.data() + s.size() || v < 0 || s.empty()) return std::nullopt;
+    return v;
+  }
+};
+
+/// The M functions of `b` as written into a program of dialect `to` (mapped by `map`; the
+/// unmapped ones as they are).
+inline std::vector<int> mapped_m_codes(const program::block& b, const m_map& map) {
+  std::vector<int> out;
+  for (int m : b.m_codes) {
+    const auto t = map.target_of(m);
+    if (!t) out.push_back(m);
+    else if (*t) out.push_back(**t);
+  }
+  return out;
+}
+
+}  // namespace kin5
