@@ -201,13 +201,14 @@ case "$name" in
   number-range)
     # Numbers no NC program can hold are refused, never written as garbage: a setup offset
     # beyond 1e9 mm (exit 1), and an inverse-time F of 1/(1e-81 mm / 100 mm/min) (exit 2,
-    # naming the block).
+    # naming the block). --digits 4 lets the 81-decimal position past the precision check, so
+    # the number check itself is what refuses the block.
     run 1 $translate --setup-offset=1e100,0,0 -o o.h "$example"
     grep -q -- '--setup-offset: each number must be within' err || { report "no offset message"; show err; }
     run 1 $translate --setup-offset=1e20,0,0 -o o.h "$example"
     zeros=$(awk 'BEGIN { while (n++ < 80) printf "0" }')
     printf 'N10 TRAORI\nN20 G1 X0 Y0 Z0 A-10 B20 F100\nN30 G1 X0.%s1\nN40 M30\n' "$zeros" >tiny.mpf
-    run 2 $translate --to-dialect iso --feed inverse-time -o o.h tiny.mpf
+    run 2 $translate --to-dialect iso --feed inverse-time --digits 4 -o o.h tiny.mpf
     grep -q "^tiny.mpf:3:1: error: cannot write the program as iso: the number 1e+83 cannot be written" err || { report "no number message"; show err; }
     [ -e o.h ] && report "o.h written"
     ;;

@@ -109,7 +109,7 @@ TEST_CASE("the output keeps the source's decimals; finer than the output control
   });
 }
 
-TEST_CASE("--digits sets the decimals of positions and angles, whatever the source and the dialect") {
+TEST_CASE("the option --digits sets the decimals of positions and angles, whatever the source and the dialect") {
   rc::prop("digits 0 to 6", [] {
     const int digits = *rc::gen::inRange(0, 7);
     const dialect out = *rc::gen::elementOf(std::vector<dialect>(std::begin(nc_dialects), std::end(nc_dialects)));
