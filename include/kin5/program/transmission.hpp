@@ -4,6 +4,8 @@
 /// byte ETX (0x03) after the program's end (Heidenhain and Fanuc serial transfers end with it;
 /// files saved from such a transfer keep it). Only blanks and line ends may follow the ETX.
 ///
+/// A byte-order mark anywhere else is an error at its place: it is no part of any NC word, and
+/// a writer that kept it as text would put it at offset 0 of its output, where it would vanish.
 /// An ETX before the program has ended is an error at its place: the transfer ended the program
 /// early. Anything but blanks after it is read as program text (and the reader refuses the ETX
 /// byte there as it refuses any control byte).
@@ -53,10 +55,28 @@ constexpr transmitted_text strip_transmission(std::string_view text) {
 /// Runs `read(body, on_block')` on `text` without its transmission bytes; `on_block'` passes each
 /// block on and notes whether one ended the program. An ETX with no program end before it is an
 /// error at the ETX.
+/// Line and column (1-based) of byte `offset` of `text`, counting CR, LF and CR LF as line ends.
+constexpr std::pair<std::size_t, std::size_t> line_and_column(std::string_view text, std::size_t offset) {
+  std::size_t line = 1, start = 0;
+  for (std::size_t i = 0; i < offset; ++i) {
+    if (text[i] != '\n' && text[i] != '\r') continue;
+    if (text[i] == '\r' && i + 1 < offset && text[i + 1] == '\n') ++i;
+    ++line;
+    start = i + 1;
+  }
+  return {line, offset - start + 1};
+}
+
 template <class Read>
 void read_transmitted(std::string_view text, const std::string& file_path, read_result& diagnostics,
                       const block_sink& on_block, Read&& read) {
   const transmitted_text t = strip_transmission(text);
+  if (const std::size_t bom = t.body.find("\xEF\xBB\xBF"); bom != std::string_view::npos) {
+    const auto [line, column] = line_and_column(t.body, bom);
+    diagnostics.errors.push_back({{file_name(file_path), line, column},
+                                  "byte-order mark inside the program (one is allowed only at the start of the file)"});
+    return;
+  }
   if (t.etx_line == 0) {
     read(t.body, on_block);
     return;

@@ -53,6 +53,17 @@ TEST_CASE("transmission: a byte-order mark at offset 0 is skipped by every reade
   });
 }
 
+TEST_CASE("transmission: a byte-order mark after offset 0 is an error at its place, in every reader") {
+  each_dialect([](dialect d, const std::string& text, const std::string&) {
+    for (const std::string lead : {std::string("\x0c"), std::string(" "), text}) {
+      const read_result r = read(d, lead + "\xEF\xBB\xBF" + text, "p");
+      REQUIRE(!r.ok());
+      CHECK(r.errors.front().message.find("byte-order mark inside the program") != std::string::npos);
+      CHECK(r.errors.front().where.line == 1 + line_count(lead));
+    }
+  });
+}
+
 TEST_CASE("transmission: an ETX after the program end is skipped, with line ends after it") {
   each_dialect([](dialect d, const std::string& text, const std::string&) {
     const read_result plain = read(d, text, "p");
