@@ -76,7 +76,16 @@ inline std::size_t join_block(const std::vector<text_line>& lines, std::size_t l
     out.raw += t;
     out.lines.add(out.content.size(), lines[li].number, 1);
     if (continued && semicolon < end - 1) {  // `Q200=3 ;SET-UP CLEARANCE~`: the comment ends at the `~`
-      out.inner_comments.emplace_back(t.substr(semicolon + 1, end - 1 - semicolon - 1));
+      // A comment that itself ends in `~` would read as a continuation once written back at the
+      // end of a line: the `~`s (and the blanks before them) are not kept as its text.
+      std::size_t comment_end = end - 1;
+      for (;;) {
+        std::size_t k = comment_end;
+        while (k > semicolon + 1 && is_space(t[k - 1])) --k;
+        if (k <= semicolon + 1 || t[k - 1] != '~') break;
+        comment_end = k - 1;
+      }
+      out.inner_comments.emplace_back(t.substr(semicolon + 1, comment_end - semicolon - 1));
       out.content += t.substr(0, semicolon);
     } else {
       out.content += continued ? t.substr(0, end - 1) : t;
