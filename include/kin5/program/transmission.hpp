@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 
 #include "block.hpp"
@@ -27,34 +28,6 @@ struct transmitted_text {
   std::size_t etx_line = 0, etx_column = 0;  ///< 1-based
 };
 
-/// `text` without a byte-order mark at offset 0 and without a final ETX and the blanks and line
-/// ends after it.
-constexpr transmitted_text strip_transmission(std::string_view text) {
-  transmitted_text out;
-  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
-  std::size_t end = text.size();
-  while (end > 0 && (is_space(text[end - 1]) || text[end - 1] == '\n' || text[end - 1] == '\r')) --end;
-  if (end == 0 || text[end - 1] != '\x03') {
-    out.body = text;
-    return out;
-  }
-  out.body = text.substr(0, end - 1);
-  std::size_t line = 1, start = 0;
-  for (std::size_t i = 0; i + 1 < end; ++i) {
-    if (text[i] == '\n' || text[i] == '\r') {
-      if (text[i] == '\r' && i + 1 < end - 1 && text[i + 1] == '\n') ++i;
-      ++line;
-      start = i + 1;
-    }
-  }
-  out.etx_line = line;
-  out.etx_column = end - start;
-  return out;
-}
-
-/// Runs `read(body, on_block')` on `text` without its transmission bytes; `on_block'` passes each
-/// block on and notes whether one ended the program. An ETX with no program end before it is an
-/// error at the ETX.
 /// Line and column (1-based) of byte `offset` of `text`, counting CR, LF and CR LF as line ends.
 constexpr std::pair<std::size_t, std::size_t> line_and_column(std::string_view text, std::size_t offset) {
   std::size_t line = 1, start = 0;
@@ -67,6 +40,25 @@ constexpr std::pair<std::size_t, std::size_t> line_and_column(std::string_view t
   return {line, offset - start + 1};
 }
 
+/// `text` without a byte-order mark at offset 0 and without a final ETX and the blanks and line
+/// ends after it.
+constexpr transmitted_text strip_transmission(std::string_view text) {
+  transmitted_text out;
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
+  std::size_t end = text.size();
+  while (end > 0 && (is_space(text[end - 1]) || text[end - 1] == '\n' || text[end - 1] == '\r')) --end;
+  if (end == 0 || text[end - 1] != '\x03') {
+    out.body = text;
+    return out;
+  }
+  out.body = text.substr(0, end - 1);
+  std::tie(out.etx_line, out.etx_column) = line_and_column(text, end - 1);
+  return out;
+}
+
+/// Runs `read(body, on_block')` on `text` without its transmission bytes; `on_block'` passes each
+/// block on and notes whether one ended the program. An ETX with no program end before it is an
+/// error at the ETX.
 template <class Read>
 void read_transmitted(std::string_view text, const std::string& file_path, read_result& diagnostics,
                       const block_sink& on_block, Read&& read) {
