@@ -9,6 +9,7 @@
 
 #include <rapidcheck.h>
 
+#include <kin5/core/vec.hpp>
 #include <kin5/program/number.hpp>
 
 namespace kin5::test {
@@ -20,6 +21,15 @@ inline double draw_decimal(double lo, double hi, int decimals) {
   const auto k = *rc::gen::inRange<std::int64_t>(static_cast<std::int64_t>(lo * scale),
                                                  static_cast<std::int64_t>(hi * scale) + 1);
   return static_cast<double>(k) / scale;
+}
+
+/// A tool-axis vector of exact 7-decimal components in [-1, 1], one of them at least 0.1 in
+/// size: a direction that stays one (longer than the readers' 0.001) however coarsely it is written.
+inline kin5::vec3 draw_direction() {
+  double c[3] = {draw_decimal(-1, 1, 7), draw_decimal(-1, 1, 7), draw_decimal(-1, 1, 7)};
+  const auto large = *rc::gen::inRange(0, 3);
+  c[large] = (*rc::gen::arbitrary<bool>() ? 1 : -1) * draw_decimal(0.1, 1, 7);
+  return {c[0], c[1], c[2]};
 }
 
 /// `value` spelled in one of the ways NC programs write it: `+5`, `5.`, `.5`, `-.5`, `5.500`.

@@ -17,6 +17,7 @@ using namespace kin5::program;
 using kin5::test::draw_blanks;
 using kin5::test::draw_case;
 using kin5::test::draw_decimal;
+using kin5::test::draw_direction;
 using kin5::test::draw_spelling;
 using kin5::test::draw_words;
 
@@ -47,7 +48,7 @@ item draw_item(bool& rapid_pending) {
       b.axes.x_mm = x, b.axes.y_mm = y, b.axes.z_mm = z;
       std::vector<std::string> args{draw_spelling(x, 3), draw_spelling(y, 3), draw_spelling(z, 3)};
       if (*rc::gen::arbitrary<bool>()) {
-        const double i = draw_decimal(-1, 1, 7), j = draw_decimal(-1, 1, 7), k = draw_decimal(-1, 1, 7);
+        const auto [i, j, k] = draw_direction();
         b.axes.tool_axis = kin5::vec3{i, j, k};
         for (double v : {i, j, k}) args.push_back(draw_spelling(v, 7));
       }

@@ -11,6 +11,7 @@
 
 #include <kin5/program/heidenhain/dialect.hpp>
 
+#include "../text_gen.hpp"
 #include "contract.hpp"
 
 
@@ -166,7 +167,7 @@ item draw_item(modal& m) {
           b.kept_words.push_back(n + v);
         }
       }
-      const vec3 v{draw_decimal(-1, 1, 7), draw_decimal(-1, 1, 7), draw_decimal(-1, 1, 7)};
+      const vec3 v = kin5::test::draw_direction();
       t += gap() + value_word("TX", v.x, 7) + gap() + value_word("TY", v.y, 7) + gap() + value_word("TZ", v.z, 7);
       b.axes.tool_axis = v;
       if (*rc::gen::arbitrary<bool>()) t += gap() + draw_case("R0"), b.kept_words.push_back("R0");

@@ -17,6 +17,7 @@ using namespace kin5::program;
 using kin5::test::draw_blanks;
 using kin5::test::draw_case;
 using kin5::test::draw_decimal;
+using kin5::test::draw_direction;
 using kin5::test::draw_spelling;
 using kin5::test::draw_words;
 
@@ -111,7 +112,7 @@ void draw_motion(item& it, state& st) {
     }
     b.arc = a;
   } else if (st.vector_tcp && *rc::gen::arbitrary<bool>()) {
-    const double i = draw_decimal(-1, 1, 7), j = draw_decimal(-1, 1, 7), k = draw_decimal(-1, 1, 7);
+    const auto [i, j, k] = draw_direction();
     b.axes.tool_axis = kin5::vec3{i, j, k};
     it.words.push_back(spell_word('I', i, 7));
     it.words.push_back(spell_word('J', j, 7));

@@ -13,6 +13,7 @@
 
 #include <kin5/program/siemens/dialect.hpp>
 
+#include "../text_gen.hpp"
 #include "contract.hpp"
 
 
@@ -133,8 +134,7 @@ void move_block(line& l, state& s) {
       break;
     }
     case 1: {
-      const double i = draw_decimal(-10'000'000, 10'000'000, 7), j = draw_decimal(-10'000'000, 10'000'000, 7),
-                   k = draw_decimal(-10'000'000, 10'000'000, 7);
+      const auto [i, j, k] = kin5::test::draw_direction();
       b.axes.tool_axis = vec3{i, j, k};
       for (auto [name, v] : {std::pair{"A3", i}, std::pair{"B3", j}, std::pair{"C3", k}})
         l.words.push_back(draw_case(name) + draw_blanks(1) + "=" + draw_blanks(1) + spell_value(v, 7));
