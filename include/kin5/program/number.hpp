@@ -4,7 +4,7 @@
 /// no `inf`/`nan`, and magnitudes up to `max_magnitude`. Writing uses the shortest fixed form
 /// with a given number of decimals and no trailing zeros beyond them, and refuses (throws
 /// `number_out_of_range`, before writing anything) what reading would refuse: so every number
-/// written reads back.
+/// written reads back. Feeds and speeds keep three significant digits (`rate_decimals`).
 #pragma once
 
 #include <algorithm>
@@ -115,6 +115,31 @@ inline void append_number(std::string& out, double value, int decimals, bool plu
   if (end - begin == 2 && begin[0] == '-' && begin[1] == '0') ++begin;  // "-0" → "0"
   if (plus && *begin != '-') *--begin = '+';
   out.append(begin, static_cast<std::size_t>(end - begin));
+}
+
+/// Decimals to write a feed or spindle speed `value` (F, S) with: at least `decimals`, and as
+/// many more as keep three significant digits, up to `finest` (the controller's input
+/// resolution), so that a rate is written within 0.5 % — an inverse-time F of 0.02 (1000 mm at
+/// F20) is `F0.02`, not `F0`. Throws `number_out_of_range` for a rate other than 0 that `finest`
+/// decimals cannot write within 0.5 % (it would read as 0, or as another rate); what is not
+/// `writable` is left to `append_number` to refuse.
+inline int rate_decimals(double value, int decimals, int finest, std::string_view what = "feed") {
+  decimals = std::clamp(decimals, 0, 12);
+  const double m = std::abs(value);
+  if (!(m > 0.0) || !writable(value)) return decimals;
+  const int three_digits = 2 - static_cast<int>(std::floor(std::log10(m)));
+  if (three_digits <= decimals) return decimals;
+  const int d = std::max(decimals, std::min(three_digits, std::clamp(finest, 0, 12)));
+  const double scale = std::pow(10.0, d);
+  if (std::abs(std::round(m * scale) / scale - m) > 0.005 * m) {
+    char text[32];
+    const auto shown = std::to_chars(text, text + sizeof text, value);  // shortest form: fits 32
+    throw number_out_of_range("the " + std::string(what) + " " + std::string(text, shown.ptr) +
+                              " cannot be written with " + std::to_string(d) +
+                              " decimals, the most the controller reads (it would read as " +
+                              (std::round(m * scale) == 0.0 ? std::string("0") : std::string("another value")) + ")");
+  }
+  return d;
 }
 
 /// `value` in fixed notation with at most `decimals` decimals, trailing zeros and a trailing

@@ -130,6 +130,7 @@ inline program::write_settings write_settings_for(program::dialect out, const pr
     o.linear_decimals = d.linear;
     o.angle_decimals = d.angle;
     o.feed_decimals = d.feed;
+    o.finest_feed_decimals = std::max(d.feed, resolution_of(out).finest.feed);
     o.vector_decimals = d.vector;
   });
   return settings;

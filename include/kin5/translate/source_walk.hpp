@@ -8,8 +8,8 @@
 ///                   | the written vector (GOTO/x,y,z,i,j,k)               — `cl_source`
 ///
 /// Every block is first checked against the source machine (`source_checks.hpp`: axis words
-/// it lacks, values outside its travel). Motion without tool-tip tracking, an unknown tip, or an
-/// arc that cannot be mapped is an error at the block; a rotary axis with no value yet is
+/// it lacks, values outside its travel). Motion without tool-tip tracking, an unknown tip, a
+/// feed move at F0 (at its F word), or an arc that cannot be mapped is an error at the block; a rotary axis with no value yet is
 /// refused (`unset-rotary`, which `--allow` turns into taking it as 0); a block not understood or
 /// in machine coordinates passes through with a warning. The walker runs once per pass:
 /// diagnostics go to the result in the first only.
@@ -53,6 +53,35 @@ inline std::string fixed(double v, int decimals) {
 
 /// A diagnostic at block `b`.
 inline program::diagnostic at(const program::block& b, std::string message) { return {b.where, std::move(message)}; }
+
+/// Where the F word of block `b` starts: the first `F` (`f`) outside comments and strings that
+/// begins a word and is not the start of a longer one (FMAX, FEDRAT); the block's start when
+/// there is none (APT: the F is a FEDRAT statement of its own).
+inline program::source_location feed_word_at(const program::block& b) {
+  const std::string_view t = b.text;
+  auto letter = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; };
+  std::size_t lead = 0;  // the text of a Heidenhain block starts at column 1, before `where`
+  while (lead < t.size() && (t[lead] == ' ' || t[lead] == '\t')) ++lead;
+  std::size_t line = b.where.line, column = b.where.column - std::min(lead, b.where.column - 1);
+  char closing = 0;  // inside a comment or string until this byte
+  for (std::size_t i = 0; i < t.size(); ++i, ++column) {
+    const char c = t[i];
+    if (c == '\n') {
+      ++line, column = 0, closing = closing == '\n' ? 0 : closing;
+      continue;
+    }
+    if (closing) {
+      if (c == closing) closing = 0;
+    } else if (c == '(' || c == '"') {
+      closing = c == '(' ? ')' : '"';
+    } else if (c == ';') {
+      closing = '\n';
+    } else if ((c == 'F' || c == 'f') && (i == 0 || !letter(t[i - 1])) && (i + 1 == t.size() || !letter(t[i + 1]))) {
+      return {b.where.file, line, column};
+    }
+  }
+  return b.where;
+}
 
 inline constexpr std::string_view tcp_off_message =
     "motion without tool-tip tracking (TCP): its tool tip depends on the machine geometry, which "
@@ -188,6 +217,12 @@ class source_walker {
     if (!b.moves()) return s;  // copy
     s.what = source_step::kind::failed;
     if (!tool_tip(b, before, s, to)) return s;
+    if (!s.rapid && modal_.feed == 0.0) {  // LinuxCNC: "Cannot do g1 with zero feed rate"
+      to.fail({b.feed == 0.0 ? feed_word_at(b) : b.where,
+               b.feed == 0.0 ? "feed move with F0: a zero feed rate never reaches the end point"
+                             : "feed move at a zero feed rate (F0 or FEDRAT/0 in effect): it never reaches the end point"});
+      return s;
+    }
     std::vector<program::diagnostic> notes;
     if (auto error = Source::pose(modal_, s, warned_letters_, notes, b, kinematics)) {
       to.fail(at(b, *error));

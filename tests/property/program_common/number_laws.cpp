@@ -1,6 +1,7 @@
 // NC numbers: `read_number` reads the longest `[+-]digits[.digits]` (at least one digit) at the
 // start of any text, with the value strtod gives for it; `append_number` writes what
-// `std::to_chars` writes, trimmed, and reads back to the value rounded to its decimals.
+// `std::to_chars` writes, trimmed, and reads back to the value rounded to its decimals;
+// `rate_decimals` writes a feed or speed other than 0 within 0.5 %, never as 0, or refuses it.
 #include <algorithm>
 #include <bit>
 #include <clocale>
@@ -142,4 +143,39 @@ TEST_CASE("append_number, for every double: the NC number read_number reads back
     for (char c : text) RC_ASSERT((is_digit(c) || c == '.' || c == '-' || c == '+'));
     RC_ASSERT(text.size() <= 25);
   });
+}
+
+TEST_CASE("rate_decimals: a rate other than 0 is written within 0.5 % and never as 0, or refused") {
+  rc::prop("rates of either sign from 1e-12 to 1e9, 0 to 3 decimals asked, 0 to 12 the finest", [] {
+    const double v = *rc::gen::element(1.0, -1.0) * std::pow(10.0, *rc::gen::inRange(-12'000'000, 9'000'001) / 1e6);
+    const int decimals = *rc::gen::inRange(0, 4);
+    const int finest = *rc::gen::inRange(0, 13);
+    const double error_at_finest = std::abs(read_number(format_number(v, std::max(decimals, finest))).value - v);
+    int d = 0;
+    try {
+      d = rate_decimals(v, decimals, finest);
+    } catch (const number_out_of_range&) {
+      // Refused only when the finest decimals the controller reads cannot write it within 0.5 %.
+      RC_ASSERT(error_at_finest > 0.005 * std::abs(v) * (1 - 1e-9));
+      return;
+    }
+    RC_ASSERT(d >= decimals);
+    RC_ASSERT(d <= std::max(decimals, finest));
+    const std::string s = format_number(v, d);
+    const parsed_number back = read_number(s);
+    RC_ASSERT(back.length == s.size());
+    RC_ASSERT(back.value != 0.0);
+    RC_ASSERT((back.value > 0.0) == (v > 0.0));
+    RC_ASSERT(std::abs(back.value - v) <= 0.005 * std::abs(v) * (1 + 1e-9));
+    // More decimals than asked only where three significant digits need them.
+    if (d > decimals) RC_ASSERT(std::abs(v) < std::pow(10.0, 3 - d) * (1 + 1e-9));
+  });
+  CHECK(format_number(0.02, rate_decimals(0.02, 1, 3)) == "0.02");  // 1000 mm at F20, inverse time
+  CHECK(format_number(0.04, rate_decimals(0.04, 1, 3)) == "0.04");
+  CHECK(format_number(5.25, rate_decimals(5.25, 1, 3)) == "5.25");
+  CHECK(format_number(1091.26, rate_decimals(1091.26, 1, 3)) == "1091.3");
+  CHECK(format_number(0.0, rate_decimals(0.0, 1, 3)) == "0");
+  CHECK(format_number(0.0004, rate_decimals(0.0004, 1, 6)) == "0.0004");
+  CHECK_THROWS_AS(rate_decimals(0.0004, 1, 3), number_out_of_range);  // F0 at 3 decimals
+  CHECK_THROWS_AS(rate_decimals(0.0016, 1, 3), number_out_of_range);  // F0.002: 25 % off
 }

@@ -24,6 +24,7 @@ struct write_options {
   int linear_decimals = 3;   ///< GOTO x, y, z (mm)
   int angle_decimals = 3;    ///< unused: APT has no angle words
   int feed_decimals = 1;     ///< FEDRAT and SPINDL values
+  int finest_feed_decimals = 6;  ///< more decimals for a small F or S, up to these (rate_decimals)
   int vector_decimals = 7;   ///< GOTO i, j, k
 };
 
@@ -98,7 +99,10 @@ class writer {
 
   /// SPINDL, COOLNT, STOP, OPSTOP from S and the M codes APT has a statement for.
   void machine_functions(const block& b) {
-    const std::string rpm = b.spindle_rpm ? format_number(*b.spindle_rpm, options_.feed_decimals) : "";
+    const std::string rpm =
+        b.spindle_rpm ? format_number(*b.spindle_rpm, rate_decimals(*b.spindle_rpm, options_.feed_decimals,
+                                                                    options_.finest_feed_decimals, "spindle speed"))
+                      : "";
     bool rpm_written = !b.spindle_rpm;
     for (int m : b.m_codes) {
       if (m == 3 || m == 4) {
@@ -120,7 +124,9 @@ class writer {
   void feed(const block& b) {
     if (b.feed) {
       const char* mode = inverse_time_ ? "INVERS," : inch_ ? "IPM," : "MMPM,";
-      lines_.push_back(std::string("FEDRAT/") + mode + format_number(*b.feed, options_.feed_decimals + (inch_ ? 1 : 0)));
+      const int inch = inch_ ? 1 : 0;
+      const int decimals = rate_decimals(*b.feed, options_.feed_decimals + inch, options_.finest_feed_decimals + inch);
+      lines_.push_back(std::string("FEDRAT/") + mode + format_number(*b.feed, decimals));
     } else if (b.feed_mode) {
       foreign_note_ = true;
     }

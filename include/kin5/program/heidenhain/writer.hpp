@@ -31,6 +31,7 @@ struct write_options {
   int linear_decimals = 3;  ///< X Y Z, CC, CR radius (mm)
   int angle_decimals = 3;   ///< A B C (degrees)
   int feed_decimals = 1;    ///< F (mm/min) and S (1/min)
+  int finest_feed_decimals = 3;  ///< more decimals for a small F or S, up to these (rate_decimals)
   int vector_decimals = 7;  ///< TX TY TZ
 };
 
@@ -179,8 +180,8 @@ class writer {
       }
       kept.clear();
     }
-    if (b.spindle_rpm) l += " S" + format_number(*b.spindle_rpm, options_.feed_decimals);
-    if (b.feed && !moves) l += " F" + format_number(*b.feed, options_.feed_decimals);
+    if (b.spindle_rpm) l += " S" + format_number(*b.spindle_rpm, rate(*b.spindle_rpm, "spindle speed"));
+    if (b.feed && !moves) l += " F" + format_number(*b.feed, rate(*b.feed));
     add(l);
   }
 
@@ -252,13 +253,18 @@ class writer {
     return "C";
   }
 
+  /// Decimals of a feed or spindle speed `v` (`rate_decimals`).
+  int rate(double v, std::string_view what = "feed") const {
+    return rate_decimals(v, options_.feed_decimals, options_.finest_feed_decimals, what);
+  }
+
   /// ` F…`, ` FMAX`, or the F carried from a coordinate-less block.
   void feed_word(std::string& l, const block& b, std::size_t bi) {
     if (b.feed && (b.feed_rapid || b.motion == motion_kind::rapid)) fail(b, bi, "block has both a feed and rapid traverse");
     const bool rapid = b.feed_rapid || b.motion == motion_kind::rapid || (pending_rapid_ && !b.motion && !b.feed);
-    if (b.feed) l += " F", append_number(l, *b.feed, options_.feed_decimals);
+    if (b.feed) l += " F", append_number(l, *b.feed, rate(*b.feed));
     else if (rapid) l += " FMAX";
-    else if (pending_feed_) l += " F", append_number(l, *pending_feed_, options_.feed_decimals);
+    else if (pending_feed_) l += " F", append_number(l, *pending_feed_, rate(*pending_feed_));
     if (!rapid) pending_feed_.reset();
     pending_rapid_ = false;
   }

@@ -29,6 +29,7 @@ struct write_options {
   int linear_decimals = 3;   ///< X Y Z, arc I J K, R (mm)
   int angle_decimals = 3;    ///< A B C (degrees)
   int feed_decimals = 1;     ///< F (mm/min or 1/min) and S (1/min)
+  int finest_feed_decimals = 3;  ///< more decimals for a small F or S, up to these (rate_decimals)
   int vector_decimals = 7;   ///< tool-axis I J K under G43.5
 };
 
@@ -205,8 +206,10 @@ class writer {
 
   /// F S T, M codes, and the program end (never a second M2 / M30).
   void codes(const block& b) {
-    if (b.feed) put('F', *b.feed, options_.feed_decimals + (inch_ && !inverse_time_ ? 1 : 0));
-    if (b.spindle_rpm) put('S', *b.spindle_rpm, options_.feed_decimals);
+    const int inch = inch_ && !inverse_time_ ? 1 : 0;
+    if (b.feed) put('F', *b.feed, rate_decimals(*b.feed, options_.feed_decimals + inch, options_.finest_feed_decimals + inch));
+    if (b.spindle_rpm)
+      put('S', *b.spindle_rpm, rate_decimals(*b.spindle_rpm, options_.feed_decimals, options_.finest_feed_decimals, "spindle speed"));
     if (b.tool) words_.push_back(code('T', *b.tool));
     bool ends = false;  // an M2 / M30 written in this block
     for (int m : b.m_codes) {

@@ -30,6 +30,7 @@ struct write_options {
   int linear_decimals = 3;  ///< X Y Z, I J K, CR= (mm)
   int angle_decimals = 3;   ///< A B C (degrees)
   int feed_decimals = 1;    ///< F (mm/min or 1/min) and S (1/min)
+  int finest_feed_decimals = 3;  ///< more decimals for a small F or S, up to these (rate_decimals)
   int vector_decimals = 7;  ///< A3= B3= C3= tool-axis components
 };
 
@@ -220,8 +221,10 @@ class writer {
 
   /// F S T, D H T="name" (same dialect), M codes, the program end, the comment.
   void tail(std::string& line, const block& b) {
-    if (b.feed) number(line, "F", *b.feed, options_.feed_decimals);
-    if (b.spindle_rpm) number(line, "S", *b.spindle_rpm, options_.feed_decimals);
+    if (b.feed) number(line, "F", *b.feed, rate_decimals(*b.feed, options_.feed_decimals, options_.finest_feed_decimals));
+    if (b.spindle_rpm)
+      number(line, "S", *b.spindle_rpm,
+             rate_decimals(*b.spindle_rpm, options_.feed_decimals, options_.finest_feed_decimals, "spindle speed"));
     if (b.tool) detail::append_code(line, 'T', *b.tool);
     if (same_) {
       for (const auto& w : b.kept_words)
