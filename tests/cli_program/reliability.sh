@@ -239,6 +239,27 @@ case "$name" in
     [ "$(grep -c ': error: ' err)" = 2 ] || { report "the rapid move G0 X20 refused too"; show err; }
     [ -e o.h ] && report "o.h written"
     ;;
+  near-pole)
+    # SAJO 12000P A alternating -90 +- eps (B = 30) is the DMU 80P's pole B = 0 give or take a
+    # few 1e-6 rad: C keeps its angle on every block (it turned 180 deg per block), no warning.
+    for eps in 0.0000001 0.00001 0.0001; do
+      awk -v e=$eps 'BEGIN { print "N10 TRAORI"
+        for (i = 0; i < 6; ++i) printf "N%d G1 X%d Y0 Z50 A%.7f B30 F1000\n", 20 + 10 * i, i, i % 2 ? -90 + e : -90 - e
+        print "N99 M30" }' >jitter.mpf
+      run 0 $translate --to-dialect siemens --digits 7 -o o.mpf jitter.mpf
+      [ "$(grep -o ' C[-0-9.]*' o.mpf | sort -u | wc -l)" = 1 ] || { report "eps $eps: C moves"; show o.mpf; }
+      grep -q 'warning' err && { report "eps $eps: a warning"; show err; }
+    done
+    # Crossing the pole in 1 deg steps: the DMU's B cannot go below 0, so C must turn 180 deg
+    # inside one 0.1 mm block, and says so at that block with the angle.
+    awk 'BEGIN { print "N10 TRAORI"
+      for (i = 0; i < 7; ++i) printf "N%d G1 X%.1f Y0 Z50 A%d B30 F1000\n", 20 + 10 * i, i / 10, -93 + i
+      print "N99 M30" }' >cross.mpf
+    run 0 $translate -o o.h cross.mpf
+    [ "$(grep -c 'warning' err)" = 1 ] || { report "not one warning"; show err; }
+    grep -q '^cross.mpf:6:1: warning: sudden rotary move on dmu-80p: C turns by 180.000° while the tool axis turns by 1.000°' err ||
+      { report "no warning of the C turn at line 6"; show err o.h; }
+    ;;
   setup-angle)
     # A setup angle that is not a finite number is a bad argument, as a bad offset is.
     for angle in nan inf -inf; do

@@ -7,8 +7,8 @@
 /// is least, by dynamic programming over the blocks: exact, not greedy (`branch.hpp` picks the
 /// nearest solution to one previous block; this may take a larger move now to avoid a branch
 /// switch later). Ties go to fewer blocks off branch 0, then to the solver's order. Unreachable
-/// blocks are skipped and reported with their gap; at a pole (S2) the free angle is the
-/// neighbours'. Fed one tool axis at a time (`rotary_planner`), it keeps only the candidates
+/// blocks are skipped and reported with their gap; at a pole (S2), and within `pole_zone` of
+/// one, the free angle is the neighbours'. Fed one tool axis at a time (`rotary_planner`), it keeps only the candidates
 /// (one or two per block) and a back pointer each; `plan_rotary_path` plans a whole list.
 /// Needs only `inverse<M>` and the standard library.
 /// @code
@@ -52,6 +52,14 @@ constexpr double total_rotary_travel(std::span<const rotary_angles<M>> path) {
   return sum;
 }
 
+/// Tool axes this close to a pole of the machine (angle, radians) are planned as the pole itself,
+/// where the free angle is kept from the neighbours. Otherwise the last digits of an axis
+/// grazing the pole decide a half turn of the free axis: a source alternating ±1e-7° about the
+/// pole turned C by 180° on every block. 1e-5 rad is about the rounding of an angle written with
+/// 3 decimals (±0.0005° = 8.7e-6 rad): the written program cannot tell the axis from the pole,
+/// and the tool axis moves by at most 1e-5 rad (0.001 mm at a 100 mm tool).
+inline constexpr radians pole_zone{1e-5};
+
 /// The chosen path: per tool axis the commanded angles (continuous axes unwrapped next to the
 /// previous block), or nothing when the block is unreachable.
 template <machine M>
@@ -68,8 +76,9 @@ struct rotary_path {
 /// every block, the sequence of least total rotary travel Σ|Δ| over the program, by dynamic
 /// programming over the blocks (exact, not greedy); ties go to fewer blocks off branch 0, then to
 /// the solver's order. Unreachable blocks are skipped (the path joins the blocks either side of
-/// them). At a pole (S2) the free angle of p is taken from the nearest non-pole block before and
-/// after, so that staying costs nothing; pole blocks wait for the next non-pole block.
+/// them). At a pole (S2), or within `pole_zone` of one, the free angle of p is taken from the
+/// nearest non-pole block before and after, so that staying costs nothing; pole blocks wait
+/// for the next non-pole block.
 ///
 /// Memory: the candidates of every block (one or two per block away from poles) and one back
 /// pointer each; the DP itself keeps only the last reachable block's costs.
@@ -85,10 +94,11 @@ class rotary_planner {
     const std::size_t k = count_++;
     if (pending_.empty() && first_.size() != k) throw std::logic_error("rotary_planner: blocks out of order");
     gap_.push_back(radians{0.0});
-    const auto r = inverse<M>(u_target, options_);
+    const vec3 u = near_pole(u_target).value_or(u_target);
+    const auto r = inverse<M>(u, options_);
     if (!r.reachable()) gap_[k] = r.gap;
     if (r.status == reach_status::pole) {
-      pending_.push_back({k, u_target, true});
+      pending_.push_back({k, u, true});
       return;
     }
     if (!pending_.empty()) {  // blocks wait in order behind the pole blocks
@@ -184,6 +194,16 @@ class rotary_planner {
   std::vector<cell> next_;               // the step being computed
   std::size_t last_ = none;              // that block
   std::size_t anchor_ = none;            // the last reachable non-pole block
+
+  /// The pole ±p of M that `u` lies within `pole_zone` of, when that pole is within travel.
+  std::optional<vec3> near_pole(const vec3& u) const {
+    if constexpr (rotary_count<M> == 2) {
+      constexpr vec3 p = geometry<M>().p;
+      for (const vec3& pole : {p, -p})
+        if (angle_between(u, pole).value <= pole_zone.value && inverse<M>(pole, options_).reachable()) return pole;
+    }
+    return std::nullopt;
+  }
 
   /// Starts the candidate list of the next block (blocks are begun in order, each once).
   void begin_block() {

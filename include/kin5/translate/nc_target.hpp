@@ -7,7 +7,8 @@
 ///
 /// Arcs are written in the plane the setup maps theirs onto (direction flipped when its normal
 /// lands on a negative axis), or refused; plane words G17–G19 are mapped the same way. A block
-/// To cannot reach is an error with its gap; a branch switch is a warning. Blocks that are not
+/// To cannot reach is an error with its gap; a branch switch, and a rotary axis swinging round
+/// for little change of the tool axis (past a pole), are warnings with the angle, poles included. Blocks that are not
 /// motion are copied, their dialect text carried over (`carry_over.hpp`).
 /// @code
 ///   kin5::translate_detail::nc_target<To> target(target_T_source, kin5::feed_policy::tcp,
@@ -54,6 +55,10 @@ inline rotary_delta_deg source_rotary_delta(const source_step& from, const sourc
     d.value[i] = to.rotary_source_deg[i] - from.rotary_source_deg[i];
   return d;
 }
+
+/// A rotary move of this much or more in one block, for less than half of it of tool-axis turn,
+/// is a warning (`nc_target::warn_rotary_move`).
+inline constexpr radians sudden_turn{pi / 2};
 
 /// The target side for an NC machine To: branch choice over the program (first pass), then feed
 /// and output blocks (second pass).
@@ -124,6 +129,7 @@ class nc_target {
   rotary_path<To> path_;
   bool output_inverse_time_ = false, tcp_switched_on_ = false, inverse_time_error_ = false;
   std::optional<std::size_t> previous_motion_;  // motion index of the last written motion
+  int branch_off_pole_ = -1;                    // branch of the last written motion off a pole
   source_step previous_step_;                   // its step
   std::size_t next_motion_ = 0;                 // motion index of the next motion block
 
@@ -177,7 +183,7 @@ class nc_target {
       for (std::size_t i = 0; i < rotary_count<To>; ++i) rotary_word(o.axes, To::rotary[i].letter) = angles_target_deg[i];
     }
     write_feed(b, s, tip_target_mm, angles_target_deg, o, out);
-    if (previous_motion_ && path_.branch[*previous_motion_] != path_.branch[j]) warn_branch_switch(b, j, out);
+    warn_rotary_move(b, j, out);
     previous_motion_ = j;
     previous_step_ = s;
     emit(std::move(o));
@@ -292,19 +298,37 @@ class nc_target {
     return length;
   }
 
-  /// A warning when the planned path changes solution branch at motion `j`.
-  void warn_branch_switch(const program::block& b, std::size_t j, translation& out) const {
+  /// Warnings at motion `j`, each with the largest rotary move: a change of solution branch from
+  /// the last motion off a pole (pole blocks in between, where both branches meet, included);
+  /// else a rotary axis turning by `sudden_turn` or more while the tool axis turns by less than
+  /// half of that (a swing past a pole: the table whips round inside a short block).
+  void warn_rotary_move(const program::block& b, std::size_t j, translation& out) {
+    const int before = branch_off_pole_;
+    if (!path_.pole[j]) branch_off_pole_ = path_.branch[j];
     if (!previous_motion_) return;
-    const std::size_t p = *previous_motion_;
-    if (path_.branch[p] < 0 || path_.branch[j] < 0 || path_.branch[p] == path_.branch[j] || path_.pole[p] ||
-        path_.pole[j])
+    const rotary_angles<To>& from = *path_.angles[*previous_motion_];
+    const rotary_angles<To>& to = *path_.angles[j];
+    std::size_t axis = 0;
+    for (std::size_t i = 1; i < rotary_count<To>; ++i)
+      if (math::abs(to[i].value - from[i].value) > math::abs(to[axis].value - from[axis].value)) axis = i;
+    const radians turn{math::abs(to[axis].value - from[axis].value)};
+    const std::string turned = std::string(1, to_char(To::rotary[axis].letter)) + " turns by " +
+                               fixed(to_degrees(turn).value, 3) + "°";
+    if (!path_.pole[j] && before >= 0 && before != path_.branch[j]) {
+      const bool avoidable = (path_.branches[*previous_motion_] & path_.branches[j]) != 0;
+      out.warnings.push_back(at(b, std::string(avoidable ? "solution branch switch (least total rotary travel)"
+                                                         : "unavoidable solution branch switch") +
+                                       " from branch " + std::to_string(before) + " to " +
+                                       std::to_string(path_.branch[j]) + " on " + std::string(To::id) + ": " + turned));
       return;
-    const bool avoidable = (path_.branches[p] & path_.branches[j]) != 0;
-    out.warnings.push_back(at(b, std::string(avoidable ? "solution branch switch (least total rotary travel)"
-                                                       : "unavoidable solution branch switch") +
-                                     " from branch " + std::to_string(path_.branch[p]) + " to " +
-                                     std::to_string(path_.branch[j]) + " on " + std::string(To::id)));
+    }
+    const radians axis_turn = angle_between(tool_axis<To>(from), tool_axis<To>(to));
+    if (turn.value >= sudden_turn.value && turn.value > 2.0 * axis_turn.value)
+      out.warnings.push_back(at(b, "sudden rotary move on " + std::string(To::id) + ": " + turned +
+                                       " while the tool axis turns by " + fixed(to_degrees(axis_turn).value, 3) +
+                                       "° (past a pole)"));
   }
+
 };
 
 }  // namespace kin5::translate_detail
