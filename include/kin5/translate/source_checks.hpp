@@ -5,6 +5,8 @@
 ///  - a rotary axis word the machine does not have (`A+30` for `dmu-80p`, whose rotary axes are
 ///    B and C) is an error at the word: the reader has no machine and keeps it, and the
 ///    kinematics would drop it — silently, were it not checked;
+///  - a word the reader kept without interpreting it whose effect another dialect would lose as
+///    a comment (`check_kept_words`: an ISO `G4` dwell, Siemens `T="NAME"`, …) is an error;
 ///  - a rotary value outside its axis' travel by more than the angle tolerance
 ///    (`angle_tolerance.hpp`) is an error naming the travel (A−150 on `sajo-12000p`, whose A
 ///    travels over [−120°, 30°]).
@@ -166,6 +168,46 @@ inline bool check_m_codes(const program::block& b, const source_context& ctx) {
              std::string(program::name(ctx.output)) + " (--m-map " + std::to_string(m) + "=N renames it, --m-map " +
              std::to_string(m) + "= drops it)",
          word, "--m-map " + std::to_string(m) + "="});
+  }
+  return ok;
+}
+
+/// What a word that the reader kept without interpreting it (`block::kept_words`) does, when a
+/// program of another dialect could only carry it as a comment and so lose it; empty when it is
+/// harmless as a comment (plane, absolute mode, cancels, path-smoothing modes, …). Work offsets
+/// (G54 …) are not listed here yet: they are translated by their own table.
+inline std::string lost_kept_word(std::string_view word, program::dialect from) {
+  std::string w;
+  for (char c : word)
+    if (!program::is_space(c)) w.push_back(program::to_upper(c));
+  if (from == program::dialect::iso && w.size() > 1 && w[0] == 'G') {
+    char* end = nullptr;
+    const double g = std::strtod(w.c_str() + 1, &end);
+    if (end && *end == '\0' && g == 4) return "a dwell";
+    if (end && *end == '\0' && g == 43) return "tool length compensation (G43, without tool-tip tracking)";
+  }
+  if (from == program::dialect::siemens && w.rfind("T=", 0) == 0) return "a tool named in T=";
+  if (from == program::dialect::siemens && w == "D0") return "tool length compensation off (D0)";
+  if (from == program::dialect::heidenhain && (w == "X" || w == "Y")) return "a tool axis other than Z in TOOL CALL";
+  return "";
+}
+
+/// Checks the kept words of block `b` against the output dialect: in a program of another
+/// dialect a kept word becomes a comment (`carry_over`), so one whose effect would be lost
+/// (`lost_kept_word`) is refused at the block. False on an error, reported to `ctx.out` when given.
+inline bool check_kept_words(const program::block& b, const source_context& ctx) {
+  if (ctx.language == ctx.output) return true;
+  bool ok = true;
+  for (const std::string& w : b.kept_words) {
+    const std::string what = lost_kept_word(w, ctx.language);
+    if (what.empty()) continue;
+    ok = false;
+    if (ctx.out)
+      ctx.out->errors.push_back({b.where,
+                                 w + ": " + what + " of " + std::string(program::name(ctx.language)) +
+                                     " is not translated into " + std::string(program::name(ctx.output)) +
+                                     " yet (it would become a comment)",
+                                 w});
   }
   return ok;
 }

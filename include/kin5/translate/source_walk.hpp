@@ -203,7 +203,8 @@ class source_walker {
     source_step s;
     source_context ctx = context_;
     ctx.out = out;
-    if ((!b.m_codes.empty() && !check_m_codes(b, ctx)) || (b.moves() && !Source::check(b, ctx))) {
+    const bool kept_ok = b.kept_words.empty() || check_kept_words(b, ctx);
+    if (!kept_ok || (!b.m_codes.empty() && !check_m_codes(b, ctx)) || (b.moves() && !Source::check(b, ctx))) {
       s.what = source_step::kind::failed;
       return s;
     }

@@ -52,6 +52,8 @@ TEST_CASE("heidenhain: spellings read as their plain equivalent and written plai
 }
 
 TEST_CASE("heidenhain: cycle parameters after `;comment~` stay in their cycle's block") {
+  // The cycle itself is refused (refusal_table.cpp), once, at its first line: its parameter
+  // lines are part of its block, not blocks of their own.
   const std::string text =
       "CYCL DEF 200 DRILLING~\n"
       "  Q200=2 ;SET-UP CLEARANCE~\n"
@@ -59,7 +61,8 @@ TEST_CASE("heidenhain: cycle parameters after `;comment~` stay in their cycle's 
       "  Q206=150 ;FEED RATE FOR PLNGNG\n"
       "L Z+5 FMAX\n";
   const read_result r = heidenhain::read(text, "t.h");
-  REQUIRE(r.errors.empty());
+  REQUIRE(r.errors.size() == 1);
+  CHECK(r.errors[0].where.line == 1);
   REQUIRE(r.parsed.blocks.size() == 2);
   CHECK(r.parsed.blocks[0].passthrough);
   CHECK(r.parsed.blocks[0].text == text.substr(0, text.find("\nL Z")));
@@ -79,10 +82,15 @@ TEST_CASE("heidenhain: Q parameters that are not constants of the file are refus
       {"FN 1: Q1=+1+2\nL X+10 F Q1\n", {"t.h:2:8: error: parameter Q1 is computed at line 1; only a parameter assigned a number is read"}},
       {"Q1 = 5 * 2\nL X+Q1\n", {"t.h:2:3: error: parameter Q1 is computed at line 1; only a parameter assigned a number is read"}},
       {"FN 0: Q120=30\nL A+Q120 FMAX\n", {"t.h:2:3: error: parameter Q120 is set by the control (Q100-Q199), not a constant of this file"}},
+      // The labels, calls and jumps are refused too (refusal_table.cpp), each at its line.
       {"FN 0: Q1=5\nL X+Q1\nCALL LBL 1\nLBL 1\nLBL 0\n",
-       {"t.h:2:3: error: parameter Q1 in a program with control flow (CALL LBL at line 3): its value depends on the path"}},
+       {"t.h:2:3: error: parameter Q1 in a program with control flow (CALL LBL at line 3): its value depends on the path",
+        "t.h:3:1: error: CALL LBL: program and label calls are not supported (the motion they make would be lost)",
+        "t.h:4:1: error: LBL: labels are not supported (the path would depend on the calls and repeats)",
+        "t.h:5:1: error: LBL: labels are not supported (the path would depend on the calls and repeats)"}},
       {"FN 0: Q1=5\nFN 9: IF +Q1 EQU +5 GOTO LBL 1\nL X+Q1\n",
-       {"t.h:3:3: error: parameter Q1 in a program with control flow (FN 9 at line 2): its value depends on the path"}},
+       {"t.h:2:1: error: FN: functions other than FN 0 (a constant) are not supported",
+        "t.h:3:3: error: parameter Q1 in a program with control flow (FN 9 at line 2): its value depends on the path"}},
   };
   for (const row& r : rows) {
     INFO(r.text);

@@ -1,12 +1,15 @@
 /// @file program/apt/reader.hpp
 /// The second stage of the APT reader: a statement (lexer.hpp) becomes a `block`.
 /// `GOTO/x,y,z[,i,j,k]` (tool tip, tool-axis vector), `RAPID` (the next GOTO is rapid),
-/// `FEDRAT/[MMPM,|IPM,|INVERS,]f`, `SPINDL/[RPM,]n[,CLW|CCLW]`, `SPINDL/ON|OFF|CLW|CCLW`, `LOADTL/n`,
-/// `COOLNT/ON|FLOOD|MIST|OFF`, `STOP`, `OPSTOP`, `UNITS/MM|INCHES`, `PARTNO name`, `FINI`,
-/// `PPRINT/text` and `$$ text` comments. After `UNITS/INCHES` GOTO points and unit-less feeds are
-/// inches, converted to mm (units.hpp); `IPM` feeds always are. `MULTAX`, `INSERT` and unknown
-/// statements pass through. Rejected: per-revolution feeds, `CIRCLE`, GOTO with other than 3 or 6
-/// values.
+/// `FEDRAT/[MMPM,|IPM,|INVERS,]f`, `SPINDL/[RPM,]n[,CLW|CCLW]`, `SPINDL/ON|OFF|CLW|CCLW`,
+/// `LOADTL/n` and `LOAD/TOOL,n` (a tool change: the tool and M6, as ISO's `T n M6`),
+/// `COOLNT/ON|FLOOD|MIST|OFF`, `STOP`, `OPSTOP`, `UNITS/MM|INCHES` (also `UNIT/`), `PARTNO name`,
+/// `FINI`, `PPRINT/text` and `$$ text` comments. After `UNITS/INCHES` GOTO points and unit-less
+/// feeds are inches, converted to mm (units.hpp); `IPM` feeds always are. Statements that only
+/// describe (vocabulary.hpp: `MULTAX`, `CUTTER`, `SELECT/TOOL`, …) and an identity `CSYS`/`MSYS`
+/// pass through; every other statement is refused at its major word, with the reason (`CYCLE`,
+/// `INSERT`, `TLAXIS`, `CUTCOM`, unknown words, …), as are per-revolution feeds, `CIRCLE`, and GOTO
+/// with other than 3 or 6 values.
 #pragma once
 
 #include <cstddef>
@@ -23,6 +26,7 @@
 #include "../transmission.hpp"
 #include "../units.hpp"
 #include "lexer.hpp"
+#include "vocabulary.hpp"
 
 namespace kin5::program::apt::detail {
 
@@ -69,7 +73,9 @@ class statement_reader {
   code c_;
   std::vector<argument> args_;
 
-  void error(std::size_t offset, std::string message) { errors_.push_back({st_->at(file_, offset), std::move(message)}); }
+  void error(std::size_t offset, std::string message, std::string construct = {}) {
+    errors_.push_back({st_->at(file_, offset), std::move(message), std::move(construct)});
+  }
 
   /// Reports the first control byte before `end`; true if there is one.
   bool control_byte(std::size_t end) {
@@ -124,12 +130,14 @@ class statement_reader {
     } else if (m == "SPINDL") {
       spindle(b);
     } else if (m == "LOADTL") {
-      load_tool(b);
+      load_tool(b, 0);
+    } else if (m == "LOAD" && !args_.empty() && lexing::upper(args_[0].text) == "TOOL") {
+      load_tool(b, 1);
     } else if (m == "COOLNT") {
       if (word == "ON" || word == "FLOOD") b.m_codes.push_back(8);
       else if (word == "MIST") b.m_codes.push_back(7);
       else if (word == "OFF") b.m_codes.push_back(9);
-      else b.passthrough = true;
+      else error(c_.major_at, "COOLNT/" + word + " is not supported (only ON, FLOOD, MIST and OFF are read)", "COOLNT");
     } else if (m == "STOP" || m == "OPSTOP") {
       if (no_values()) b.m_codes.push_back(m == "STOP" ? 0 : 1);
     } else {
@@ -137,12 +145,12 @@ class statement_reader {
     }
   }
 
-  /// UNITS, PARTNO, FINI, PPRINT, CIRCLE; anything else passes through.
+  /// UNITS, PARTNO, FINI, PPRINT, CIRCLE; what only describes passes through; the rest is refused.
   void other(block& b, const std::string& word) {
     const std::string& m = c_.major;
-    if (m == "UNITS") {
+    if (m == "UNITS" || m == "UNIT") {
       if (word == "MM" || word == "INCHES" || word == "INCH") b.metric = word == "MM", inch_ = word != "MM";
-      else b.passthrough = true;
+      else error(c_.major_at, m + "/" + word + " is not supported (only MM and INCHES are read)", m);
     } else if (m == "PARTNO") {
       b.program_begin = std::string(c_.tail);
     } else if (m == "FINI") {
@@ -152,10 +160,27 @@ class statement_reader {
       if (b.comment) text += (text.empty() ? "$$ " : " $$ ") + *b.comment;
       b.comment = std::string(lexing::trim(text));
     } else if (m == "CIRCLE") {
-      error(c_.major_at, "circular CL data (CIRCLE) is not supported");
+      error(c_.major_at, "circular CL data (CIRCLE) is not supported", m);
+    } else if (detail::described(m, c_.tail) || ((m == "CSYS" || m == "MSYS") && identity_frame())) {
+      b.passthrough = true;  // written back in APT, a comment elsewhere: it changes no motion
     } else {
-      b.passthrough = true;  // MULTAX, INSERT, TLAXIS, unknown: kept as written
+      error(c_.major_at, detail::refusal(m, c_.tail), m);
     }
+  }
+
+  /// Whether the arguments are the identity frame: `CSYS/` 3×4 matrix [R | t] row by row, or
+  /// `MSYS/` origin, x axis, y axis; nothing reported.
+  bool identity_frame() const {
+    static constexpr double csys[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+    static constexpr double msys[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    const bool is_csys = c_.major == "CSYS";
+    const double* want = is_csys ? csys : msys;
+    if (args_.size() != (is_csys ? 12u : 9u)) return false;
+    for (std::size_t k = 0; k < args_.size(); ++k) {
+      const parsed_number n = read_number(args_[k].text);
+      if (n.error != number_error::none || n.length != args_[k].text.size() || n.value != want[k]) return false;
+    }
+    return true;
   }
 
   /// `GOTO/x,y,z[,i,j,k]`: rapid when a RAPID came before it.
@@ -221,14 +246,16 @@ class statement_reader {
     if (direction) b.m_codes.push_back(direction);
   }
 
-  /// `LOADTL/n`.
-  void load_tool(block& b) {
+  /// `LOADTL/n` (`at` = 0) or `LOAD/TOOL,n` (`at` = 1): a tool change, the tool and M6.
+  void load_tool(block& b, std::size_t at) {
     double t = 0;
-    if (!c_.slash || args_.size() != 1) return error(c_.major_at, "LOADTL needs one tool number");
-    if (!number(args_[0], t)) return;
+    const std::string name = at == 0 ? "LOADTL" : "LOAD/TOOL";
+    if (!c_.slash || args_.size() != at + 1) return error(c_.major_at, name + " needs one tool number", c_.major);
+    if (!number(args_[at], t)) return;
     if (t < 0 || t != static_cast<double>(static_cast<long long>(t)))
-      return error(args_[0].offset, "tool number must be a whole number");
+      return error(args_[at].offset, "tool number must be a whole number");
     b.tool = static_cast<long long>(t);
+    b.m_codes.push_back(6);
   }
 };
 

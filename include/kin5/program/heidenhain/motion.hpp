@@ -2,7 +2,8 @@
 /// The Heidenhain motion blocks, read from their words: `L` and `LN` (a straight line, `LN` with a
 /// tool-axis vector `TX TY TZ`), `CC` (a circle centre: two coordinates give the plane, a missing
 /// one comes from the last position), `C` (an arc around the last `CC`) and `CR` (an arc of
-/// radius `R`), with `R0/RL/RR`, `F`, `FMAX`, `FAUTO`, `DR±` and M functions.
+/// radius `R`), with `R0`, `F`, `FMAX`, `DR±` and M functions. `RL`/`RR` (radius
+/// compensation) and `FAUTO` are refused until they are read into the model.
 #pragma once
 
 #include <cstddef>
@@ -160,7 +161,7 @@ class motion_reader : public word_checks {
     } else if (key == "R" && w.value && *w.value == 0 && w.error == number_error::none) {
       b_.kept_words.push_back("R0");
     } else if ((key == "RL" || key == "RR") && bare && w.error == number_error::none) {
-      b_.kept_words.push_back(key);
+      error(w.pos, key + ": cutter radius compensation is not supported yet (the path would be off by the radius)");
     } else if (key == "DR" && arc_ && w.sign && !direction_) {
       direction_ = w.sign;
     } else if (key == "F") {
@@ -170,7 +171,7 @@ class motion_reader : public word_checks {
       b_.feed_rapid = true;
       b_.motion = arc_ ? b_.motion : motion_kind::rapid;
     } else if (key == "FAUTO" && bare) {
-      b_.kept_words.push_back(key);
+      error(w.pos, "FAUTO: the feed of the TOOL CALL is not supported yet (give F)");
     } else if (key == "M") {
       long long m = 0;
       if (integer_word(w, m)) set_m(b_, m);

@@ -1,11 +1,17 @@
 /// @file program/heidenhain/reader.hpp
 /// The second stage of the Heidenhain reader: a block's words (lexer.hpp) become a `block`, by
-/// the block's keyword — `L` `LN` `C` `CC` `CR` (motion.hpp), `TOOL CALL`, M lines,
+/// the block's keyword — `L` `LN` `C` `CC` `CR` (motion.hpp), `TOOL CALL`, M lines, `STOP`,
 /// `BEGIN PGM`/`END PGM … MM`, `;` and `*` comments, `FUNCTION TCPM`/`FUNCTION RESET TCPM`.
-/// `BLK FORM`, cycles, Q assignments (parameters.hpp) and other lines without axis words pass
-/// through. Rejected: Q parameters that are not constants of the file, incremental `IX`…, INCH
-/// programs, active frame changes (`PLANE SPATIAL`…, `CYCL DEF 7/8/10/11/19/26`, `TRANS`).
-/// Block numbers are kept as written (repeated or missing is fine).
+/// Blocks that change nothing pass through (a comment in another dialect): `BLK FORM`,
+/// `TOOL DEF`, `PLANE RESET`, `TRANS … RESET`, Q assignments (parameters.hpp) and frame cycles
+/// whose values are the identity. Every other block is refused at its keyword, naming it: the
+/// cycles kin5 does not read (`CYCL DEF 200`, 9, 32, 247, …), `CYCL CALL`, `M99`/`M89`,
+/// `LBL`, `CALL LBL`/`CALL PGM`, `FN` functions, `M` blocks with other words (`M140 MB MAX`),
+/// `TOOL CALL` forms it does not read, `FUNCTION TCPM` options other than `F TCP`, `AXIS POS`,
+/// `PATHCTRL AXIS`, unknown keywords; so are Q parameters that are not constants of the file,
+/// incremental `IX`…, INCH programs and active frame changes (`PLANE SPATIAL`…,
+/// `CYCL DEF 7/8/10/11/19/26`, `TRANS`). Block numbers are kept as written (repeated or missing
+/// is fine).
 #pragma once
 
 #include <charconv>
@@ -40,6 +46,7 @@ class block_reader : public word_checks {
     control_bytes(i);
     i = block_number(i);
     dispatch(i);
+    cycle_call_m();
     for (auto c = t_.inner_comments.rbegin(); c != t_.inner_comments.rend(); ++c)  // comments before `~`
       if (!b_.passthrough) b_.comment = *c + (b_.comment ? " " + *b_.comment : std::string());
     if (!b_.passthrough) {
@@ -55,6 +62,22 @@ class block_reader : public word_checks {
   reader_state& state_;
   block b_;
   std::vector<std::size_t> stray_;  // bytes that start no word: errors unless the block passes through
+
+  /// M99 / M89 call the last cycle defined: refused (cycles are refused until kin5 reads them).
+  void cycle_call_m() {
+    for (int m : b_.m_codes) {
+      if (m != 99 && m != 89) continue;
+      const std::string word = "M" + std::to_string(m);
+      std::size_t at = 0;
+      for (std::size_t k = t_.upper.find(word); k != std::string::npos; k = t_.upper.find(word, k + 1))
+        if (k + word.size() >= t_.upper.size() || !is_digit(t_.upper[k + word.size()])) {
+          at = k;
+          break;
+        }
+      error(at, word + ": a cycle call is not supported (fixed cycles are refused until kin5 reads them)");
+      return;
+    }
+  }
 
   void stray_error(std::size_t k) {
     const char c = s_[k];
@@ -93,7 +116,7 @@ class block_reader : public word_checks {
     } else if (auto end = scan_.keywords(i, {"END", "PGM"})) {
       program_line(i, *end, false);
     } else if (auto call = scan_.keywords(i, {"TOOL", "CALL"})) {
-      tool_call(*call);
+      tool_call(i, *call);
     } else if (head == "L" || head == "LN" || head == "C" || head == "CC" || head == "CR") {
       motion_reader(t_, state_, out_, b_, stray_).read(i, head);
     } else if (head == "M" && i + 1 < s_.size() && (is_digit(s_[i + 1]) || is_space(s_[i + 1]))) {
@@ -104,7 +127,10 @@ class block_reader : public word_checks {
       b_.tcp = false;
       const std::size_t c = scan_.skip_spaces(*r);
       if (c < s_.size() && s_[c] == ';') b_.comment = s_.substr(c + 1);
-      else if (c < s_.size()) b_.passthrough = true, b_.tcp.reset();
+      else if (c < s_.size()) {
+        b_.passthrough = true, b_.tcp.reset();
+        error(c, "FUNCTION RESET TCPM: words after it are not supported");
+      }
     } else if (auto cycle = scan_.keywords(i, {"CYCL", "DEF"})) {
       cycle_definition(i, *cycle);
     } else if (record_assignment(std::string_view(s_).substr(i), t_.where(i).line, state_.q)) {
@@ -144,10 +170,11 @@ class block_reader : public word_checks {
     if (c < s_.size() && s_[c] == ';') b_.comment = s_.substr(c + 1);
   }
 
-  /// `TOOL CALL 5 Z S6000 F… DL… DR…`; anything else passes through.
-  void tool_call(std::size_t after) {
+  /// `TOOL CALL 5 Z S6000 F… DL… DR…`; any other form is refused at `i`.
+  void tool_call(std::size_t i, std::size_t after) {
     std::vector<word> ws = scan_.words(after, b_.comment, stray_);
     bool understood = !ws.empty();
+    const word* oversize = nullptr;  // DL, DR, DR2 other than 0
     block t = b_;
     for (word& w : ws) {
       if (w.key.empty() && w.value && !t.tool && !t.spindle_rpm && t.kept_words.empty()) {
@@ -162,6 +189,7 @@ class block_reader : public word_checks {
       } else if (w.key == "F" && w.value && !t.feed) {
         t.feed = *w.value;
       } else if ((w.key == "DL" || w.key == "DR" || w.key == "DR2") && w.value) {
+        if (*w.value != 0 && !oversize) oversize = &w;
         t.kept_words.push_back(w.written);
       } else {
         understood = false;
@@ -170,8 +198,14 @@ class block_reader : public word_checks {
     if (!understood || !(t.tool || t.spindle_rpm)) {
       b_.comment.reset();
       b_.passthrough = true;
+      error(i, "TOOL CALL: only TOOL CALL n with an axis, S, F, DL and DR is read (a tool called by name or "
+               "with other words is not supported)");
       return;
     }
+    // An oversize moves the tool tip (DL) or the contour (DR with RL/RR, or LN normals): only a
+    // zero one changes nothing.
+    if (oversize)
+      error(oversize->pos, oversize->written + ": a tool oversize in TOOL CALL is not supported yet (the path would move by it)");
     b_ = std::move(t);
     for (const std::string& w : b_.kept_words)  // the tool axis sets the working plane
       if (w == "X" || w == "Y" || w == "Z") state_.plane = w == "Z" ? arc_plane::xy : w == "Y" ? arc_plane::zx : arc_plane::yz;
@@ -195,14 +229,22 @@ class block_reader : public word_checks {
       b_ = std::move(m);
       return;
     }
-    for (const word& w : ws)
+    b_.comment.reset();
+    b_.passthrough = true;
+    for (const word& w : ws) {
       if (!w.key.empty() && w.key.size() <= 2 && is_axis_letter(w.key.back()) && (w.key.size() == 1 || w.key[0] == 'I') &&
           (w.value || w.expression || w.error != number_error::none)) {
         error(w.pos, "axis word '" + w.key + "' without a motion keyword");
-        break;
+        return;
       }
-    b_.comment.reset();
-    b_.passthrough = true;
+    }
+    for (const word& w : ws)
+      if (w.key != "M" || !w.value) {
+        const std::string text = w.written.empty() ? w.key : w.written;
+        error(w.pos, "'" + text + "' in an M block is not supported (M140 MB retracts, M120 looks ahead: the "
+                     "machine would do something else)");
+        return;
+      }
   }
 
   /// `FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS`: TCP on, the option pairs kept.
@@ -225,12 +267,14 @@ class block_reader : public word_checks {
     for (std::size_t t = 0; t < tokens.size(); t += 2) {
       std::string kw = tokens[t] + (t + 1 < tokens.size() ? " " + tokens[t + 1] : "");
       if (kw == "AXIS SPAT") error(at[t], "FUNCTION TCPM AXIS SPAT is not supported");
+      else if (kw != "F TCP" && kw != "AXIS POS" && kw != "PATHCTRL AXIS")
+        error(at[t], "FUNCTION TCPM " + kw + " is not supported (kin5 reads F TCP, AXIS POS, PATHCTRL AXIS)");
       b_.kept_words.push_back(std::move(kw));
     }
   }
 
-  /// `CYCL DEF n.m …`: passes through; the frame cycles (7, 8, 10, 11, 19, 26) are errors unless
-  /// every value is the identity.
+  /// `CYCL DEF n.m …`: the frame cycles (7, 8, 10, 11, 19, 26) pass through when every value is
+  /// the identity, else are errors; every other cycle is refused at its first line (`n` or `n.0`).
   void cycle_definition(std::size_t i, std::size_t after) {
     const std::size_t k = scan_.skip_spaces(after);
     std::size_t e = k;
@@ -246,10 +290,20 @@ class block_reader : public word_checks {
     b_.passthrough = true;
     const bool frame = number == "7" || number == "8" || number == "10" || number == "11" || number == "19" ||
                        number == "26";
-    if (number == "247") warning(i, "CYCL DEF 247 selects a datum preset; passed through unchanged");
     const double identity = (number == "11" || number == "26") ? 1.0 : 0.0;
     if (frame && !part.empty() && part != "0" && cycle_values_active(e, identity))
       error(i, "CYCL DEF " + number + " changes the working frame; kin5 does not model frame changes");
+    else if (!frame && (part.empty() || part == "0")) error(i, cycle_refusal(number));
+  }
+
+  /// Why cycle `number` (not a frame cycle) is refused.
+  static std::string cycle_refusal(const std::string& number) {
+    const std::string head = "CYCL DEF " + (number.empty() ? std::string("without a number") : number);
+    if (number == "9") return head + " (dwell time) is not supported yet: the dwell would be lost";
+    if (number == "32") return head + " (tolerance) is not supported yet: the contour tolerance would be lost";
+    if (number == "247") return head + " (datum setting) is not supported yet: the preset it selects would be lost";
+    return head + " is not supported: fixed cycles are refused until kin5 reads them (their holes and pockets "
+                  "would be lost)";
   }
 
   /// Whether any value of a frame cycle from `p` on differs from `identity` (0, or scale 1).
@@ -278,16 +332,20 @@ class block_reader : public word_checks {
     return active;
   }
 
-  /// PLANE, TRANS, BLK, the contour functions kin5 does not read, stray axis words, the rest.
+  /// PLANE, TRANS, BLK, TOOL DEF, STOP; calls, labels and functions, the contour functions kin5
+  /// does not read, stray axis words: refused; anything else refused as an unknown keyword.
   void other(std::size_t i, const std::string& head) {
+    if (refused_keyword(i, head)) return;
     if (head == "PLANE" || head == "TRANS") {
       const std::size_t k = scan_.skip_spaces(i + head.size());
       const std::string kind = scan_.letters(k);
       const bool reset = head == "PLANE" ? kind == "RESET" : scan_.letters(scan_.skip_spaces(k + kind.size())) == "RESET";
       if (!reset) error(i, head + " " + kind + " changes the working frame; kin5 does not model frame changes");
       b_.passthrough = true;
-    } else if (head == "BLK") {
-      b_.passthrough = true;
+    } else if (head == "BLK" || scan_.keywords(i, {"TOOL", "DEF"})) {
+      b_.passthrough = true;  // the blank's shape, a tool made ready: no motion
+    } else if (head == "STOP" && only_comment_after(i + head.size())) {
+      b_.m_codes.push_back(0);
     } else if (head == "CT" || head == "CP" || head == "LP" || head == "CTP" || head == "RND" || head == "CHF" ||
                head == "APPR" || head == "DEP" || head == "FL" || head == "FLT" || head == "FC" || head == "FCT" ||
                head == "FPOL" || head == "CCA") {
@@ -300,8 +358,32 @@ class block_reader : public word_checks {
       error(i, "unknown keyword '" + t_.upper.substr(i, scan_.run_end(i) - i) + "' in a block with axis words");
       b_.passthrough = true;
     } else {
+      error(i, "unknown keyword '" + t_.upper.substr(i, scan_.run_end(i) - i) +
+                   "' is not supported: only blocks known not to change the motion are passed on");
       b_.passthrough = true;
     }
+  }
+
+  /// Whether only blanks and a `;` comment follow `k` (the comment is kept).
+  bool only_comment_after(std::size_t k) {
+    k = scan_.skip_spaces(k);
+    if (k < s_.size() && s_[k] == ';') b_.comment = s_.substr(k + 1);
+    return k >= s_.size() || s_[k] == ';';
+  }
+
+  /// Cycle calls, labels, program calls and FN functions: refused at `i`, naming them.
+  bool refused_keyword(std::size_t i, const std::string& head) {
+    std::string why;
+    if (head == "CYCL") why = "CYCL CALL: a cycle call is not supported (fixed cycles are refused until kin5 reads them)";
+    else if (head == "LBL") why = "LBL: labels are not supported (the path would depend on the calls and repeats)";
+    else if (head == "CALL" || head == "SEL" || head == "PGM")
+      why = t_.upper.substr(i, scan_.run_end(scan_.skip_spaces(scan_.run_end(i))) - i) +
+            ": program and label calls are not supported (the motion they make would be lost)";
+    else if (head == "FN") why = "FN: functions other than FN 0 (a constant) are not supported";
+    if (why.empty()) return false;
+    error(i, why);
+    b_.passthrough = true;
+    return true;
   }
 };
 

@@ -4,9 +4,10 @@
 /// tracking; under G43.5 `I J K` in G0/G1 blocks are the tool-axis vector), `G49`, G93/G94, G21,
 /// `G53` / `G28` / `G30` (machine coordinates), M30/M2, G20/G21 (an inch program's lengths and
 /// per-minute feeds are converted to mm: units.hpp). Errors: G91 (except in `G91 G28`/`G30`
-/// homing blocks), G95, a unit change after motion, active frames (G68, G68.2, G51, G52 with offsets), canned cycles.
-/// Harmless modal words (G40, G54, G90, G05.1 Q1, H1, D1, …) are kept as written; a line not
-/// understood that moves nothing passes through.
+/// homing blocks), G95, a unit change after motion, active frames (G68, G68.2, G51, G52 with
+/// offsets, G92), canned cycles, G41/G42, G10, macro and subprogram calls (G65, G66, M98, M97,
+/// M99), and any word not understood, moving or not: each at its word, naming it. Harmless modal
+/// words (G40, G54, G90, G05.1 Q1, H1, D1, …) are kept as written; `%` lines pass through.
 #pragma once
 
 #include <algorithm>
@@ -33,6 +34,7 @@ namespace kin5::program::iso::detail {
 /// What the words of one line say beyond the block's own fields.
 struct line_words {
   bool homing = false, g43_5 = false, uses_pq = false, g52_reset = false;
+  bool dwell = false;  ///< G4: its X is the dwell time (seconds), not an axis word
   const word* motion = nullptr;
   std::optional<double> ijk[3];
   const word* ijk_word[3] = {};
@@ -112,6 +114,7 @@ class reader {
       if (g == 280 || g == 300) l.homing = true;
       if (g == 435) l.g43_5 = true;
       if (g == 40 || g == 50 || g == 51 || g == 80 || g == 541) l.uses_pq = true;
+      if (g == 40) l.dwell = true;
       if (g == 520) g52 = true;
       if (g >= 0 && g <= 30 && g % 10 == 0) {
         if (l.motion) {
@@ -152,17 +155,9 @@ class reader {
     std::stable_partition(b.kept_words.begin(), b.kept_words.end(),
                           [](const std::string& k) { return to_upper(k.front()) == 'G'; });
     if (!l.unknown || l.suppress) return;
-    if (b.moves() || b.arc) {
-      error(l.unknown->column, "unknown word '" + std::string(l.unknown->text) + "'");
-    } else if (!failed_) {
-      // Not understood and moving nothing: kept verbatim, never interpreted.
-      block kept;
-      kept.where = b.where;
-      kept.text = b.text;
-      kept.passthrough = true;
-      state_ = saved;
-      b = std::move(kept);
-    }
+    // Not understood: refused, moving or not (a word kin5 does not read may change the motion).
+    error(l.unknown->column, "unknown word '" + std::string(l.unknown->text) + "'");
+    state_ = saved;
   }
 
   /// The meaning of one word.
@@ -214,7 +209,13 @@ class reader {
       return;
     }
     const int m = static_cast<int>(w.value);
-    if (m == 30 || m == 2) b.program_end = "M" + std::to_string(m);
+    if (m == 98 || m == 97 || m == 198) {
+      error(w.column, "M" + std::to_string(m) + ": a subprogram call is not supported (the motion it makes would be lost)");
+      l.suppress = true;  // its P, L, H words are the call's
+    } else if (m == 99) {
+      error(w.column, "M99: a subprogram return or loop is not supported (the path would depend on it)");
+      l.suppress = true;
+    } else if (m == 30 || m == 2) b.program_end = "M" + std::to_string(m);
     else b.m_codes.push_back(m);
   }
 
@@ -223,7 +224,8 @@ class reader {
                                 : w.letter == 'Z' ? &b.axes.z_mm : w.letter == 'A' ? &b.axes.a_deg
                                 : w.letter == 'B' ? &b.axes.b_deg : &b.axes.c_deg;
     if (*slot) return error(w.column, std::string("word '") + w.letter + "' appears twice");
-    if (l.g52_reset) b.kept_words.emplace_back(w.text);
+    if (l.dwell && w.letter != 'X') return error(w.column, std::string("word '") + w.letter + "' in a dwell block (G4)");
+    if (l.g52_reset || l.dwell) b.kept_words.emplace_back(w.text);  // G4 X1.5: 1.5 s, not a position
     else *slot = w.value;
   }
 
@@ -273,9 +275,21 @@ class reader {
       const std::string name = "G" + std::to_string(g / 10) + (g % 10 ? "." + std::to_string(g % 10) : "");
       error(w.column, name + " changes the working frame; kin5 does not model frame changes");
       l.suppress = true;  // its I J K R P words are the frame's
+    } else if (const std::string why = refusal_of_g(g); !why.empty()) {
+      error(w.column, "G" + std::to_string(g / 10) + (g % 10 ? "." + std::to_string(g % 10) : "") + why);
+      l.suppress = true;  // its D, P, L, R words are the construct's
     } else if (!l.unknown) {
       l.unknown = &w;
     }
+  }
+
+  /// Why G code `g` (times ten) is refused, after its name; empty for a code not understood.
+  static std::string refusal_of_g(int g) {
+    if (g == 410 || g == 420) return ": cutter radius compensation is not supported yet (the path would be off by the radius)";
+    if (g == 100) return ": setting offsets from the program is not supported (later moves would use other offsets)";
+    if (g == 650 || g == 660 || g == 661) return ": a macro call is not supported (the motion it makes would be lost)";
+    if (g == 920 || g == 921) return ": a coordinate system shift is not supported (the points that follow are in another frame)";
+    return "";
   }
 
   /// Machine-coordinate and homing blocks: the axis words are not workpiece positions.

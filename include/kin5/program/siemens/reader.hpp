@@ -41,10 +41,11 @@ inline void frame_words(line_parse& p) {
   }
 }
 
-/// Whether the line is kept verbatim: not understood and no geometry, or a lone MSG.
+/// Whether the line is kept verbatim: not understood, no geometry, and known to change nothing
+/// (`changes_nothing`), or a lone MSG. A line not understood that may change something is refused.
 inline bool is_passthrough(const line_parse& p) {
   const bool only_msg = p.has_msg && !p.has_content && !p.has_geometry && p.unknown.empty() && !p.b.moves();
-  return (!p.unknown.empty() && !p.has_geometry) || only_msg;
+  return (!p.unknown.empty() && !p.has_geometry && changes_nothing(p.b.text)) || only_msg;
 }
 
 /// The tool-axis vector from A3= B3= C3=.
@@ -98,6 +99,7 @@ inline void program_end(block& b, const modal_state& state) {
 /// diagnostics to `result` in column order.
 inline void finish(line_parse& p, modal_state& state, read_result& result) {
   block& b = p.b;
+  if (p.control) p.unknown.clear();  // the arguments of a refused jump or call
   frame_words(p);
   if (is_passthrough(p)) {
     block kept;

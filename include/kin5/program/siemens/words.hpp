@@ -37,6 +37,7 @@ struct line_parse {
   bool has_msg = false;
   std::optional<std::size_t> mcall_column;         ///< MCALL seen (a call after it is a modal cycle call)
   bool frame_arguments = false;  ///< RPL= and the like
+  bool control = false;          ///< a jump or call refused: the line's other words are its arguments
   std::vector<std::pair<std::string, std::size_t>> frame_words;  ///< TRANS, ROT, G58, … (column)
   std::vector<diagnostic> unknown;  ///< errors if the block has geometry, else it is passthrough
   std::vector<diagnostic> errors, warnings;
@@ -238,6 +239,9 @@ class word_reader {
         out_.has_content = true;
         if (whole(letter, v, start)) b.kept_words.push_back(letter + std::to_string(static_cast<long long>(v)));
         return;
+      case 'L':
+        return unknown(start, "L" + std::string(number_text) +
+                                  ": a subprogram call is not supported (the motion it makes would be lost)");
       default: unknown(start, "unknown word '" + std::string(1, letter) + std::string(number_text) + "'");
     }
   }
@@ -287,6 +291,8 @@ class word_reader {
     else if (g == 71 || g == 710) out_.b.metric = true;
     else if (g == 53 || g == 153) out_.b.machine_coordinates = true;
     else if (g == 58 || g == 59) out_.frame_words.emplace_back(canonical, start);
+    else if (g == 41 || g == 42) error(start, canonical + ": cutter radius compensation is not supported yet (the path would be off by the radius)");
+    else if (g == 4) error(start, "G4: a dwell is not supported yet (the dwell would be lost)");
     else unknown(start, "unknown word '" + canonical + "'");
   }
 
@@ -304,7 +310,12 @@ class word_reader {
     }
     const bool known = name == "TRAORI" || name == "TRAFOOF" || name == "SUPA" || is_kept_keyword(name) ||
                        is_frame_reset_keyword(name) || is_frame_keyword(name);
-    if (!known) return unknown(start, "unknown word '" + name + "'");
+    if (!known) {
+      std::string why = unread_keyword(name);
+      if (why.rfind("unknown word", 0) == 0) return unknown(start, std::move(why));
+      out_.control = true;  // `GOTOF END`, `IF R1>5 …`: refused once, at the keyword
+      return error(start, std::move(why));
+    }
     out_.has_content = true;
     if (name == "TRAORI" || name == "TRAFOOF") set_tcp(name == "TRAORI", name, start);
     else if (name == "SUPA") b.machine_coordinates = true;
@@ -344,13 +355,27 @@ class word_reader {
       out_.has_content = true;
       error(start, frame_message(name));
     } else {
-      unknown(start, "unknown word '" + name + "'");
+      unknown(start, name + "(…): a call kin5 does not read is not supported (a cycle or subprogram: the motion "
+                            "it makes would be lost)");
     }
+  }
+
+  /// The refusal of keyword `name`: control flow and calls named as such, others as unknown.
+  static std::string unread_keyword(const std::string& name) {
+    for (std::string_view flow : {"GOTOF", "GOTOB", "GOTO", "GOTOC", "IF", "ELSE", "ENDIF", "WHILE", "ENDWHILE", "FOR",
+                                  "ENDFOR", "REPEAT", "REPEATB", "UNTIL", "LOOP", "ENDLOOP", "CASE", "RET"})
+      if (name == flow) return name + ": control flow is not supported (the path would depend on it)";
+    for (std::string_view call : {"CALL", "PCALL", "EXTCALL", "MCALL"})
+      if (name == call) return name + ": a subprogram call is not supported (the motion it makes would be lost)";
+    return "unknown word '" + name + "'";
   }
 
   void keyword_assignment(const word& w) {
     if (w.name != "CR") {
-      if (w.name == "RPL") out_.frame_arguments = true;
+      if (w.name == "RPL") {  // ROT's angle: the frame word is the refusal
+        out_.frame_arguments = true;
+        return;
+      }
       return unknown(w.column, "unknown word '" + w.name + "'");
     }
     const auto v = assigned(w, "CR", true);

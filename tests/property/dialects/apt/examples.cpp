@@ -36,7 +36,7 @@ TEST_CASE("apt: a post-processor style file") {
   CHECK(b[1].program_begin == "BRACKET 7");
   CHECK((b[2].passthrough && b[2].text == "MACHIN/MILL,1"));
   CHECK(b[3].metric == true);
-  CHECK(b[4].tool == 4);
+  CHECK((b[4].tool == 4 && b[4].m_codes == std::vector<int>{6}));
   CHECK((b[5].spindle_rpm == 8000.0 && b[5].m_codes == std::vector<int>{3}));
   CHECK(b[6].m_codes == std::vector<int>{8});
   CHECK(b[7].passthrough);

@@ -89,7 +89,9 @@ item draw_item(bool& rapid_pending) {
     case 6: {
       const auto t = *rc::gen::inRange<long long>(0, 1000);
       b.tool = t;
-      it.text = statement("LOADTL", {draw_spelling(static_cast<double>(t), 0)});
+      b.m_codes = {6};  // a tool change, as ISO's T n M6
+      it.text = *rc::gen::arbitrary<bool>() ? statement("LOADTL", {draw_spelling(static_cast<double>(t), 0)})
+                                            : statement("LOAD", {draw_case("TOOL"), draw_spelling(static_cast<double>(t), 0)});
       break;
     }
     case 7: {
@@ -126,8 +128,10 @@ item draw_item(bool& rapid_pending) {
     }
     default: {
       b.passthrough = true;
-      it.text = *rc::gen::element<std::string>("MULTAX/ON", "MULTAX/OFF", "TLAXIS/0,0,1", "INSERT G05.1 Q1",
-                                               "CUTTER/10,0.5", "TOOL PATH/ROUGH,TOOL,EM10", "MSYS/0,0,0,1,0,0,0,1,0");
+      // Only statements that change no motion pass through (vocabulary.hpp); the rest are refused.
+      it.text = *rc::gen::element<std::string>("MULTAX/ON", "MULTAX/OFF", "MULTAX", "CUTTER/10,0.5", "SELECT/TOOL,3",
+                                               "TOOL PATH/ROUGH,TOOL,EM10", "MSYS/0,0,0,1,0,0,0,1,0",
+                                               "CSYS/1,0,0,0,0,1,0,0,0,0,1,0", "TLDATA/MILL,10,0.5,75,0");
       b.text = it.text;
       return it;
     }

@@ -73,7 +73,7 @@ std::vector<kin5::test::bad_input> kin5::test::contract<heidenhain::dialect>::ba
       {"99999999999999999999 L X+1\n", "t.h:1:1: error: block number out of range"},
       {"CYCL DEF 7.0 DATUM SHIFT\n  cycl def 7.1  X+5\n",
        "t.h:2:3: error: CYCL DEF 7 changes the working frame; kin5 does not model frame changes"},
-      {"CYCL DEF 247 DATUM SETTING~\nQ339=1\x02\n", "t.h:2:7: error: unexpected byte 0x02"},
+      {"CYCL DEF 7.0 DATUM SHIFT~\nX+0\x02\n", "t.h:2:4: error: unexpected byte 0x02"},
   };
   std::vector<bad_input> out;
   for (const bad& c : cases) out.push_back({c.text, {c.diagnostic}});
@@ -100,11 +100,11 @@ TEST_CASE("heidenhain: resets and control bytes inside comments are not errors")
   }
 }
 
-TEST_CASE("heidenhain: CYCL DEF 247 passes through with a warning") {
+TEST_CASE("heidenhain: CYCL DEF 247 is refused at its first line, the block kept whole") {
   const read_result r = heidenhain::read("0 CYCL DEF 247 DATUM SETTING~\n  Q339=+1 ;DATUM NUMBER\n1 L Z+5\n", "t.h");
-  CHECK(r.errors.empty());
-  REQUIRE(r.warnings.size() == 1);
-  CHECK(r.warnings[0].to_string("warning") == "t.h:1:3: warning: CYCL DEF 247 selects a datum preset; passed through unchanged");
+  REQUIRE(r.errors.size() == 1);
+  CHECK(r.errors[0].to_string() ==
+        "t.h:1:3: error: CYCL DEF 247 (datum setting) is not supported yet: the preset it selects would be lost");
   REQUIRE(r.parsed.blocks.size() == 2);
   CHECK(r.parsed.blocks[0].passthrough);
   CHECK(r.parsed.blocks[0].text == "0 CYCL DEF 247 DATUM SETTING~\n  Q339=+1 ;DATUM NUMBER");

@@ -16,8 +16,8 @@ const std::string program_text =
     "BEGIN PGM BRACKET MM\r\n"
     "M129\r\n"
     "PLANE RESET STAY\r\n"
-    "CYCL DEF 247 DATUM SETTING~\r\n"
-    "Q339=1; DATUM NUMBER\r\n"
+    "BLK FORM 0.1 Z X-32.746~\r\n"
+    "Y-32.697 Z-74.399; BLANK\r\n"
     "1 ; \r\n"
     "2 ;  OPERATION: ROUGH - TOOL: T3 D10.0\r\n"
     "3 TOOL CALL  3 Z S8000\r\n"
@@ -35,7 +35,7 @@ const std::string program_text =
     "13 L X+34.983 Y+118.526 Z+9.1 B+17.067 C+87.479 R0 F1137 M128\r\n"
     "14 ;L X+0 Y+0 M128\r\n"
     "15 FUNCTION RESET TCPM\r\n"
-    "16 M140 MB MAX\r\n"
+    "16 TOOL DEF 5\r\n"
     "17\r\n"
     "18 M5 M9\r\n"
     "19 M30\r\n"
@@ -45,15 +45,14 @@ const std::string program_text =
 TEST_CASE("heidenhain: a program in NX and hand-edit style") {
   const read_result r = heidenhain::read(program_text, "b.h");
   REQUIRE(r.errors.empty());
-  REQUIRE(r.warnings.size() == 2);
-  CHECK(r.warnings[0].to_string("warning") == "b.h:4:1: warning: CYCL DEF 247 selects a datum preset; passed through unchanged");
-  CHECK(r.warnings[1].to_string("warning") == "b.h:27:12: warning: END PGM name '100' differs from BEGIN PGM 'BRACKET'");
+  REQUIRE(r.warnings.size() == 1);
+  CHECK(r.warnings[0].to_string("warning") == "b.h:27:12: warning: END PGM name '100' differs from BEGIN PGM 'BRACKET'");
   const auto& b = r.parsed.blocks;
   REQUIRE(b.size() == 25);
   CHECK((b[0].program_begin == "BRACKET" && b[0].metric == true && !b[0].number));
   CHECK((b[1].tcp == false && b[1].m_codes.empty()));
   CHECK((b[2].passthrough && b[2].text == "PLANE RESET STAY"));
-  CHECK((b[3].passthrough && b[3].text == "CYCL DEF 247 DATUM SETTING~\nQ339=1; DATUM NUMBER"));
+  CHECK((b[3].passthrough && b[3].text == "BLK FORM 0.1 Z X-32.746~\nY-32.697 Z-74.399; BLANK"));
   CHECK((b[4].number == 1 && b[4].comment == " " && b[4].where.line == 6));
   CHECK(b[5].comment == "  OPERATION: ROUGH - TOOL: T3 D10.0");
   CHECK((b[6].tool == 3 && b[6].spindle_rpm == 8000.0 && b[6].kept_words == std::vector<std::string>{"Z"}));
@@ -82,23 +81,25 @@ TEST_CASE("heidenhain: a program in NX and hand-edit style") {
   CHECK((b[17].m_codes.empty() && b[17].kept_words == std::vector<std::string>{"R0"}));
   CHECK((b[18].comment == "L X+0 Y+0 M128" && !b[18].tcp));
   CHECK(b[19].tcp == false);
-  CHECK((b[20].passthrough && b[20].text == "16 M140 MB MAX"));
+  CHECK((b[20].passthrough && b[20].text == "16 TOOL DEF 5"));
   CHECK((b[21].number == 17 && !b[21].comment && !b[21].passthrough && !b[21].motion));
   CHECK(b[22].m_codes == std::vector<int>{5, 9});
   CHECK(b[23].m_codes == std::vector<int>{30});
   CHECK((b[24].program_end == "100" && b[24].metric == true));
 }
 
-TEST_CASE("heidenhain: tool calls by name and other controls' words pass through") {
+TEST_CASE("heidenhain: a tool call by name is refused; TOOL CALL's axis sets the plane") {
   const read_result r = heidenhain::read("TOOL CALL \"MILL_D10\" Z S5000 DL+0.1\nTOOL CALL 5 Y\nCR X+1 Z+0 R+5 DR+\n", "n.h");
-  REQUIRE(r.errors.empty());
+  REQUIRE(r.errors.size() == 1);
+  CHECK(r.errors[0].to_string() ==
+        "n.h:1:1: error: TOOL CALL: only TOOL CALL n with an axis, S, F, DL and DR is read (a tool called by name or "
+        "with other words is not supported)");
   REQUIRE(r.parsed.blocks.size() == 3);
   CHECK(r.parsed.blocks[0].passthrough);
   CHECK((r.parsed.blocks[1].tool == 5 && r.parsed.blocks[1].kept_words == std::vector<std::string>{"Y"}));
   // TOOL CALL … Y makes ZX the working plane of the radius arc.
   REQUIRE(r.parsed.blocks[2].arc);
   CHECK(r.parsed.blocks[2].arc->plane == arc_plane::zx);
-  CHECK(heidenhain::write(r.parsed) == "0 TOOL CALL \"MILL_D10\" Z S5000 DL+0.1\n1 TOOL CALL 5 Y\n2 CR X+1 Z+0 R+5 DR+\n");
 }
 
 TEST_CASE("heidenhain: the writer numbers blocks from 0 in Heidenhain style") {
@@ -107,8 +108,8 @@ TEST_CASE("heidenhain: the writer numbers blocks from 0 in Heidenhain style") {
       "0 BEGIN PGM BRACKET MM\n"
       "1 M129\n"
       "2 PLANE RESET STAY\n"
-      "3 CYCL DEF 247 DATUM SETTING~\n"
-      "Q339=1; DATUM NUMBER\n"
+      "3 BLK FORM 0.1 Z X-32.746~\n"
+      "Y-32.697 Z-74.399; BLANK\n"
       "4 ; \n"
       "5 ;  OPERATION: ROUGH - TOOL: T3 D10.0\n"
       "6 TOOL CALL 3 Z S8000\n"
@@ -125,7 +126,7 @@ TEST_CASE("heidenhain: the writer numbers blocks from 0 in Heidenhain style") {
       "17 L X+34.983 Y+118.526 Z+9.1 B+17.067 C+87.479 R0 F1137 M128\n"
       "18 ;L X+0 Y+0 M128\n"
       "19 M129\n"
-      "20 M140 MB MAX\n"
+      "20 TOOL DEF 5\n"
       "21\n"
       "22 M5 M9\n"
       "23 M30\n"

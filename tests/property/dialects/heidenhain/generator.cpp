@@ -129,19 +129,16 @@ item draw_item(modal& m) {
         if (a == 4) b.axes.b_deg = v;
         if (a == 5) b.axes.c_deg = v;
       }
-      const std::string comp = *rc::gen::element<std::string>("", "", "R0", "RL", "RR");
+      // RL/RR (radius compensation) and FAUTO are refused until read into the model.
+      const std::string comp = *rc::gen::element<std::string>("", "", "R0");
       if (!comp.empty()) t += gap() + draw_case(comp), b.kept_words.push_back(comp);
       b.motion = motion_kind::linear;
-      switch (*rc::gen::inRange(0, 4)) {
+      switch (*rc::gen::inRange(0, 3)) {
         case 0: break;
         case 1:
           t += gap() + draw_case("FMAX");
           b.feed_rapid = true;
           b.motion = motion_kind::rapid;
-          break;
-        case 2:
-          t += gap() + draw_case("FAUTO");
-          b.kept_words.push_back("FAUTO");
           break;
         default: {
           const double f = draw_decimal(0, 20000, 1);
@@ -236,7 +233,8 @@ item draw_item(modal& m) {
         m.plane = axis == "Z" ? arc_plane::xy : axis == "Y" ? arc_plane::zx : arc_plane::yz;
       }
       if (*rc::gen::arbitrary<bool>()) {
-        const std::string dl = "DL" + spell(draw_decimal(-1, 1, 3), 3);
+        // An oversize other than 0 is refused (reader.hpp); `+.` is no number, so 0 is spelled out.
+        const std::string dl = *rc::gen::element<std::string>("DL+0", "DL0", "DL-0.000", "DL+0.0");
         t += gap() + draw_case(dl);
         b.kept_words.push_back(dl);
       }
@@ -293,11 +291,10 @@ item draw_item(modal& m) {
       break;
     }
     case 13: {  // passed through unchanged
-      t = *rc::gen::element<std::string>("BLK FORM 0.1 Z X-32.746 Y-32.697 Z-74.399", "CYCL DEF 200 DRILLING",
-                                         "PLANE RESET STAY", "M140 MB MAX", "LBL 1", "STOP", "CYCL DEF 19.0 WORKING PLANE",
-                                         "CYCL DEF 19.1 A+0 B+0 C+0", "CYCL DEF 7.0 DATUM SHIFT",
-                                         "CYCL DEF 32.0 TOLERANCE", "CALL LBL 1 REP 2", "Q1 = 5 ; depth",
-                                         "CYCL DEF 247 DATUM SETTING ~\n  Q339=+1 ;DATUM NUMBER");
+      // Only blocks that change nothing pass through; cycles, labels, calls are refused (reader.hpp).
+      t = *rc::gen::element<std::string>("BLK FORM 0.1 Z X-32.746 Y-32.697 Z-74.399", "PLANE RESET STAY",
+                                         "CYCL DEF 19.0 WORKING PLANE", "CYCL DEF 19.1 A+0 B+0 C+0",
+                                         "CYCL DEF 7.0 DATUM SHIFT", "Q1 = 5 ; depth", "TOOL DEF 5");
       b.passthrough = true;
       break;
     }

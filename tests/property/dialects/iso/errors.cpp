@@ -63,9 +63,10 @@ TEST_CASE("iso: reading goes on after an error and keeps every line") {
 
 TEST_CASE("iso: harmless words and resets are not errors") {
   const read_result r = iso::read("G52 X0 Y0\nG69\nG50\nG49\nG90\nG10 L2 P1 X5\n", "t.nc");
-  // G10 with an axis word is not understood: an error; the others read fine.
+  // G10 (offsets set from the program) is refused; the others read fine.
   REQUIRE(r.errors.size() == 1);
-  CHECK(r.errors[0].to_string() == "t.nc:6:1: error: unknown word 'G10'");
+  CHECK(r.errors[0].to_string() ==
+        "t.nc:6:1: error: G10: setting offsets from the program is not supported (later moves would use other offsets)");
   CHECK(r.parsed.blocks[0].kept_words == std::vector<std::string>{"G52", "X0", "Y0"});
   CHECK(!r.parsed.blocks[0].moves());
 }

@@ -149,15 +149,17 @@ TEST_CASE("iso: blocks from another dialect") {
   CHECK(iso::write(p) == "G53 G0 X1 Y2\n;CYCL DEF 7.0 (DATUM)\n(BLK FORM 0.1 Z)\n");
 }
 
-TEST_CASE("iso: a passthrough line changes nothing, spaced kept words write back as they were") {
-  // G29 is not understood, so the G18 beside it must not select the ZX plane.
+TEST_CASE("iso: a line not understood is refused and changes nothing, spaced kept words write back as they were") {
+  // G29 is not understood: refused, and the G18 beside it must not select the ZX plane.
   const std::string text = "G0 X0 Y0 Z0\nG18 G29\nG2 X10 Y0 I5\nG 28 Z0\nO004200404\n";
   const read_result r = iso::read(text, "p.nc");
-  REQUIRE(r.errors.empty());
+  REQUIRE(r.errors.size() == 1);
+  CHECK(r.errors[0].to_string() == "p.nc:2:5: error: unknown word 'G29'");
   const auto& b = r.parsed.blocks;
-  CHECK(b[1].passthrough);
   CHECK(b[2].arc->plane == arc_plane::xy);
   CHECK(b[2].arc->centre_mm == kin5::vec3{5, 0, 0});
   CHECK(b[4].program_begin == "004200404");
-  CHECK(iso::write(r.parsed) == "G0 X0 Y0 Z0\nG18 G29\nG2 X10 Y0 I5 J0\nG 28 Z0\nO004200404\n");
+  const read_result ok = iso::read("G0 X0 Y0 Z0\nG 28 Z0\nO004200404\n", "p.nc");
+  REQUIRE(ok.ok());
+  CHECK(iso::write(ok.parsed) == "G0 X0 Y0 Z0\nG 28 Z0\nO004200404\n");
 }
