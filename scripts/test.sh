@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian machine, builds everything and runs every test: each libFuzzer target
-# for a bounded number of inputs under AddressSanitizer and UndefinedBehaviorSanitizer, then the
-# unit, property, golden, CLI and consumer tests through CTest.
+# for a bounded number of inputs under AddressSanitizer and UndefinedBehaviorSanitizer, the CLI
+# tests against a sanitizer build of the tool, then the unit, property, golden, CLI and consumer
+# tests through CTest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup-debian.sh
@@ -10,19 +11,27 @@ jobs=$(nproc 2>/dev/null || echo 2)
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$jobs"
 
-# Fuzz smoke run: KIN5_FUZZ_RUNS inputs per reader (default 150000, 0 to skip), from a fixed
-# seed so that a CI run is reproducible; fuzz longer, with other seeds, by hand:
+# Fuzz smoke run: KIN5_FUZZ_RUNS inputs per reader (default 150000, 0 to skip) and
+# KIN5_PIPELINE_FUZZ_RUNS through the whole pipeline (read, translate, write; default 1000, at
+# most 45 seconds: its inputs reach 1.25 MiB), from a fixed seed so that a CI run is
+# reproducible; fuzz longer, with other seeds, by hand (docs/reliability.md):
 #   build-fuzz/tests/fuzz/siemens_fuzz -max_total_time=600 corpus/
 runs=${KIN5_FUZZ_RUNS:-150000}
+pipeline_runs=${KIN5_PIPELINE_FUZZ_RUNS:-1000}
 if [ "$runs" -gt 0 ]; then
   cmake -S . -B build-fuzz -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DKIN5_BUILD_FUZZ=ON -DKIN5_BUILD_TESTS=OFF -DKIN5_BUILD_TOOLS=OFF -DKIN5_BUILD_REACH=OFF -DKIN5_INSTALL=OFF
   cmake --build build-fuzz -j"$jobs"
   shopt -s nullglob
   for fuzzer in build-fuzz/tests/fuzz/*_fuzz; do
-    echo "fuzzing $(basename "$fuzzer"): $runs inputs, seed 1"
+    n=$runs max_len=0 seconds=0  # 0: libFuzzer chooses the length; no time limit
+    # the pipeline: inputs long enough to cross the block store's first 1 MiB chunk
+    [ "$(basename "$fuzzer")" = pipeline_fuzz ] && n=$pipeline_runs max_len=1310720 seconds=45
+    [ "$n" -gt 0 ] || continue
+    echo "fuzzing $(basename "$fuzzer"): $n inputs, seed 1"
     corpus=$(mktemp -d)
-    if ! "$fuzzer" -seed=1 -runs="$runs" -print_final_stats=1 -artifact_prefix="$corpus/" "$corpus" >"$corpus/log" 2>&1; then
+    if ! "$fuzzer" -seed=1 -runs="$n" -max_len="$max_len" -max_total_time="$seconds" -print_final_stats=1 -artifact_prefix="$corpus/" "$corpus" \
+      >"$corpus/log" 2>&1; then
       tail -n 60 "$corpus/log"
       echo "$(basename "$fuzzer") failed; the input is in $corpus" >&2
       exit 1
@@ -30,6 +39,17 @@ if [ "$runs" -gt 0 ]; then
     tail -n 2 "$corpus/log"
     rm -rf "$corpus"
   done
+fi
+
+# The command-line tests once more against an AddressSanitizer + UndefinedBehaviorSanitizer
+# build of the tool alone (-O1; KIN5_SANITIZE=0 skips it): memory errors in the tool's own code
+# and on its file, signal and limit paths, which the fuzzers (library only) do not reach.
+if [ "${KIN5_SANITIZE:-1}" != 0 ]; then
+  sanitize="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+  cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+    -DCMAKE_CXX_FLAGS="$sanitize" -DCMAKE_EXE_LINKER_FLAGS="$sanitize" -DKIN5_BUILD_REACH=OFF -DKIN5_INSTALL=OFF
+  cmake --build build-asan -j"$jobs" --target kin5_cli
+  ctest --test-dir build-asan --output-on-failure -j"$jobs" -R '^(cli|cli_program|cli_program reliability|bad): '
 fi
 
 # CTest last, so that its summary closes the output.
