@@ -40,7 +40,7 @@ struct inverse_options {
   /// An angle this far outside a travel limit is taken as on it (and clamped to it).
   radians travel_slack{1e-9};
   /// A linear axis value this far outside its travel (mm) is taken as within it.
-  double linear_slack_mm = 1e-9;
+  double linear_slack_mm = 1e-6;
 };
 
 /// Most solutions one tool axis can have on machine `m`: two branches (one on a 4-axis machine),
