@@ -3,9 +3,10 @@
 //   kin5 translate --from ID --to ID [--feed P] [--from-dialect D] [--to-dialect D] [-o OUT] IN
 //   kin5 reverse   --machine ID [--dialect D] [-o OUT] IN       NC program -> APT CL data
 //   kin5 post      --machine ID [--dialect D] [-o OUT] IN       APT CL data -> NC program
+// (each machine also as a machine file: --from-file, --to-file, --machine-file; machine_option.hpp)
 //
 // Each one reads IN (a path, or '-' for stdin) as bytes and runs a `block_translator`
-// (translate/by_id.hpp: make_translator / make_reverse / make_post) over them with the library's
+// (translate/pipeline.hpp: make_translator / make_reverse / make_post, on machine values) over them with the library's
 // streaming driver (translate/stream.hpp: two passes, the second over compact block records),
 // which writes each output block as it is made to OUT (a path, or '-' / nothing for stdout).
 // Everything else goes to stderr:
@@ -35,11 +36,12 @@
 
 #include <kin5/program/io.hpp>
 #include <kin5/program/number.hpp>
-#include <kin5/translate/by_id.hpp>
+#include <kin5/translate/translate.hpp>
 #include <kin5/translate/stream.hpp>
 
 #include "commands.hpp"
 #include "format.hpp"
+#include "machine_option.hpp"
 #include "output_file.hpp"
 
 namespace kin5::tool {
@@ -263,16 +265,8 @@ int execute(const job& j) {
 
 // ---- argument checks ----------------------------------------------------------------------
 
-/// Whether `id` is a catalog machine; if not, says so with the valid ids.
-bool known_machine(std::string_view command, std::string_view option, const std::string& id) {
-  if (with_machine(id, []<class>() {})) return true;
-  std::cerr << "kin5 " << command << ": " << option << ": unknown machine '" << id
-            << "'; valid ids: " << join(machine_ids()) << '\n';
-  return false;
-}
-
 /// The dialect named `given`, or else the machine's default.
-prog::dialect dialect_or_default(const std::string& given, const std::string& machine_id) {
+prog::dialect dialect_or_default(const std::string& given, std::string_view machine_id) {
   if (!given.empty()) return *prog::parse_dialect(given);
   return prog::default_dialect(machine_id).value_or(prog::dialect::siemens);
 }
@@ -344,7 +338,8 @@ void add_common_options(CLI::App* sub, common_arguments& a) {
 }
 
 struct translate_arguments {
-  std::string from, to, feed{feed_policies[0].name}, from_dialect, to_dialect, output = "-", input;
+  machine_choice from, to;
+  std::string feed{feed_policies[0].name}, from_dialect, to_dialect, output = "-", input;
   std::string setup_rotation, setup_axis, setup_offset;
   std::optional<double> setup_angle_deg;
   common_arguments common;
@@ -367,9 +362,10 @@ std::optional<std::vector<double>> parse_list(std::string_view text, std::size_t
 /// target_T_source from --setup-rotation | --setup-axis with --setup-angle, and --setup-offset;
 /// what is not given comes from the pair's default setup. Prints the reason and returns nothing
 /// on bad input.
-std::optional<rigid_transform> parse_setup(const translate_arguments& a) {
+std::optional<rigid_transform> parse_setup(const translate_arguments& a, const machine_model& from,
+                                           const machine_model& to) {
   const bool any = !a.setup_rotation.empty() || !a.setup_axis.empty() || a.setup_angle_deg || !a.setup_offset.empty();
-  rigid_transform setup = default_setup(a.from, a.to);
+  rigid_transform setup = default_setup(from.geometry.id, to.geometry.id);
   if (!any) return setup;
   auto fail = [](const std::string& why) -> std::optional<rigid_transform> {
     std::cerr << "kin5 translate: " << why << "\n";
@@ -405,25 +401,31 @@ std::optional<rigid_transform> parse_setup(const translate_arguments& a) {
 }
 
 struct machine_arguments {
-  std::string machine, dialect, output = "-", input;
+  machine_choice machine;
+  std::string dialect, output = "-", input;
   common_arguments common;
   bool verbose = false;
 };
 
 int run_translate(const translate_arguments& a) {
-  if (!known_machine("translate", "--from", a.from) || !known_machine("translate", "--to", a.to))
-    return exit_codes::usage;
+  int code = exit_codes::ok;
+  const std::optional<chosen_machine> from = resolve_machine(a.from, "translate", code);
+  if (!from) return code;
+  const std::optional<chosen_machine> to = resolve_machine(a.to, "translate", code);
+  if (!to) return code;
+  const machine_model& from_model = from->model();
+  const machine_model& to_model = to->model();
   job j;
   j.command = "translate";
   j.input_path = a.input;
   j.output_path = a.output;
-  j.input_dialect = dialect_or_default(a.from_dialect, a.from);
+  j.input_dialect = dialect_or_default(a.from_dialect, from_model.geometry.id);
   j.input_dialect_given = !a.from_dialect.empty();
-  j.output_dialect = dialect_or_default(a.to_dialect, a.to);
-  j.target = a.to;
+  j.output_dialect = dialect_or_default(a.to_dialect, to_model.geometry.id);
+  j.target = std::string(to_model.geometry.id);
   j.verbose = a.verbose;
   translate_options options;
-  options.setup = parse_setup(a);
+  options.setup = parse_setup(a, from_model, to_model);
   if (!options.setup) return exit_codes::usage;
   const auto feed = parse_feed_policy(a.feed);
   if (!feed) {
@@ -443,47 +445,53 @@ int run_translate(const translate_arguments& a) {
   const auto common = parse_common("translate", a.common);
   if (!common) return exit_codes::usage;
   options.common = *common;
-  j.make = [&a, options](prog::dialect d, const std::string& file) {
-    return kin5::make_translator(a.from, a.to, d, file, options, report_detail::exceptions_only);
+  j.make = [&from_model, &to_model, options](prog::dialect d, const std::string& file) {
+    return kin5::make_translator(from_model, to_model, d, file, options, report_detail::exceptions_only);
   };
   return execute(j);
 }
 
 int run_reverse(const machine_arguments& a) {
-  if (!known_machine("reverse", "--machine", a.machine)) return exit_codes::usage;
+  int code = exit_codes::ok;
+  const std::optional<chosen_machine> m = resolve_machine(a.machine, "reverse", code);
+  if (!m) return code;
+  const machine_model& model = m->model();
   job j;
   j.command = "reverse";
   j.input_path = a.input;
   j.output_path = a.output;
-  j.input_dialect = dialect_or_default(a.dialect, a.machine);
+  j.input_dialect = dialect_or_default(a.dialect, model.geometry.id);
   j.input_dialect_given = !a.dialect.empty();
   j.output_dialect = prog::dialect::apt;
   j.target = "APT CL data";
   j.verbose = a.verbose;
   const auto common = parse_common("reverse", a.common);
   if (!common) return exit_codes::usage;
-  j.make = [&a, common](prog::dialect d, const std::string& file) {
-    return kin5::make_reverse(a.machine, d, file, report_detail::exceptions_only, *common);
+  j.make = [&model, common](prog::dialect d, const std::string& file) {
+    return kin5::make_reverse(model, d, file, report_detail::exceptions_only, *common);
   };
   return execute(j);
 }
 
 int run_post(const machine_arguments& a) {
-  if (!known_machine("post", "--machine", a.machine)) return exit_codes::usage;
+  int code = exit_codes::ok;
+  const std::optional<chosen_machine> m = resolve_machine(a.machine, "post", code);
+  if (!m) return code;
+  const machine_model& model = m->model();
   job j;
   j.command = "post";
   j.input_path = a.input;
   j.output_path = a.output;
   j.input_dialect = prog::dialect::apt;
   j.input_dialect_given = true;
-  j.output_dialect = dialect_or_default(a.dialect, a.machine);
-  j.target = a.machine;
+  j.output_dialect = dialect_or_default(a.dialect, model.geometry.id);
+  j.target = std::string(model.geometry.id);
   j.verbose = a.verbose;
   const prog::dialect out = j.output_dialect;
   const auto common = parse_common("post", a.common);
   if (!common) return exit_codes::usage;
-  j.make = [&a, out, common](prog::dialect d, const std::string& file) {
-    return kin5::make_post(a.machine, d, out, file, report_detail::exceptions_only, *common);
+  j.make = [&model, out, common](prog::dialect d, const std::string& file) {
+    return kin5::make_post(model, d, out, file, report_detail::exceptions_only, *common);
   };
   return execute(j);
 }
@@ -519,8 +527,8 @@ void add_program_commands(CLI::App& app, int& exit_code) {
   {
     auto a = std::make_shared<translate_arguments>();
     auto* sub = app.add_subcommand("translate", "Translate an NC program from one machine to another");
-    sub->add_option("--from", a->from, "Machine the program was written for (see `kin5 machines`)")->required();
-    sub->add_option("--to", a->to, "Machine to write the program for")->required();
+    add_machine_options(*sub, a->from, "--from", "Machine the program was written for");
+    add_machine_options(*sub, a->to, "--to", "Machine to write the program for");
     sub->add_option("--feed", a->feed, feed_policy_help())
         ->check(CLI::IsMember(std::vector<std::string>(feed_names.begin(), feed_names.end())))
         ->capture_default_str();
@@ -543,7 +551,7 @@ void add_program_commands(CLI::App& app, int& exit_code) {
   {
     auto a = std::make_shared<machine_arguments>();
     auto* sub = app.add_subcommand("reverse", "Turn a machine's NC program into APT CL data (tool tip and axis)");
-    sub->add_option("--machine,-m", a->machine, "Machine the program was written for")->required();
+    add_machine_options(*sub, a->machine, "--machine", "Machine the program was written for");
     sub->add_option("--dialect", a->dialect, "Dialect of IN (default: the machine's)")->check(dialects);
     sub->add_option("-o,--output", a->output, "Output file; '-' for stdout")->capture_default_str();
     add_common_options(sub, a->common);
@@ -555,7 +563,7 @@ void add_program_commands(CLI::App& app, int& exit_code) {
   {
     auto a = std::make_shared<machine_arguments>();
     auto* sub = app.add_subcommand("post", "Post-process APT CL data into an NC program for a machine");
-    sub->add_option("--machine,-m", a->machine, "Machine to write the program for")->required();
+    add_machine_options(*sub, a->machine, "--machine", "Machine to write the program for");
     sub->add_option("--dialect", a->dialect, "Dialect of OUT (default: the machine's)")->check(dialects);
     sub->add_option("-o,--output", a->output, "Output file; '-' for stdout")->capture_default_str();
     add_common_options(sub, a->common);

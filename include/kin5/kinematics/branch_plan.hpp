@@ -10,7 +10,8 @@
 /// blocks are skipped and reported with their gap; at a pole (S2), and within `pole_zone` of
 /// one, the free angle is the neighbours'. Fed one tool axis at a time (`rotary_planner`), it keeps only the candidates
 /// (one or two per block) and a back pointer each; `plan_rotary_path` plans a whole list.
-/// Needs only `inverse<M>` and the standard library.
+/// Needs only `inverse` and the standard library. `rotary_planner<M>` plans for machine type M,
+/// `rotary_planner_values` for a `machine_model` known at run time (the same code).
 /// @code
 ///   kin5::rotary_planner<kin5::machines::dmu_80p> planner;
 ///   for (const kin5::vec3& u_target : tool_axes) planner.add(u_target);
@@ -31,16 +32,23 @@
 
 namespace kin5 {
 
-/// Rotary travel from `from` to `to`, Σ|Δ| in radians; a continuous axis goes the short way
-/// round (it is unwrapped next to the previous block, so that is the move it makes).
-template <machine M>
-constexpr double rotary_step_cost(const rotary_angles<M>& from, const rotary_angles<M>& to) {
+/// Rotary travel of machine `m` from `from` to `to`, Σ|Δ| in radians; a continuous axis goes the
+/// short way round (it is unwrapped next to the previous block, so that is the move it makes).
+template <std::size_t N>
+constexpr double rotary_step_cost(const machine_model& m, const std::array<radians, N>& from,
+                                  const std::array<radians, N>& to) {
   double sum = 0.0;
-  for (std::size_t i = 0; i < rotary_count<M>; ++i) {
+  for (std::size_t i = 0; i < m.rotary_count && i < N; ++i) {
     const double d = to[i].value - from[i].value;
-    sum += math::abs(M::rotary[i].travel.continuous ? math::wrap_pi(d) : d);
+    sum += math::abs(m.rotary(i).travel.continuous ? math::wrap_pi(d) : d);
   }
   return sum;
+}
+
+/// `rotary_step_cost` for machine type M.
+template <machine M>
+constexpr double rotary_step_cost(const rotary_angles<M>& from, const rotary_angles<M>& to) {
+  return rotary_step_cost(M::model, from, to);
 }
 
 /// Total rotary travel of a path of commanded angles, Σ over steps and axes of |Δ| (radians).
@@ -60,11 +68,11 @@ constexpr double total_rotary_travel(std::span<const rotary_angles<M>> path) {
 /// and the tool axis moves by at most 1e-5 rad (0.001 mm at a 100 mm tool).
 inline constexpr radians pole_zone{1e-5};
 
-/// The chosen path: per tool axis the commanded angles (continuous axes unwrapped next to the
-/// previous block), or nothing when the block is unreachable.
-template <machine M>
-struct rotary_path {
-  std::vector<std::optional<rotary_angles<M>>> angles;
+/// The chosen path: per tool axis the commanded angles (N of them, continuous axes unwrapped
+/// next to the previous block), or nothing when the block is unreachable.
+template <std::size_t N>
+struct basic_rotary_path {
+  std::vector<std::optional<std::array<radians, N>>> angles;
   std::vector<int> branch;         ///< branch of the chosen solution (−1: unreachable)
   std::vector<bool> pole;          ///< the chosen solution is at a pole
   std::vector<unsigned> branches;  ///< bit b set: some candidate on branch b (a pole sets both)
@@ -82,12 +90,20 @@ struct rotary_path {
 ///
 /// Memory: the candidates of every block (one or two per block away from poles) and one back
 /// pointer each; the DP itself keeps only the last reachable block's costs.
-template <machine M>
-class rotary_planner {
+///
+/// `basic_rotary_planner<N, Capacity>` plans for the machine value it is given (N angles,
+/// `inverse` results of `Capacity`); `rotary_planner<M>` for machine type M;
+/// `rotary_planner_values` for any machine known at run time.
+template <std::size_t N, std::size_t Capacity>
+class basic_rotary_planner {
  public:
+  using angles_type = std::array<radians, N>;
+  using result_type = basic_inverse_result<N, Capacity>;
+
   /// `options`: the reach tolerance and travel slack of every `inverse` it solves (its pole
   /// rule is the planner's own).
-  explicit rotary_planner(const inverse_options& options = {}) : options_(options) {}
+  explicit basic_rotary_planner(const machine_model& m, const inverse_options& options = {})
+      : machine_(m), options_(options) {}
 
   /// Adds the tool axis (target frame, unit) of the next block.
   void add(const vec3& u_target) {
@@ -95,7 +111,7 @@ class rotary_planner {
     if (pending_.empty() && first_.size() != k) throw std::logic_error("rotary_planner: blocks out of order");
     gap_.push_back(radians{0.0});
     const vec3 u = near_pole(u_target).value_or(u_target);
-    const auto r = inverse<M>(u, options_);
+    const result_type& r = solve(scratch_, u, options_);
     if (!r.reachable()) gap_[k] = r.gap;
     if (r.status == reach_status::pole) {
       pending_.push_back({k, u, true});
@@ -118,11 +134,11 @@ class rotary_planner {
   }
 
   /// The chosen path for every axis added (and clears the planner).
-  rotary_path<M> finish() {
+  basic_rotary_path<N> finish() {
     flush(nullptr);
     const std::size_t n = count_;
     first_.push_back(static_cast<std::uint32_t>(candidates_.size()));  // first_[n]: the end
-    rotary_path<M> path;
+    basic_rotary_path<N> path;
     path.gap = std::move(gap_);
     path.angles.assign(n, std::nullopt);
     path.branch.assign(n, -1);
@@ -143,19 +159,19 @@ class rotary_planner {
         choice[k] = chosen;
         chosen = candidates_[chosen].previous;
       }
-      std::optional<rotary_angles<M>> before;
+      std::optional<angles_type> before;
       for (std::size_t k = 0; k < n; ++k) {
         if (choice[k] == none32) continue;
         const stored& c = candidates_[choice[k]];
-        rotary_angles<M> a = before ? unwrap_continuous<M>(c.angles, *before) : c.angles;
-        if (before) path.travel_rad += rotary_travel_between<M>(*before, a)[1];
+        angles_type a = before ? unwrap_continuous(machine_, c.angles, *before) : c.angles;
+        if (before) path.travel_rad += rotary_travel_between(*before, a)[1];
         path.angles[k] = a;
         path.branch[k] = c.branch;
         path.pole[k] = c.pole;
         before = a;
       }
     }
-    *this = rotary_planner{options_};
+    *this = basic_rotary_planner{machine_, options_};
     return path;
   }
 
@@ -163,7 +179,7 @@ class rotary_planner {
   static constexpr std::size_t none = static_cast<std::size_t>(-1);
   static constexpr std::uint32_t none32 = static_cast<std::uint32_t>(-1);
   struct stored {
-    rotary_angles<M> angles{};  ///< continuous axes in (−180°, 180°]
+    angles_type angles{};  ///< continuous axes in (−180°, 180°]
     std::int8_t branch = 0;     ///< (G3) branch; a pole counts as both
     bool pole = false;
     std::uint32_t previous = none32;  ///< the best candidate of the previous reachable block
@@ -184,7 +200,9 @@ class rotary_planner {
     return a.off_principal < b.off_principal;
   }
 
+  machine_model machine_;
   inverse_options options_;
+  result_type scratch_{}, pole_scratch_{};  // reused: no clearing of `Capacity` solutions per block
   std::size_t count_ = 0;                // blocks added
   std::vector<stored> candidates_;       // every block's candidates, in block order
   std::vector<std::uint32_t> first_;     // per block: its first candidate in candidates_
@@ -195,14 +213,23 @@ class rotary_planner {
   std::size_t last_ = none;              // that block
   std::size_t anchor_ = none;            // the last reachable non-pole block
 
-  /// The pole ±p of M that `u` lies within `pole_zone` of, when that pole is within travel.
+  /// The pole ±p of the machine that `u` lies within `pole_zone` of, when that pole is within travel.
   std::optional<vec3> near_pole(const vec3& u) const {
-    if constexpr (rotary_count<M> == 2) {
-      constexpr vec3 p = geometry<M>().p;
+    if (N >= 2 && machine_.rotary_count == 2) {
+      const vec3 p = machine_.orientation.p;
       for (const vec3& pole : {p, -p})
-        if (angle_between(u, pole).value <= pole_zone.value && inverse<M>(pole, options_).reachable()) return pole;
+        if (angle_between(u, pole).value <= pole_zone.value && inverse(machine_, pole, options_).reachable()) return pole;
     }
     return std::nullopt;
+  }
+
+  /// The solutions of `u` written into `r`, reused from block to block (only its header reset).
+  const result_type& solve(result_type& r, const vec3& u, const inverse_options& options) const {
+    r.status = reach_status::unreachable;
+    r.gap = radians{0.0};
+    r.count = 0;
+    inverse_into(machine_, u, options, r);
+    return r;
   }
 
   /// Starts the candidate list of the next block (blocks are begun in order, each once).
@@ -212,14 +239,14 @@ class rotary_planner {
   }
 
   /// Appends the within-travel solutions of `r` to the block begun last, without duplicates.
-  void add_within_travel(const inverse_result<M>& r, bool pole) {
+  void add_within_travel(const result_type& r, bool pole) {
     const std::size_t start = first_.back();
     for (const auto& s : r) {
       if (!s.within_travel) continue;
       bool duplicate = false;
       for (std::size_t c = start; c < candidates_.size(); ++c) {
         bool same = true;
-        for (std::size_t i = 0; i < rotary_count<M>; ++i)
+        for (std::size_t i = 0; i < N; ++i)
           same = same && math::abs(candidates_[c].angles[i].value - s.angles[i].value) <= 1e-12;
         duplicate = duplicate || same;
       }
@@ -241,7 +268,7 @@ class rotary_planner {
       bool have = false;
       for (std::size_t s = 0; s < frontier_.size(); ++s) {
         const std::uint32_t from = first_[last_] + static_cast<std::uint32_t>(s);
-        const cell option{frontier_[s].travel_rad + rotary_step_cost<M>(candidates_[from].angles, candidates_[c].angles),
+        const cell option{frontier_[s].travel_rad + rotary_step_cost(machine_, candidates_[from].angles, candidates_[c].angles),
                           frontier_[s].off_principal + off};
         if (!have || better(option, next[c - begin])) {
           next[c - begin] = option;
@@ -256,7 +283,7 @@ class rotary_planner {
 
   /// Resolves the waiting blocks, given the solutions `after` of the next reachable non-pole
   /// block (none at the end of the program).
-  void flush(const inverse_result<M>* after) {
+  void flush(const result_type* after) {
     if (pending_.empty()) return;
     std::vector<radians> free_angles;
     if (anchor_ != none) {
@@ -275,7 +302,7 @@ class rotary_planner {
         for (radians p : free_angles) {
           inverse_options options = options_;
           options.pole = pole_policy::keep(p);
-          add_within_travel(inverse<M>(w.u_target, options), true);
+          add_within_travel(solve(pole_scratch_, w.u_target, options), true);
         }
       }
       if (candidates_.size() > first_[w.block]) step(w.block);
@@ -283,10 +310,35 @@ class rotary_planner {
   }
 };
 
-/// `rotary_planner` over a whole list of tool axes (target frame).
+/// The path a `rotary_planner<M>` chooses: N = `rotary_count<M>` angles per block.
+template <machine M>
+using rotary_path = basic_rotary_path<rotary_count<M>>;
+/// The path of a machine known at run time: two angles per block (a 4-axis machine leaves
+/// `[1]` at zero).
+using rotary_path_values = basic_rotary_path<2>;
+
+/// The planner for machine type M (results sized for M).
+template <machine M>
+class rotary_planner : public basic_rotary_planner<rotary_count<M>, max_solutions<M>()> {
+ public:
+  explicit rotary_planner(const inverse_options& options = {})
+      : basic_rotary_planner<rotary_count<M>, max_solutions<M>()>(M::model, options) {}
+};
+
+/// The planner for a machine known at run time.
+using rotary_planner_values = basic_rotary_planner<2, max_solutions_any>;
+
+/// `rotary_planner<M>` over a whole list of tool axes (target frame).
 template <machine M>
 rotary_path<M> plan_rotary_path(std::span<const vec3> tool_axes) {
   rotary_planner<M> planner;
+  for (const vec3& u : tool_axes) planner.add(u);
+  return planner.finish();
+}
+
+/// `rotary_planner_values` of machine `m` over a whole list of tool axes (target frame).
+inline rotary_path_values plan_rotary_path(const machine_model& m, std::span<const vec3> tool_axes) {
+  rotary_planner_values planner(m);
   for (const vec3& u : tool_axes) planner.add(u);
   return planner.finish();
 }

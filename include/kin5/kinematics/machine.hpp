@@ -94,9 +94,7 @@ consteval bool check_machine() {
 /// The index of the rotary axis with NC letter `l` in `M::rotary`, or `rotary_count<M>` if none.
 template <machine_description M>
 constexpr std::size_t rotary_index(axis_letter l) {
-  for (std::size_t i = 0; i < rotary_count<M>; ++i)
-    if (M::rotary[i].letter == l) return i;
-  return rotary_count<M>;
+  return M::model.rotary_index(l);
 }
 
 /// Commanded rotary angles of machine M, in `M::rotary` order, radians.

@@ -86,6 +86,12 @@ struct machine_model {
   constexpr const rotary_axis& rotary(std::size_t i) const { return geometry.rotary[i]; }
   constexpr const linear_axis& linear(std::size_t i) const { return geometry.linear[i]; }
   constexpr const vec3& tool_reference() const { return geometry.tool.reference; }
+  /// The index of the rotary axis with NC letter `l` in chain order, or `rotary_count` if none.
+  constexpr std::size_t rotary_index(axis_letter l) const {
+    for (std::size_t i = 0; i < rotary_count; ++i)
+      if (geometry.rotary[i].letter == l) return i;
+    return rotary_count;
+  }
   /// D·x: the tool's displacement relative to the part for linear axis values x (mm).
   constexpr vec3 linear_displacement(const vec3& x_mm) const {
     return x_mm.x * geometry.linear[0].direction + x_mm.y * geometry.linear[1].direction +

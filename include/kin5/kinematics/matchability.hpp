@@ -10,6 +10,8 @@
 ///   to the target's reach. SAJO A_s ∈ (0°, As2] has gap exactly A_s on the DMU 80P (P14).
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <string_view>
 
 #include "inverse.hpp"
@@ -28,27 +30,34 @@ constexpr std::string_view name(matchability m) {
   return "?";
 }
 
-/// Whether commanded angles `source` of machine M, whose tool axis is `u` (= `tool_axis<M>(source)`),
+/// Whether commanded angles `source` of machine `m`, whose tool axis is `u` (= `tool_axis(m, source)`),
 /// lie on its principal branch: branch 0 of the solution (G3)/(G4) for `u` gives them back,
 /// modulo 360°, to `tolerance` (travel plays no part). At a pole the free angle is kept, so a
 /// pole pose is principal when its carried angle is. A one-rotary machine has a single branch.
-template <machine M>
-constexpr bool on_principal_branch(const rotary_angles<M>& source, const vec3& u, radians tolerance = {1e-7}) {
-  if constexpr (rotary_count<M> == 1) {
+template <std::size_t N>
+constexpr bool on_principal_branch(const machine_model& m, const std::array<radians, N>& source, const vec3& u,
+                                   radians tolerance = {1e-7}) {
+  if constexpr (N < 2) {
     return true;
   } else {
-    constexpr auto g = geometry<M>();
+    if (m.rotary_count < 2) return true;
     pole_policy policy = pole_policy::keep(source[0]);
-    policy.psi_p = M::rotary[0].psi(policy.psi_p);  // as `inverse` reads it
-    const two_axis_solution raw = g.solve(u, policy, inverse_options{}.reach_tolerance);
+    policy.psi_p = m.rotary(0).psi(policy.psi_p);  // as `inverse` reads it
+    const two_axis_solution raw = m.orientation.solve(u, policy, inverse_options{}.reach_tolerance);
     if (raw.count == 0) return false;
-    const rotary_angles<M> branch0{M::rotary[0].commanded(raw.branch[0].psi_p),
-                                   M::rotary[1].commanded(raw.branch[0].psi_q)};
+    const std::array<radians, 2> branch0{m.rotary(0).commanded(raw.branch[0].psi_p),
+                                         m.rotary(1).commanded(raw.branch[0].psi_q)};
     bool same = true;
-    for (std::size_t i = 0; i < rotary_count<M>; ++i)
+    for (std::size_t i = 0; i < 2; ++i)
       same = same && math::abs(math::wrap_pi(branch0[i].value - source[i].value)) <= tolerance.value;
     return same;
   }
+}
+
+/// `on_principal_branch` for machine type M.
+template <machine M>
+constexpr bool on_principal_branch(const rotary_angles<M>& source, const vec3& u, radians tolerance = {1e-7}) {
+  return on_principal_branch(M::model, source, u, tolerance);
 }
 
 /// `on_principal_branch` for angles whose tool axis is not at hand.

@@ -1,6 +1,7 @@
-/// @file machines.hpp
+/// @file machines/catalog.hpp
 /// The catalog: every bundled machine type, and `catalog`, a type list of them for code (tests,
-/// the command line) that must do something for each, or for the one with a given id.
+/// the command line) that must do something for each, or for the one with a given id
+/// (`with_machine` for its type, `find_machine` for its `machine_model` value).
 #pragma once
 
 #include <string_view>
@@ -35,6 +36,16 @@ constexpr bool with_machine(std::string_view id, F&& f) {
       found = true;
       f.template operator()<M>();
     }
+  });
+  return found;
+}
+
+/// The model of the catalog machine with `M::id == id`, or null when no catalog machine has
+/// that id: the one lookup of a machine *value* by id.
+constexpr const machine_model* find_machine(std::string_view id) {
+  const machine_model* found = nullptr;
+  for_each_machine([&]<class M>() {
+    if (!found && M::id == id) found = &M::model;
   });
   return found;
 }

@@ -83,7 +83,7 @@ constexpr void for_each_address_word(std::string_view line, dialect d, F&& f) {
     int decimals = 0;
     const std::size_t end = detail::scan_number(line, j, decimals);
     if (end == 0 || (end < line.size() && line[end] == '=')) continue;
-    f(address_word{to_upper(c), i, line.substr(i, end - i), decimals});
+    f(address_word{to_upper(c), i, std::string_view(line.data() + i, end - i), decimals});
     i = end - 1;
   }
 }

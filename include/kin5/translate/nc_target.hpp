@@ -1,18 +1,19 @@
 /// @file translate/nc_target.hpp
-/// The target side for an NC machine To, in two passes over the source steps:
+/// The target side for an NC machine `to` (a `machine_model` value), in two passes over the
+/// source steps:
 ///
-///     plan:  u_target = target_T_source.map_direction(u_source)   → rotary_planner<To>
+///     plan:  u_target = target_T_source.map_direction(u_source)   → rotary_planner_values
 ///     write: tip_target_mm = target_T_source.map_point(tip_source_mm),
-///            the planned angles of To (degrees), F by the feed policy → one output block
+///            the planned angles of `to` (degrees), F by the feed policy → one output block
 ///
 /// Arcs are written in the plane the setup maps theirs onto (direction flipped when its normal
 /// lands on a negative axis), or refused; plane words G17–G19 are mapped the same way. A block
-/// To cannot reach is an error with its gap; a branch switch, and a rotary axis swinging round
-/// for little change of the tool axis (past a pole), are warnings with the angle, poles included. Blocks that are not
+/// the target cannot reach is an error with its gap; a branch switch, and a rotary axis swinging
+/// round for little change of the tool axis (past a pole), are warnings with the angle, poles included. Blocks that are not
 /// motion are copied, their dialect text carried over (`carry_over.hpp`).
 /// @code
-///   kin5::translate_detail::nc_target<To> target(target_T_source, kin5::feed_policy::tcp,
-///                                                from_dialect, to_dialect, false);
+///   kin5::translate_detail::nc_target target(To::model, target_T_source, kin5::feed_policy::tcp,
+///                                            from_dialect, to_dialect, false);
 ///   for (const auto& s : steps) target.plan(s);
 ///   target.finish_plan();
 ///   for (std::size_t k = 0; k < blocks.size(); ++k) target.write(blocks[k], steps[k], result, emit, on_report);
@@ -60,30 +61,31 @@ inline rotary_delta_deg source_rotary_delta(const source_step& from, const sourc
 /// is a warning (`nc_target::warn_rotary_move`).
 inline constexpr radians sudden_turn{pi / 2};
 
-/// The target side for an NC machine To: branch choice over the program (first pass), then feed
-/// and output blocks (second pass).
-template <machine To>
+/// The target side for an NC machine `to`: branch choice over the program (first pass), then
+/// feed and output blocks (second pass).
 class nc_target {
  public:
   static constexpr bool plans_with_tool_axis = true;  // `plan` needs it; `write` uses the planned angles
   /// `switch_tcp_on`: switch tool-tip tracking on in the first motion block and off at the
   /// program end (`post`, whose CL input has no TCP words).
-  nc_target(const rigid_transform& target_T_source, feed_policy feed, program::dialect source_language,
-            program::dialect output_language, bool switch_tcp_on)
-      : target_T_source_(target_T_source),
+  nc_target(const machine_model& to, const rigid_transform& target_T_source, feed_policy feed,
+            program::dialect source_language, program::dialect output_language, bool switch_tcp_on)
+      : to_(to),
+        target_T_source_(target_T_source),
         feed_(feed),
         source_language_(source_language),
         output_language_(output_language),
-        switch_tcp_on_(switch_tcp_on) {}
+        switch_tcp_on_(switch_tcp_on),
+        planner_(to) {}
 
-  /// A tool axis this close to To's reach, or a planned angle this far past a travel limit,
+  /// A tool axis this close to the target's reach, or a planned angle this far past a travel limit,
   /// counts as on the edge (angle_tolerance.hpp); before the first `plan`.
   void set_tool_axis_tolerance(radians tolerance) {
     inverse_options options;
     const radians at_least{tolerance.value > 1e-9 ? tolerance.value : 1e-9};  // inverse's own rounding
     options.reach_tolerance = at_least;
     options.travel_slack = at_least;
-    planner_ = rotary_planner<To>(options);
+    planner_ = rotary_planner_values(to_, options);
   }
 
   /// First pass: the step of every block, in order.
@@ -121,12 +123,13 @@ class nc_target {
   }
 
  private:
+  machine_model to_;
   rigid_transform target_T_source_;
   feed_policy feed_;
   program::dialect source_language_, output_language_;
   bool switch_tcp_on_;
-  rotary_planner<To> planner_;
-  rotary_path<To> path_;
+  rotary_planner_values planner_;
+  rotary_path_values path_;
   bool output_inverse_time_ = false, tcp_switched_on_ = false, inverse_time_error_ = false;
   std::optional<std::size_t> previous_motion_;  // motion index of the last written motion
   int branch_off_pole_ = -1;                    // branch of the last written motion off a pole
@@ -168,10 +171,10 @@ class nc_target {
                     Report&& on_report) {
     const std::size_t j = next_motion_++;
     if (!report_motion(b, s, j, out, on_report)) return;
-    const rotary_angles<To>& angles_target = *path_.angles[j];
+    const kin5::rotary_values& angles_target = *path_.angles[j];
     const vec3 tip_target_mm = target_T_source_.map_point(s.tip_source_mm);
     std::array<double, 2> angles_target_deg{};
-    for (std::size_t i = 0; i < rotary_count<To>; ++i) angles_target_deg[i] = to_degrees(angles_target[i]).value;
+    for (std::size_t i = 0; i < to_.rotary_count; ++i) angles_target_deg[i] = to_degrees(angles_target[i]).value;
 
     o.text.clear();
     o.axes = {};
@@ -180,7 +183,7 @@ class nc_target {
       if (!write_arc(b, s, angles_target, tip_target_mm, o, out)) return;
     } else {
       o.axes.x_mm = tip_target_mm.x, o.axes.y_mm = tip_target_mm.y, o.axes.z_mm = tip_target_mm.z;
-      for (std::size_t i = 0; i < rotary_count<To>; ++i) rotary_word(o.axes, To::rotary[i].letter) = angles_target_deg[i];
+      for (std::size_t i = 0; i < to_.rotary_count; ++i) rotary_word(o.axes, to_.rotary(i).letter) = angles_target_deg[i];
     }
     write_feed(b, s, tip_target_mm, angles_target_deg, o, out);
     warn_rotary_move(b, j, out);
@@ -189,7 +192,8 @@ class nc_target {
     emit(std::move(o));
   }
 
-  /// Reports motion block `b` (its `j`-th motion); false, with an error, when To cannot reach it.
+  /// Reports motion block `b` (its `j`-th motion); false, with an error, when the target cannot
+  /// reach it.
   template <class Report>
   bool report_motion(const program::block& b, const source_step& s, std::size_t j, translation& out,
                      Report&& on_report) {
@@ -198,8 +202,8 @@ class nc_target {
       report.match = matchability::unreachable;
       report.gap = path_.gap[j];
       report.why = "tool axis " + fixed(to_degrees(path_.gap[j]).value, 3) + "° outside the reach of " +
-                   std::string(To::id);
-      out.errors.push_back(at(b, std::string(To::id) + " cannot reach this block (" + angles_text(s) + "): " + report.why));
+                   std::string(to_.geometry.id);
+      out.errors.push_back(at(b, std::string(to_.geometry.id) + " cannot reach this block (" + angles_text(s) + "): " + report.why));
       on_report(std::move(report));
       return false;
     }
@@ -213,9 +217,9 @@ class nc_target {
   }
 
   /// The words of an arc: end point, direction and centre in the plane the setup maps the
-  /// source plane onto; false, with an error, when that is no principal plane or To's rotary
-  /// axes would move during the arc.
-  bool write_arc(const program::block& b, const source_step& s, const rotary_angles<To>& angles_target,
+  /// source plane onto; false, with an error, when that is no principal plane or the target's
+  /// rotary axes would move during the arc.
+  bool write_arc(const program::block& b, const source_step& s, const kin5::rotary_values& angles_target,
                  const vec3& tip_target_mm, program::block& o, translation& out) const {
     const arc_path& arc_source = s.arc_source;
     const auto mapped = principal_plane(target_T_source_.rotation * plane_normal(arc_source.plane));
@@ -225,7 +229,7 @@ class nc_target {
       return false;
     }
     if (previous_motion_ && path_.angles[*previous_motion_] &&
-        rotary_step_cost<To>(*path_.angles[*previous_motion_], angles_target) > 1e-9) {
+        rotary_step_cost(to_, *path_.angles[*previous_motion_], angles_target) > 1e-9) {
       out.errors.push_back(at(b, "circular move cannot be mapped: the target's rotary axes would move during it"));
       return false;
     }
@@ -279,11 +283,11 @@ class nc_target {
   double target_length(const vec3& tip_target_mm, const std::array<double, 2>& angles_target_deg) const {
     if (!previous_motion_) return 0.0;
     std::array<double, 2> delta_deg{};
-    for (std::size_t i = 0; i < rotary_count<To>; ++i)
+    for (std::size_t i = 0; i < to_.rotary_count; ++i)
       delta_deg[i] = angles_target_deg[i] - to_degrees((*path_.angles[*previous_motion_])[i]).value;
     const vec3 previous_tip_target_mm = target_T_source_.map_point(previous_step_.tip_source_mm);
     return block_length(tip_target_mm - previous_tip_target_mm,
-                        std::span<const double>(delta_deg.data(), rotary_count<To>));
+                        std::span<const double>(delta_deg.data(), to_.rotary_count));
   }
 
   /// The path an inverse-time block is timed over: the tool-tip path (mm; the arc's length for
@@ -306,25 +310,25 @@ class nc_target {
     const int before = branch_off_pole_;
     if (!path_.pole[j]) branch_off_pole_ = path_.branch[j];
     if (!previous_motion_) return;
-    const rotary_angles<To>& from = *path_.angles[*previous_motion_];
-    const rotary_angles<To>& to = *path_.angles[j];
+    const kin5::rotary_values& from = *path_.angles[*previous_motion_];
+    const kin5::rotary_values& to = *path_.angles[j];
     std::size_t axis = 0;
-    for (std::size_t i = 1; i < rotary_count<To>; ++i)
+    for (std::size_t i = 1; i < to_.rotary_count; ++i)
       if (math::abs(to[i].value - from[i].value) > math::abs(to[axis].value - from[axis].value)) axis = i;
     const radians turn{math::abs(to[axis].value - from[axis].value)};
-    const std::string turned = std::string(1, to_char(To::rotary[axis].letter)) + " turns by " +
+    const std::string turned = std::string(1, to_char(to_.rotary(axis).letter)) + " turns by " +
                                fixed(to_degrees(turn).value, 3) + "°";
     if (!path_.pole[j] && before >= 0 && before != path_.branch[j]) {
       const bool avoidable = (path_.branches[*previous_motion_] & path_.branches[j]) != 0;
       out.warnings.push_back(at(b, std::string(avoidable ? "solution branch switch (least total rotary travel)"
                                                          : "unavoidable solution branch switch") +
                                        " from branch " + std::to_string(before) + " to " +
-                                       std::to_string(path_.branch[j]) + " on " + std::string(To::id) + ": " + turned));
+                                       std::to_string(path_.branch[j]) + " on " + std::string(to_.geometry.id) + ": " + turned));
       return;
     }
-    const radians axis_turn = angle_between(tool_axis<To>(from), tool_axis<To>(to));
+    const radians axis_turn = angle_between(tool_axis(to_, from), tool_axis(to_, to));
     if (turn.value >= sudden_turn.value && turn.value > 2.0 * axis_turn.value)
-      out.warnings.push_back(at(b, "sudden rotary move on " + std::string(To::id) + ": " + turned +
+      out.warnings.push_back(at(b, "sudden rotary move on " + std::string(to_.geometry.id) + ": " + turned +
                                        " while the tool axis turns by " + fixed(to_degrees(axis_turn).value, 3) +
                                        "° (past a pole)"));
   }

@@ -7,10 +7,12 @@
 ///     write(b)  for every block — each output block to the sink as soon as it is made
 ///
 /// Nothing is stored per block but the planner's candidates, so programs of any length run in
-/// little memory (`stream.hpp` runs it over a file's text). `make_translator<From, To>`,
-/// `make_reverse<M>` and `make_post<M>` make one; `run` runs both passes over a program in memory.
+/// little memory (`stream.hpp` runs it over a file's text). `make_translator(from, to, …)`,
+/// `make_reverse(m, …)` and `make_post(m, …)` make one for machine values (`machine_model`: a
+/// catalog type's `M::model` or a machine file's), the same code for every machine and pair;
+/// `make_translator<From, To>` etc. forward to them. `run` runs both passes over a program in memory.
 /// @code
-///   auto t = kin5::make_translator<From, To>(nc.language, nc.file, options);
+///   auto t = kin5::make_translator(From::model, To::model, nc.language, nc.file, options);
 ///   for (const auto& b : nc.blocks) t->plan(b);
 ///   for (const auto& b : nc.blocks) t->write(b, emit);  // emit: void(program::block&&)
 ///   if (!t->result().ok()) { /* the output must not be used */ }
@@ -87,14 +89,16 @@ class two_pass_translator final : public block_translator {
   /// `refusal`: a reason not to run at all (an error for the whole file); blocks are then only
   /// counted. `source`: the program's dialect and the option naming its machine (the context's
   /// tolerance and `out` are set at the first `plan`); `common`: tolerance, allowed refusals, digits.
-  two_pass_translator(Target target, const std::string& file, program::dialect output_language, report_detail detail,
-                      std::optional<std::string> refusal = std::nullopt, source_context source = {},
-                      common_options common = {})
+  two_pass_translator(Source source_side, Target target, const std::string& file, program::dialect output_language,
+                      report_detail detail, std::optional<std::string> refusal = std::nullopt,
+                      source_context source = {}, common_options common = {})
       : target_(std::move(target)),
         detail_(detail),
         refused_(refusal.has_value()),
         source_(source),
-        common_(std::move(common)) {
+        common_(std::move(common)),
+        first_(source_side),
+        second_(std::move(source_side)) {
     result_.output.language = output_language;
     result_.output.file = file;
     if (refusal) result_.errors.push_back(file_error(file, std::move(*refusal)));
@@ -164,7 +168,7 @@ class two_pass_translator final : public block_translator {
     result_.angle_tolerance = source_.tolerance;
     first_.configure(source_, common_.allow);
     second_.configure(source_, common_.allow);
-    target_.set_tool_axis_tolerance(tool_axis_tolerance(source_.tolerance, Source::rounded_values));
+    target_.set_tool_axis_tolerance(tool_axis_tolerance(source_.tolerance, first_.source().rounded_values()));
   }
 };
 
@@ -214,48 +218,74 @@ inline std::string one_of(const std::vector<std::string_view>& names) {
   return out;
 }
 
-/// The two passes of `translate<From, To>` (see `block_translator`), for a program read in
-/// `source_language` from `file`.
-template <machine From, machine To>
-std::unique_ptr<block_translator> make_translator(program::dialect source_language, const std::string& file,
-                                                  const translate_options& options = {},
-                                                  report_detail detail = report_detail::every_block) {
+/// The two passes of a translation from machine `from` to machine `to` (see
+/// `block_translator`), for a program read in `source_language` from `file`. The setup is
+/// `options.setup`, else `default_setup(from.geometry.id, to.geometry.id)`.
+inline std::unique_ptr<block_translator> make_translator(const machine_model& from, const machine_model& to,
+                                                         program::dialect source_language, const std::string& file,
+                                                         const translate_options& options = {},
+                                                         report_detail detail = report_detail::every_block) {
   using namespace translate_detail;
-  return std::make_unique<two_pass_translator<nc_source<From>, nc_target<To>>>(
-      nc_target<To>(options.setup.value_or(default_setup<From, To>()), options.feed, source_language,
-                    options.output_dialect, false),
+  return std::make_unique<two_pass_translator<nc_source, nc_target>>(
+      nc_source{from},
+      nc_target(to, options.setup.value_or(default_setup(from.geometry.id, to.geometry.id)), options.feed,
+                source_language, options.output_dialect, false),
       file, options.output_dialect, detail, translate_refusal(source_language, options),
       source_context{source_language, {}, nullptr, "--from"}, options.common);
 }
 
-/// The two passes of `reverse<M>` (see `block_translator`).
-template <machine M>
-std::unique_ptr<block_translator> make_reverse(program::dialect source_language, const std::string& file,
-                                               report_detail detail = report_detail::every_block,
-                                               const common_options& common = {}) {
+/// The two passes of `reverse` for a program of machine `m` (see `block_translator`).
+inline std::unique_ptr<block_translator> make_reverse(const machine_model& m, program::dialect source_language,
+                                                      const std::string& file,
+                                                      report_detail detail = report_detail::every_block,
+                                                      const common_options& common = {}) {
   using namespace translate_detail;
-  return std::make_unique<two_pass_translator<nc_source<M>, cl_target>>(
-      cl_target(source_language), file, program::dialect::apt, detail,
+  return std::make_unique<two_pass_translator<nc_source, cl_target>>(
+      nc_source{m}, cl_target(source_language), file, program::dialect::apt, detail,
       translate_detail::is_cl_data(source_language) ? std::optional<std::string>("the input is already APT CL data")
                                                     : std::nullopt,
       source_context{source_language, {}, nullptr, "--machine"}, common);
 }
 
-/// The two passes of `post<M>` (see `block_translator`).
-template <machine M>
-std::unique_ptr<block_translator> make_post(program::dialect source_language, program::dialect output_dialect,
-                                            const std::string& file,
-                                            report_detail detail = report_detail::every_block,
-                                            const common_options& common = {}) {
+/// The two passes of `post` for machine `m` (see `block_translator`).
+inline std::unique_ptr<block_translator> make_post(const machine_model& m, program::dialect source_language,
+                                                   program::dialect output_dialect, const std::string& file,
+                                                   report_detail detail = report_detail::every_block,
+                                                   const common_options& common = {}) {
   using namespace translate_detail;
-  return std::make_unique<two_pass_translator<cl_source, nc_target<M>>>(
-      nc_target<M>(rigid_transform::identity(), feed_policy::tcp, source_language, output_dialect, true), file,
-      output_dialect, detail,
+  return std::make_unique<two_pass_translator<cl_source, nc_target>>(
+      cl_source{}, nc_target(m, rigid_transform::identity(), feed_policy::tcp, source_language, output_dialect, true),
+      file, output_dialect, detail,
       translate_detail::is_cl_data(output_dialect)
           ? std::optional<std::string>("post writes NC: choose " +
                                        one_of(dialect_names([](const program::capabilities& can) { return !can.cl_data; })))
           : std::nullopt,
       source_context{source_language, {}, nullptr, "--machine"}, common);
+}
+
+/// `make_translator(From::model, To::model, …)`.
+template <machine From, machine To>
+std::unique_ptr<block_translator> make_translator(program::dialect source_language, const std::string& file,
+                                                  const translate_options& options = {},
+                                                  report_detail detail = report_detail::every_block) {
+  return make_translator(From::model, To::model, source_language, file, options, detail);
+}
+
+/// `make_reverse(M::model, …)`.
+template <machine M>
+std::unique_ptr<block_translator> make_reverse(program::dialect source_language, const std::string& file,
+                                               report_detail detail = report_detail::every_block,
+                                               const common_options& common = {}) {
+  return make_reverse(M::model, source_language, file, detail, common);
+}
+
+/// `make_post(M::model, …)`.
+template <machine M>
+std::unique_ptr<block_translator> make_post(program::dialect source_language, program::dialect output_dialect,
+                                            const std::string& file,
+                                            report_detail detail = report_detail::every_block,
+                                            const common_options& common = {}) {
+  return make_post(M::model, source_language, output_dialect, file, detail, common);
 }
 
 }  // namespace kin5

@@ -16,10 +16,11 @@
 /// (`program::for_each_address_word`); where it is not found there, the block's start is named.
 /// @code
 ///   kin5::translate_detail::source_context ctx{program::dialect::siemens, 0.0005_deg, &result};
-///   if (!kin5::translate_detail::check_source_axes<kin5::machines::sajo_12000p>(block, ctx)) fail();
+///   if (!kin5::translate_detail::check_source_axes(kin5::machines::sajo_12000p::model, block, ctx)) fail();
 /// @endcode
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -62,7 +63,7 @@ struct located_word {
 inline std::optional<located_word> locate_word(const program::block& b, char letter, program::dialect language,
                                                std::optional<double> value = std::nullopt) {
   const std::string_view text = b.text;
-  const std::string_view line = text.substr(0, text.find('\n'));
+  const std::string_view line(text.data(), std::min(text.find('\n'), text.size()));  // the first line
   std::size_t first = 0;  // b.where names the first non-blank byte of the line
   while (first < line.size() && program::is_space(line[first])) ++first;
   std::optional<located_word> found;
@@ -101,38 +102,36 @@ inline std::array<rotary_value, 3> rotary_values(const program::block& b) {
   return {{{'A', b.axes.a_deg}, {'B', b.axes.b_deg}, {'C', b.axes.c_deg}}};
 }
 
-/// "B and C", "A": the rotary letters of machine From, in alphabetical order.
-template <machine From>
-std::string rotary_letters() {
+/// "B and C", "A": the rotary letters of machine `m`, in alphabetical order.
+inline std::string rotary_letters(const machine_model& m) {
   std::string s;
   for (char letter : {'A', 'B', 'C'})
-    if (rotary_index<From>(static_cast<axis_letter>(letter)) < rotary_count<From>)
+    if (m.rotary_index(static_cast<axis_letter>(letter)) < m.rotary_count)
       s += std::string(s.empty() ? "" : " and ") + letter;
   return s;
 }
 
-/// Checks block `b` of a program for machine From (see the file comment); false when it has an
-/// error, reported to `ctx.out` when given. The same answer in every pass.
-template <machine From>
-bool check_source_axes(const program::block& b, const source_context& ctx) {
+/// Checks block `b` of a program for machine `from` (see the file comment); false when it has
+/// an error, reported to `ctx.out` when given. The same answer in every pass.
+inline bool check_source_axes(const machine_model& from, const program::block& b, const source_context& ctx) {
   bool ok = true;
   for (const rotary_value& w : rotary_values(b)) {
     if (!w.value_deg) continue;
     const auto located = locate_word(b, w.letter, ctx.language);
     const program::source_location where = located ? located->where : b.where;
     const std::string word = located ? located->text : std::string(1, w.letter) + short_number(*w.value_deg);
-    const std::size_t i = rotary_index<From>(static_cast<axis_letter>(w.letter));
-    if (i == rotary_count<From>) {
+    const std::size_t i = from.rotary_index(static_cast<axis_letter>(w.letter));
+    if (i == from.rotary_count) {
       ok = false;
       if (ctx.out)
         ctx.out->errors.push_back({where,
-                                   word + ": " + std::string(From::id) + " has no " + w.letter +
-                                       " axis (its rotary axes are " + rotary_letters<From>() +
+                                   word + ": " + std::string(from.geometry.id) + " has no " + w.letter +
+                                       " axis (its rotary axes are " + rotary_letters(from) +
                                        "): the program is not for this machine",
                                    word, std::string(ctx.machine_option)});
       continue;
     }
-    const rotary_travel& travel = From::rotary[i].travel;
+    const rotary_travel& travel = from.rotary(i).travel;
     if (travel.continuous) continue;
     const double v = *w.value_deg;
     const double excess = v < travel.lower.value ? travel.lower.value - v : v - travel.upper.value;
@@ -141,12 +140,18 @@ bool check_source_axes(const program::block& b, const source_context& ctx) {
     if (ctx.out)
       ctx.out->errors.push_back(
           {where,
-           word + ": outside the travel of " + w.letter + " on " + std::string(From::id) + ", [" +
+           word + ": outside the travel of " + w.letter + " on " + std::string(from.geometry.id) + ", [" +
                degrees_text(travel.lower.value) + ", " + degrees_text(travel.upper.value) + "], by " +
                degrees_text(excess) + " (angle tolerance " + degrees_text(ctx.tolerance.value) + ")",
            word, excess <= 10.0 * ctx.tolerance.value ? "--angle-tolerance" : ""});
   }
   return ok;
+}
+
+/// `check_source_axes` for machine type From.
+template <machine From>
+bool check_source_axes(const program::block& b, const source_context& ctx) {
+  return check_source_axes(From::model, b, ctx);
 }
 
 /// Checks the M functions of block `b` against the output dialect (m_codes.hpp): each is

@@ -4,7 +4,7 @@
 /// motion with its tool tip and tool axis in the source workpiece frame:
 ///
 ///     tip_source_mm = programmed X Y Z (tool-tip tracking on)
-///     u_source      = tool_axis<From>(commanded angles)      (K1), (G1)   — `nc_source<From>`
+///     u_source      = tool_axis(from, commanded angles)      (K1), (G1)   — `nc_source`
 ///                   | the written vector (GOTO/x,y,z,i,j,k)               — `cl_source`
 ///
 /// Every block is first checked against the source machine (`source_checks.hpp`: axis words
@@ -14,7 +14,7 @@
 /// in machine coordinates passes through with a warning. The walker runs once per pass:
 /// diagnostics go to the result in the first only.
 /// @code
-///   kin5::translate_detail::source_walker<kin5::translate_detail::nc_source<kin5::machines::sajo_12000p>> walk;
+///   kin5::translate_detail::source_walker walk(kin5::translate_detail::nc_source{kin5::machines::sajo_12000p::model});
 ///   walk.configure({program::dialect::siemens, 0.0005_deg}, {});
 ///   for (const auto& b : nc.blocks) {
 ///     const auto s = walk.next(b, &result, true);
@@ -29,6 +29,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "../kinematics/forward.hpp"
@@ -123,29 +124,29 @@ inline std::string angles_text(const source_step& s) {
   return text;
 }
 
-/// Source side of an NC program of machine From: angles → tool axis by (G1).
-template <machine From>
+/// Source side of an NC program of machine `from`: angles → tool axis by (G1).
 struct nc_source {
+  machine_model from;
   static constexpr bool needs_tcp = true;
   static constexpr bool has_angles = true;
   /// Values rounded into a tool axis: one per rotary axis (angle_tolerance.hpp).
-  static constexpr std::size_t rounded_values = rotary_count<From>;
-  /// The checks of block `b` against From (source_checks.hpp); false on an error.
-  static bool check(const program::block& b, const source_context& ctx) { return check_source_axes<From>(b, ctx); }
+  std::size_t rounded_values() const { return from.rotary_count; }
+  /// The checks of block `b` against `from` (source_checks.hpp); false on an error.
+  bool check(const program::block& b, const source_context& ctx) const { return check_source_axes(from, b, ctx); }
   /// `kinematics`: whether to compute the tool axis and the branch (else only the angles).
   /// `notes`: refusals, by name (a rotary axis with no value yet: `unset-rotary`).
-  static std::optional<std::string> pose(const program::modal_state& modal, source_step& s, std::string& warned,
-                                         std::vector<program::diagnostic>& notes, const program::block& b,
-                                         bool kinematics) {
+  std::optional<std::string> pose(const program::modal_state& modal, source_step& s, std::string& warned,
+                                  std::vector<program::diagnostic>& notes, const program::block& b,
+                                  bool kinematics) const {
     if (modal.tool_axis) {  // a tool-axis vector written in the program (G43.5 IJK, LN TX TY TZ)
       s.u_source = *modal.tool_axis;
       s.rotary_count = 0;
       return std::nullopt;
     }
-    rotary_angles<From> angles{};
-    s.rotary_count = rotary_count<From>;
-    for (std::size_t i = 0; i < rotary_count<From>; ++i) {
-      const char letter = to_char(From::rotary[i].letter);
+    kin5::rotary_values angles{};
+    s.rotary_count = from.rotary_count;
+    for (std::size_t i = 0; i < from.rotary_count; ++i) {
+      const char letter = to_char(from.rotary(i).letter);
       const auto v_deg = modal.value(letter);
       if (!v_deg && warned.find(letter) == std::string::npos) {
         warned.push_back(letter);
@@ -160,8 +161,8 @@ struct nc_source {
       angles[i] = to_radians(degrees{s.rotary_source_deg[i]});
     }
     if (!kinematics) return std::nullopt;
-    s.u_source = tool_axis<From>(angles);
-    s.principal = on_principal_branch<From>(angles, s.u_source);
+    s.u_source = tool_axis(from, angles);
+    s.principal = on_principal_branch(from, angles, s.u_source);
     return std::nullopt;
   }
 };
@@ -170,11 +171,12 @@ struct nc_source {
 struct cl_source {
   static constexpr bool needs_tcp = false;
   static constexpr bool has_angles = false;
-  static constexpr std::size_t rounded_values = 1;  // the vector
+  /// Values rounded into a tool axis: the vector.
+  std::size_t rounded_values() const { return 1; }
   /// CL data names no machine axes: nothing to check against a machine.
-  static bool check(const program::block&, const source_context&) { return true; }
-  static std::optional<std::string> pose(const program::modal_state& modal, source_step& s, std::string&,
-                                         std::vector<program::diagnostic>&, const program::block&, bool) {
+  bool check(const program::block&, const source_context&) const { return true; }
+  std::optional<std::string> pose(const program::modal_state& modal, source_step& s, std::string&,
+                                  std::vector<program::diagnostic>&, const program::block&, bool) const {
     s.u_source = modal.tool_axis.value_or(unit_z);
     if (!(norm(s.u_source) > 0.5)) return std::string("tool-axis vector of zero length");
     return std::nullopt;
@@ -187,6 +189,10 @@ struct cl_source {
 template <class Source>
 class source_walker {
  public:
+  explicit source_walker(Source source = {}) : source_(std::move(source)) {}
+  /// The source side it walks with.
+  const Source& source() const { return source_; }
+
   /// Sets the program's dialect and angle tolerance (`ctx.out` is ignored) and the refusals
   /// allowed; before the first `next`.
   void configure(const source_context& ctx, const allowances& allow) {
@@ -204,7 +210,7 @@ class source_walker {
     source_context ctx = context_;
     ctx.out = out;
     const bool kept_ok = b.kept_words.empty() || check_kept_words(b, ctx);
-    if (!kept_ok || (!b.m_codes.empty() && !check_m_codes(b, ctx)) || (b.moves() && !Source::check(b, ctx))) {
+    if (!kept_ok || (!b.m_codes.empty() && !check_m_codes(b, ctx)) || (b.moves() && !source_.check(b, ctx))) {
       s.what = source_step::kind::failed;
       return s;
     }
@@ -225,7 +231,7 @@ class source_walker {
       return s;
     }
     std::vector<program::diagnostic> notes;
-    if (auto error = Source::pose(modal_, s, warned_letters_, notes, b, kinematics)) {
+    if (auto error = source_.pose(modal_, s, warned_letters_, notes, b, kinematics)) {
       to.fail(at(b, *error));
       return s;
     }
@@ -238,6 +244,7 @@ class source_walker {
   }
 
  private:
+  Source source_;
   program::modal_state modal_;
   std::string warned_letters_;  // rotary axes already warned about as having no value
   source_context context_;

@@ -13,7 +13,9 @@
 /// clamped or dropped; any error means the output must not be written. The pieces, in the order
 /// data flows through them: options.hpp, source_walk.hpp, setup.hpp, branch plan, feed.hpp,
 /// carry_over.hpp, nc_target.hpp / cl_target.hpp, pipeline.hpp, stream.hpp (over a file's text);
-/// by id: by_id.hpp. Maths and choices: docs/translation.md.
+/// by id: by_id.hpp. Every function takes machine values (`machine_model`), so one instantiation
+/// serves every machine and pair, a machine file's too; the template forms pass `M::model`.
+/// Maths and choices: docs/translation.md.
 /// @code
 ///   auto t = kin5::translate<kin5::machines::sajo_12000p, kin5::machines::dmu_80p>(nc);
 ///   if (!t.ok()) for (const auto& e : t.errors) std::cerr << e.to_string() << '\n';
@@ -26,6 +28,23 @@
 #include "pipeline.hpp"
 
 namespace kin5 {
+
+/// Translates NC program `nc` of machine `from` into one for machine `to` (see the file comment).
+/// The source must run with tool-tip tracking; `options.output_dialect` must be an NC dialect.
+inline translation translate(const machine_model& from, const machine_model& to, const program::program& nc,
+                             const translate_options& options = {}) {
+  return translate_detail::run(*make_translator(from, to, nc.language, nc.file, options), nc);
+}
+
+/// The inverse post of NC program `nc` of machine `m` (see `reverse<M>`).
+inline translation reverse(const machine_model& m, const program::program& nc) {
+  return translate_detail::run(*make_reverse(m, nc.language, nc.file), nc);
+}
+
+/// The post of APT CL data `cl` for machine `m` (see `post<M>`).
+inline translation post(const machine_model& m, const program::program& cl, program::dialect output_dialect) {
+  return translate_detail::run(*make_post(m, cl.language, output_dialect, cl.file), cl);
+}
 
 /// Translates NC program `nc` of machine From into one for machine To (see the file comment).
 /// The source must run with tool-tip tracking; `options.output_dialect` must be an NC dialect.
