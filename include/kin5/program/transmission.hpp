@@ -7,8 +7,8 @@
 /// A byte-order mark anywhere else is an error at its place: it is no part of any NC word, and
 /// a writer that kept it as text would put it at offset 0 of its output, where it would vanish.
 /// An ETX before the program has ended is an error at its place: the transfer ended the program
-/// early. Anything but blanks after it is read as program text (and the reader refuses the ETX
-/// byte there as it refuses any control byte).
+/// early. An ETX with anything but blanks after it is an error at its place too, wherever it
+/// stands (in a word or in a comment): no writer could put it back where it was.
 #pragma once
 
 #include <cstddef>
@@ -67,6 +67,12 @@ void read_transmitted(std::string_view text, const std::string& file_path, read_
     const auto [line, column] = line_and_column(t.body, bom);
     diagnostics.errors.push_back({{file_name(file_path), line, column},
                                   "byte-order mark inside the program (one is allowed only at the start of the file)"});
+    return;
+  }
+  if (const std::size_t etx = t.body.find('\x03'); etx != std::string_view::npos) {
+    const auto [line, column] = line_and_column(t.body, etx);
+    diagnostics.errors.push_back({{file_name(file_path), line, column},
+                                  "end-of-transmission byte 0x03 inside the program (one is allowed only after its end)"});
     return;
   }
   if (t.etx_line == 0) {

@@ -39,6 +39,9 @@ TEST_CASE("heidenhain: spellings read as their plain equivalent and written plai
       {"Q3 = 25.5\nL X-Q3 Y+Q3 ZQ3 FMAX\n", "Q3 = 25.5\nL X-25.5 Y+25.5 Z+25.5 FMAX\n"},
       {"FN 0: Q1=5\nL X+Q1 F100\nFN 0: Q1=7\nL X+Q1\n", "FN 0: Q1=5\nL X+5 F100\nFN 0: Q1=7\nL X+7\n"},
       {"L X+1 ;first~\n  Y+2 F100 ;second\n", "L X+1 Y+2 F100 ;first second\n"},
+      {"L X+1 FMAX\n* - NOTE~~\n", "L X+1 FMAX\n* - NOTE\n"},  // no `~` kept at a comment's end
+      {"L X+1 FMAX\n* - NOTE ~ ~\n", "L X+1 FMAX\n* - NOTE\n"},
+      {"L~\n\nL X+1 FMAX\n", "L\n\nL X+1 FMAX\n"},  // a move without coordinates, kept as a comment
   };
   for (const row& r : rows) {
     INFO(r.spelled);

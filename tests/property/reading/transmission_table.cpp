@@ -85,6 +85,30 @@ TEST_CASE("transmission: an ETX before the program end is refused at its place")
   });
 }
 
+// A comment in each dialect's own spelling, with an ETX inside it (found by fuzzing: the
+// comment was read, and written back as a final ETX its own reader refused).
+const std::map<std::string_view, std::string> etx_in_comment = {
+    {"siemens", "; a\x03~\n"},
+    {"heidenhain", "* - a\x03~\n"},
+    {"iso", "(a\x03~)\n"},
+    {"apt", "PPRINT a\x03~\n"},
+};
+
+TEST_CASE("transmission: an ETX inside a comment is refused at its place") {
+  for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t) {
+    INFO(D::name);
+    REQUIRE(etx_in_comment.count(D::name) == 1);
+    const std::string& text = ending_program.at(D::name);
+    const std::size_t first_line_end = text.find('\n') + 1;
+    const std::string program = text.substr(0, first_line_end) + etx_in_comment.at(D::name) + text.substr(first_line_end);
+    const read_result r = read(D::id, program, "p");
+    REQUIRE(r.errors.size() == 1);
+    const std::size_t column = etx_in_comment.at(D::name).find('\x03') + 1;
+    CHECK(r.errors[0].to_string() == "p:2:" + std::to_string(column) +
+                                         ": error: end-of-transmission byte 0x03 inside the program (one is allowed only after its end)");
+  });
+}
+
 TEST_CASE("transmission: text after the ETX is program text, and the ETX in it is refused") {
   each_dialect([](dialect d, const std::string& text, const std::string&) {
     const read_result r = read(d, text + "\x03\nG0 X1\n", "p");

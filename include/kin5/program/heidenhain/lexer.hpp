@@ -87,8 +87,14 @@ inline std::size_t join_block(const std::vector<text_line>& lines, std::size_t l
       }
       out.inner_comments.emplace_back(t.substr(semicolon + 1, comment_end - semicolon - 1));
       out.content += t.substr(0, semicolon);
+    } else if (continued) {
+      // `* - NOTE~~`: the `~`s (and blanks) before the continuing one are not kept either, or a
+      // comment ending in `~` would read as a continuation once written back.
+      std::size_t content_end = end - 1;
+      while (content_end > 0 && (t[content_end - 1] == '~' || is_space(t[content_end - 1]))) --content_end;
+      out.content += t.substr(0, content_end);
     } else {
-      out.content += continued ? t.substr(0, end - 1) : t;
+      out.content += t;
     }
     if (!continued || li + 1 >= lines.size()) break;
     out.content += ' ';

@@ -120,6 +120,20 @@ class writer {
     append_number(l, v, decimals, true);
   }
 
+  /// `text` as the end of a line after `;`: without the `~`s it ends in (and the blanks around
+  /// them), which would read as a continuation of the block onto the next line.
+  static std::string without_continuation(std::string text) {
+    for (bool cut = false;;) {
+      std::size_t end = text.size();
+      while (end > 0 && is_space(text[end - 1])) --end;
+      if (end == 0 || text[end - 1] != '~') {
+        if (cut) text.resize(end);
+        return text;
+      }
+      text.resize(end - 1), cut = true;
+    }
+  }
+
   /// A passthrough block: its text (same dialect, without its block number) or a comment.
   void passthrough(std::string& out, const block& b) {
     std::string body = b.text;
@@ -132,7 +146,7 @@ class writer {
     } else {
       std::replace(body.begin(), body.end(), '\n', ' ');
       std::replace(body.begin(), body.end(), '\r', ' ');
-      body = ";" + body;
+      body = ";" + without_continuation(body);
     }
     out += std::to_string(number_++) + " " + body + "\n";
   }
@@ -298,7 +312,7 @@ class writer {
       char digits[24];
       out.append(digits, std::to_chars(digits, digits + sizeof digits, number_++).ptr);
       if (!lines_[k].empty()) out += ' ', out += lines_[k];
-      if (k + 1 == line_count_ && has_comment) out += " ;", out += comment;
+      if (k + 1 == line_count_ && has_comment) out += " ;", out += without_continuation(comment);
       out += '\n';
     }
   }
