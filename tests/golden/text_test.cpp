@@ -241,7 +241,7 @@ TEST_CASE("a program end is written once in every dialect") {
   // A tool change is written once: TOOL CALL and LOADTL are the change, no M6 beside them.
   const auto tc = siemens::read("T1 M6\nS6000 M3\n", "tool.mpf");
   REQUIRE(tc.ok());
-  CHECK(heidenhain::write(tc.parsed) == "0 TOOL CALL 1\n1 TOOL CALL S6000\n2 M3\n");
+  CHECK(heidenhain::write(tc.parsed) == "0 TOOL CALL 1 Z\n1 TOOL CALL S6000\n2 M3\n");
   CHECK(apt::write(tc.parsed) == "LOADTL/1\nSPINDL/6000,CLW\n");
   CHECK(iso::write(tc.parsed) == "T1 M6\nS6000 M3\n");
 

@@ -73,6 +73,7 @@ class writer {
   bool same_;  // the blocks were read as APT
   write_options options_;
   bool rapid_pending_ = false;
+  std::optional<long long> selected_tool_;  // the last tool number written
   bool inch_ = false;          // UNITS/INCHES written: lengths in inches
   bool inverse_time_ = false;  // inverse-time feed in effect (this block's or an earlier one's)
   std::vector<std::string> lines_;  // the block's statements
@@ -94,7 +95,12 @@ class writer {
       lines_.push_back(name.empty() ? "PARTNO" : name.front() == '/' ? "PARTNO/" + name : "PARTNO " + name);
     }
     if (b.metric) lines_.push_back(*b.metric ? "UNITS/MM" : "UNITS/INCHES");
-    if (b.tool) lines_.push_back("LOADTL/" + std::to_string(*b.tool));
+    // LOADTL is the change (M6, TOOL CALL n); a T alone only selects: SELECT/TOOL.
+    const bool change = std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
+    if (b.tool) selected_tool_ = *b.tool;
+    if (change && !selected_tool_) fail(b, "tool change (M6) without a tool number");
+    if (change) lines_.push_back("LOADTL/" + std::to_string(*selected_tool_));
+    else if (b.tool) lines_.push_back("SELECT/TOOL," + std::to_string(*b.tool));
   }
 
   /// SPINDL, COOLNT, STOP, OPSTOP from S and the M codes APT has a statement for.
@@ -114,7 +120,7 @@ class writer {
       else if (m == 9) lines_.push_back("COOLNT/OFF");
       else if (m == 0) lines_.push_back("STOP");
       else if (m == 1) lines_.push_back("OPSTOP");
-      else if (m == 6 && b.tool) continue;  // LOADTL is the tool change: no M6 beside it
+      else if (m == 6) continue;  // LOADTL is the tool change: no M6 beside it
       else foreign_note_ = true;
     }
     if (!rpm_written) lines_.push_back("SPINDL/" + rpm);

@@ -181,6 +181,7 @@ class block_reader : public word_checks {
         long long n = 0;
         if (!integer_word(w, n)) understood = false;
         t.tool = n;
+        t.m_codes.push_back(6);  // TOOL CALL n changes the tool: M6 in every dialect's model
       } else if (w.key.size() == 1 && (w.key == "X" || w.key == "Y" || w.key == "Z") && !w.value && !w.sign &&
                  !w.expression && w.error == number_error::none) {
         t.kept_words.push_back(w.key);

@@ -63,7 +63,11 @@ class writer {
     std::vector<std::string> kept = b.kept_words;  // written verbatim (same dialect) or into the comment
     std::vector<std::string> foreign;
     if (!same_) foreign.swap(kept);
-    if (b.tool || b.spindle_rpm) tool_call(b, moves, kept, bi);
+    const bool change = !same_ && has_m(b, 6);
+    if (change) tool_change(b, moves, bi);
+    else if (b.tool && !same_) add("TOOL DEF " + std::to_string(*b.tool));  // selected, not changed
+    if (!change && ((b.tool && same_) || b.spindle_rpm)) tool_call(b, moves, kept, bi, same_);
+    if (b.tool) selected_tool_ = *b.tool;
     const std::string m_words = m_functions(b);
     const bool arc = b.motion == motion_kind::arc_cw || b.motion == motion_kind::arc_ccw;
     if (b.arc && b.arc->centre_mm && !b.motion && b.axes.empty()) {
@@ -82,6 +86,7 @@ class writer {
       fail(b, bi, "circle centre on a block that is not an arc");
     if (b.program_end) add("END PGM " + program_name(b.program_end) + " MM");
     kept.insert(kept.end(), foreign.begin(), foreign.end());
+    if (b.tcp) tcp_on_ = *b.tcp;
     emit(out, b, kept, dropped);
   }
 
@@ -94,6 +99,8 @@ class writer {
   arc_plane plane_ = arc_plane::xy;
   std::optional<vec3> centre_;
   std::optional<std::string> begin_name_;
+  std::optional<long long> selected_tool_;  // the last tool number written or selected
+  bool tcp_on_ = false;                     // M128 / FUNCTION TCPM in effect after the last block
   // From a coordinate-less block of another dialect, for the next move that has no F of its own.
   std::optional<double> pending_feed_;
   bool pending_rapid_ = false;
@@ -179,9 +186,28 @@ class writer {
     return b.motion || b.feed_rapid || (b.feed && !(b.tool || b.spindle_rpm));
   }
 
-  void tool_call(const block& b, bool moves, std::vector<std::string>& kept, std::size_t bi) {
+  static bool has_m(const block& b, int m) { return std::find(b.m_codes.begin(), b.m_codes.end(), m) != b.m_codes.end(); }
+
+  /// A tool change of another dialect (M6, `LOADTL`): `TOOL CALL n Z S… F…`, the spindle along Z
+  /// (the G-code dialects and APT name no spindle axis), with TCP switched off before it and on
+  /// again after it when TCP is on (the TNC refuses a TOOL CALL under M128: TNC 640 User's
+  /// Manual, M128 / FUNCTION TCPM). n is the block's T or the tool selected before (`T5` … `M6`).
+  void tool_change(const block& b, bool moves, std::size_t bi) {
+    const std::optional<long long> tool = b.tool ? b.tool : selected_tool_;
+    if (!tool) fail(b, bi, "tool change (M6) without a tool number");
+    if (*tool < 0) fail(b, bi, "tool number " + std::to_string(*tool) + " cannot be written");
+    if (tcp_on_) add("M129");
+    std::string l = "TOOL CALL " + std::to_string(*tool) + " Z";
+    plane_ = arc_plane::xy;
+    if (b.spindle_rpm) l += " S" + format_number(*b.spindle_rpm, rate(*b.spindle_rpm, "spindle speed"));
+    if (b.feed && !moves) l += " F" + format_number(*b.feed, rate(*b.feed));
+    add(l);
+    if (tcp_on_ && !b.tcp) add("M128");
+  }
+
+  void tool_call(const block& b, bool moves, std::vector<std::string>& kept, std::size_t bi, bool with_tool) {
     std::string l = "TOOL CALL";
-    if (b.tool) {
+    if (b.tool && with_tool) {
       if (*b.tool < 0) fail(b, bi, "tool number " + std::to_string(*b.tool) + " cannot be written");
       l += " " + std::to_string(*b.tool);
     }
@@ -203,7 +229,7 @@ class writer {
   std::string m_functions(const block& b) const {
     std::string m_words;
     for (int m : b.m_codes)
-      if (!(m == 6 && b.tool && !same_)) m_words += " M" + std::to_string(m);  // TOOL CALL is the change: no M6 twice
+      if (!(m == 6 && (b.tool || !same_))) m_words += " M" + std::to_string(m);  // TOOL CALL is the change: no M6
     if (b.machine_coordinates &&
         std::find_if(b.m_codes.begin(), b.m_codes.end(), [](int m) { return m == 91 || m == 92; }) == b.m_codes.end())
       m_words += " M91";

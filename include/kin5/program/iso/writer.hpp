@@ -82,6 +82,13 @@ class writer {
     if (b.feed_mode) inverse_time_ = *b.feed_mode == feed_unit::inverse_time;
     block in_unit = b;
     if (inch_) mm_to_inches(in_unit, !inverse_time_);
+    const bool change = !same_ && std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
+    if (b.tool) selected_tool_ = *b.tool;
+    if (change) {
+      if (!selected_tool_) fail(b, "tool change (M6) without a tool number");
+      if (tcp_on_ && !(b.tcp && !*b.tcp)) out += "G49\n";  // tool-tip tracking off for the change
+      active_tool_ = selected_tool_;
+    }
     head(in_unit);
     modes(in_unit, vector_tcp_ahead);
     coordinates(in_unit);
@@ -93,12 +100,17 @@ class writer {
     std::string line;
     for (const std::string& w : words_) line += (line.empty() ? "" : " ") + w;
     out += line + '\n';
+    if (change && tcp_on_ && !b.tcp) out += (vector_tcp_ ? "G43.5 H" : "G43.4 H") + std::to_string(*active_tool_) + "\n";
+    if (b.tcp) tcp_on_ = *b.tcp;
   }
 
  private:
   bool same_;  // the blocks were read as ISO
   write_options options_;
   bool vector_tcp_ = false;
+  bool tcp_on_ = false;                    // G43.4 / G43.5 in effect after the last block
+  std::optional<long long> selected_tool_;  // the last T written
+  std::optional<long long> active_tool_;    // the tool of the last change written (another dialect's)
   bool inch_ = false;          // G20 written: lengths in inches
   bool inverse_time_ = false;  // G93 written: F is not a length
   arc_plane plane_ = arc_plane::xy;
@@ -167,6 +179,9 @@ class writer {
     if (b.tcp) {
       vector_tcp_ = *b.tcp && vector_tcp_ahead;
       words_.push_back(!*b.tcp ? "G49" : vector_tcp_ ? "G43.5" : "G43.4");
+      // Another dialect's TCP uses the active tool's own length: H is that tool's register (the
+      // offset number equal to the tool number, as tool-change macros set it).
+      if (*b.tcp && !same_ && active_tool_) words_.push_back(code('H', *active_tool_));
     }
     if (b.feed_mode) words_.push_back(*b.feed_mode == feed_unit::inverse_time ? "G93" : "G94");
     if (b.metric) words_.push_back(*b.metric ? "G21" : "G20");

@@ -111,6 +111,10 @@ class writer {
       written_ = detail::modal_state{};
       model_motion_.reset();
     }
+    const bool change = !same_ && std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
+    if (b.tool) selected_tool_ = *b.tool;
+    if (change && !selected_tool_) fail(b, file, "tool change (M6) without a tool number");
+    if (change && tcp_on_ && !(b.tcp && !*b.tcp)) out += "TRAFOOF\n";  // the transformation off for the change
     std::string line;
     settings(line, b, file);
     motion(line, b, file);
@@ -126,6 +130,9 @@ class writer {
     if (line.empty()) return;  // nothing to say (a lone header has been written)
     if (b.program_begin && b.number && line == "N" + std::to_string(*b.number)) return;
     out += detail::checked_line(std::move(line), b, file) + '\n';
+    if (change) out += "D1\n";  // the new tool's first cutting edge: its length and radius
+    if (change && tcp_on_ && !b.tcp) out += "TRAORI\n";
+    if (b.tcp) tcp_on_ = *b.tcp;
   }
 
  private:
@@ -135,6 +142,8 @@ class writer {
   detail::modal_state written_;              // what the written text leaves the controller in
   std::optional<motion_kind> model_motion_;  // the program's own modal motion
   bool ended_ = false;                       // the last block written had an M2 / M30 M function
+  bool tcp_on_ = false;                      // TRAORI in effect after the last block
+  std::optional<long long> selected_tool_;   // the last T written
 
   [[noreturn]] static void fail(const block& b, const std::string& file, const std::string& why) {
     throw std::invalid_argument(file + ":" + std::to_string(b.where.line) + ": " + why);

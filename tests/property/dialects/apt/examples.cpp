@@ -78,7 +78,7 @@ TEST_CASE("apt: the writer's own spelling") {
     p.blocks.push_back(b);
   };
   add([](block& b) { b.program_begin = "P1"; });
-  add([](block& b) { b.tool = 3; });
+  add([](block& b) { b.tool = 3, b.m_codes = {6}; });  // a tool change (T alone would be SELECT/TOOL)
   add([](block& b) { b.spindle_rpm = 1000, b.m_codes = {4}; });
   add([](block& b) { b.feed = 250.25, b.feed_mode = feed_unit::per_minute; });
   add([](block& b) { b.motion = motion_kind::rapid, b.axes.x_mm = 1.23456, b.axes.y_mm = 0, b.axes.z_mm = -0.0001; });

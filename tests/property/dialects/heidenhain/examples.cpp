@@ -56,6 +56,7 @@ TEST_CASE("heidenhain: a program in NX and hand-edit style") {
   CHECK((b[4].number == 1 && b[4].comment == " " && b[4].where.line == 6));
   CHECK(b[5].comment == "  OPERATION: ROUGH - TOOL: T3 D10.0");
   CHECK((b[6].tool == 3 && b[6].spindle_rpm == 8000.0 && b[6].kept_words == std::vector<std::string>{"Z"}));
+  CHECK(b[6].m_codes == std::vector<int>{6});  // TOOL CALL n is a tool change, M6 in every dialect's model
   CHECK((b[7].motion == motion_kind::rapid && b[7].feed_rapid && b[7].axes.x_mm == -450.0 && b[7].axes.y_mm == -10.0));
   CHECK((b[7].machine_coordinates && b[7].m_codes == std::vector<int>{91}));
   CHECK((b[8].axes.b_deg == 0.0 && b[8].axes.c_deg == 0.0 && !b[8].axes.has_linear()));
@@ -176,7 +177,7 @@ TEST_CASE("heidenhain: blocks from another dialect are written, and what has no 
         "2 L X+10 ;kept: G17 G40\n"
         "3 CC X+15 Y+0\n"
         "4 C X+20 Y+0 DR+ F250\n"
-        "5 TOOL CALL 4\n"  // TOOL CALL is the tool change: the ISO M6 is not written again
+        "5 TOOL CALL 4 Z\n"  // TOOL CALL is the tool change: the ISO M6 is not written again
         "6 L Z+0 FMAX M91\n"
         "7 END PGM O1234_BRACKET MM ;end\n");
 }

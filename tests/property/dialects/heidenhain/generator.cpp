@@ -225,7 +225,7 @@ item draw_item(modal& m) {
     case 8: {  // TOOL CALL
       t = draw_case("TOOL") + gap() + draw_case("CALL");
       const bool tool = *rc::gen::inRange(0, 4) != 0;
-      if (tool) b.tool = *rc::gen::inRange(0, 1000), t += gap() + std::to_string(*b.tool);
+      if (tool) b.tool = *rc::gen::inRange(0, 1000), t += gap() + std::to_string(*b.tool), b.m_codes = {6};  // a change
       const std::string axis = *rc::gen::element<std::string>("", "X", "Y", "Z", "Z");
       if (!axis.empty()) {
         t += gap() + draw_case(axis);

@@ -1,0 +1,122 @@
+// Tool changes between every ordered pair of dialects. A generated program of tool changes
+// (`T n M6`, `T n` … `M6`, `TOOL CALL n`, `LOADTL/n`), tool-tip tracking switched on and off,
+// and moves is written by the target's writer and read back by the target's own reader; the two
+// programs must agree, move by move, on the tool in the spindle and on tool-tip tracking, and the
+// target must never change a tool while tracking is on (every control switches it off for the
+// change: Heidenhain M129 / FUNCTION RESET TCPM, Siemens TRAFOOF, ISO G49).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <rapidcheck.h>
+
+#include <kin5/program/io.hpp>
+
+using namespace kin5::program;
+
+namespace {
+
+/// What a program says at one move: the tool in the spindle and whether tracking is on.
+struct at_move {
+  std::optional<long long> tool;
+  bool tcp = false;
+  friend bool operator==(const at_move&, const at_move&) = default;
+};
+
+struct trace {
+  std::vector<at_move> moves;
+  bool change_under_tcp = false;  // a tool change while tracking was on
+};
+
+bool has_m(const block& b, int m) {
+  for (int k : b.m_codes)
+    if (k == m) return true;
+  return false;
+}
+
+/// The tool and tracking at each move of `blocks`: T selects, M6 (every reader's tool change)
+/// loads the selected tool.
+trace trace_of(const std::vector<block>& blocks) {
+  trace t;
+  std::optional<long long> selected, active;
+  bool tcp = false;
+  for (const block& b : blocks) {
+    if (b.tool) selected = b.tool;
+    if (has_m(b, 6)) {
+      if (tcp && !(b.tcp && !*b.tcp)) t.change_under_tcp = true;
+      active = selected;
+    }
+    if (b.tcp) tcp = *b.tcp;
+    if (b.moves()) t.moves.push_back({active, tcp});
+  }
+  return t;
+}
+
+/// A program as the reader of `from` gives it: changes, selections, tracking, moves.
+std::vector<block> draw_program(dialect from) {
+  std::vector<block> out;
+  const bool tracking = from != dialect::apt;                              // APT has no TCP word
+  const bool selects = from == dialect::iso || from == dialect::siemens;  // T alone, M6 later
+  const int n = *rc::gen::inRange(1, 25);
+  double x = 0;
+  for (int k = 0; k < n; ++k) {
+    block b;
+    switch (*rc::gen::inRange(0, 6)) {
+      case 0:  // a change naming its tool: T5 M6, TOOL CALL 5, LOADTL/5
+        b.tool = *rc::gen::inRange<long long>(1, 100);
+        b.m_codes = {6};
+        break;
+      case 1:  // T5 … M6
+        if (!selects) continue;
+        b.tool = *rc::gen::inRange<long long>(1, 100);
+        out.push_back(b);
+        b = block{};
+        b.m_codes = {6};
+        break;
+      case 2:
+        if (!tracking) continue;
+        b.tcp = *rc::gen::arbitrary<bool>();
+        break;
+      default:
+        b.motion = motion_kind::linear;
+        b.axes.x_mm = x += 1, b.axes.y_mm = 2.5, b.axes.z_mm = 10;
+        b.feed = 500;
+    }
+    out.push_back(b);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("tool changes: every ordered pair of dialects keeps the tool and tracking at every move") {
+  for (const dialect from : {dialect::siemens, dialect::heidenhain, dialect::iso, dialect::apt})
+    for (const dialect to : {dialect::siemens, dialect::heidenhain, dialect::iso, dialect::apt}) {
+      if (from == to) continue;
+      const std::string name = std::string(kin5::program::name(from)) + " -> " + std::string(kin5::program::name(to));
+      const bool ok = rc::check(name, [from, to] {
+        program p;
+        p.language = from;
+        p.file = "gen";
+        p.blocks = draw_program(from);
+        std::string text;
+        try {
+          text = write(to, p);
+        } catch (const std::invalid_argument& e) {  // only a change with no tool number may be refused
+          RC_ASSERT(std::string(e.what()).find("tool change (M6) without a tool number") != std::string::npos);
+          return;
+        }
+        const read_result back = read(to, text, "back");
+        RC_ASSERT(back.ok());
+        const trace want = trace_of(p.blocks), got = trace_of(back.parsed.blocks);
+        RC_ASSERT(got.moves.size() == want.moves.size());
+        for (std::size_t k = 0; k < want.moves.size(); ++k) {
+          RC_ASSERT(got.moves[k].tool == want.moves[k].tool);
+          if (to != dialect::apt) RC_ASSERT(got.moves[k].tcp == want.moves[k].tcp);
+        }
+        RC_ASSERT(!got.change_under_tcp);
+      });
+      CHECK(ok);
+    }
+}
