@@ -117,18 +117,20 @@ inline bool check_source_axes(const machine_model& from, const program::block& b
   bool ok = true;
   for (const rotary_value& w : rotary_values(b)) {
     if (!w.value_deg) continue;
-    const auto located = locate_word(b, w.letter, ctx.language);
-    const program::source_location where = located ? located->where : b.where;
-    const std::string word = located ? located->text : std::string(1, w.letter) + short_number(*w.value_deg);
+    const auto word_at = [&] {  // where the word stands and how it is written: for a message only
+      const auto located = locate_word(b, w.letter, ctx.language);
+      return located ? *located : located_word{b.where, std::string(1, w.letter) + short_number(*w.value_deg)};
+    };
     const std::size_t i = from.rotary_index(static_cast<axis_letter>(w.letter));
     if (i == from.rotary_count) {
       ok = false;
-      if (ctx.out)
-        ctx.out->errors.push_back({where,
-                                   word + ": " + std::string(from.geometry.id) + " has no " + w.letter +
-                                       " axis (its rotary axes are " + rotary_letters(from) +
-                                       "): the program is not for this machine",
-                                   word, std::string(ctx.machine_option)});
+      if (!ctx.out) continue;
+      const auto [where, word] = word_at();
+      ctx.out->errors.push_back({where,
+                                 word + ": " + std::string(from.geometry.id) + " has no " + w.letter +
+                                     " axis (its rotary axes are " + rotary_letters(from) +
+                                     "): the program is not for this machine",
+                                 word, std::string(ctx.machine_option)});
       continue;
     }
     const rotary_travel& travel = from.rotary(i).travel;
@@ -137,13 +139,14 @@ inline bool check_source_axes(const machine_model& from, const program::block& b
     const double excess = v < travel.lower.value ? travel.lower.value - v : v - travel.upper.value;
     if (!(excess > ctx.tolerance.value) && std::isfinite(v)) continue;
     ok = false;
-    if (ctx.out)
-      ctx.out->errors.push_back(
-          {where,
-           word + ": outside the travel of " + w.letter + " on " + std::string(from.geometry.id) + ", [" +
-               degrees_text(travel.lower.value) + ", " + degrees_text(travel.upper.value) + "], by " +
-               degrees_text(excess) + " (angle tolerance " + degrees_text(ctx.tolerance.value) + ")",
-           word, excess <= 10.0 * ctx.tolerance.value ? "--angle-tolerance" : ""});
+    if (!ctx.out) continue;
+    const auto [where, word] = word_at();
+    ctx.out->errors.push_back(
+        {where,
+         word + ": outside the travel of " + w.letter + " on " + std::string(from.geometry.id) + ", [" +
+             degrees_text(travel.lower.value) + ", " + degrees_text(travel.upper.value) + "], by " +
+             degrees_text(excess) + " (angle tolerance " + degrees_text(ctx.tolerance.value) + ")",
+         word, excess <= 10.0 * ctx.tolerance.value ? "--angle-tolerance" : ""});
   }
   return ok;
 }
