@@ -317,10 +317,11 @@ TEST_CASE("post refuses an NC program given as CL data, and nothing reaches the 
   const auto siemens = post_text("%_N_P_MPF\nN10 TRAORI\nN20 G1 X0 Y0 Z50 A-30 B10 F500\nN30 M30\n");
   REQUIRE(siemens.errors.size() == 1);
   CHECK(siemens.errors[0].message.find("it reads as a siemens NC program") != std::string::npos);
-  // No marker, but no statement is APT.
+  // No marker: the APT reader refuses each statement it does not know, at its line.
   const auto iso = post_text("%\nO1000\nG0 X0 Y0 Z50\nG1 X10 F500\nM30\n%\n");
-  REQUIRE(iso.errors.size() == 1);
-  CHECK(iso.errors[0].message.find("no GOTO/ moves the tool and 6 statements are not APT") != std::string::npos);
+  REQUIRE(iso.errors.size() == 4);
+  CHECK(iso.errors[0].to_string() == "p.cl:2:1: error: APT statement O1000 is not supported: only statements known "
+                                     "not to change the motion are passed on");
   // CL data with a statement kin5 does not read still posts (with its warning).
   CHECK(post_text("PARTNO P\nUNITS/MM\nFEDRAT/MMPM,500.0\nGOTO/0.0,0.0,10.0,0.0,0.0,1.0\nFINI\n").ok());
 }
