@@ -13,24 +13,11 @@
 # Then inputs and options that once corrupted memory, wrote garbage or were accepted silently.
 set -u
 
-exe=$1 examples=$2 name=$3
-dir=$(mktemp -d) || exit 2
-trap 'rm -rf "$dir"' EXIT
-cd "$dir" || exit 2
-
-fail=0
-report() { echo "FAIL [$name]: $*" >&2; fail=1; }
-show() { for f in "$@"; do echo "--- $f" >&2; cat "$f" >&2; done; }
+# Every signal at its default action for the tool (see above).
+KIN5_RUN_ENV=--default-signal
+. "$(cd "$(dirname "$0")" && pwd)/harness.sh"
 example="$examples/table1-sajo.mpf"
 translate="translate --from sajo-12000p --to dmu-80p"
-
-# run EXPECTED_EXIT ARGS...: runs kin5 with every signal at its default action.
-run() {
-  want=$1; shift
-  env --default-signal "$exe" "$@" >out 2>err
-  got=$?
-  [ "$got" = "$want" ] || { report "exit $got, expected $want: kin5 $*"; show err; }
-}
 
 # no_temporary: no temporary file of kin5's is left in the directory.
 no_temporary() { [ "$(ls -A | grep -c 'kin5-')" = 0 ] || report "temporary files left: $(ls -A | grep 'kin5-')"; }

@@ -9,22 +9,7 @@
 # from kin5's own output. Numbers are read back from the written program by awk.
 set -u
 
-exe=$1 examples=$2 name=$3
-dir=$(mktemp -d) || exit 2
-trap 'rm -rf "$dir"' EXIT
-cd "$dir" || exit 2
-
-fail=0
-report() { echo "FAIL [$name]: $*" >&2; fail=1; }
-show() { for f in "$@"; do echo "--- $f" >&2; cat "$f" >&2; done; }
-
-# run EXPECTED_EXIT ARGS...: runs kin5 with stdout to out, stderr to err.
-run() {
-  want=$1; shift
-  "$exe" "$@" >out 2>err
-  got=$?
-  [ "$got" = "$want" ] || { report "exit $got, expected $want: kin5 $*"; show err; }
-}
+. "$(cd "$(dirname "$0")" && pwd)/harness.sh"
 
 # words FILE: for every motion line, "X Y Z A B C F" values as NAME=VALUE pairs on one line
 # (Siemens, ISO and Heidenhain words such as X-34.983, X+34.983, B17.067; comments dropped).
