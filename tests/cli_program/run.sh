@@ -413,6 +413,31 @@ EOF
     grep -q '^bad\.toml:[0-9]*:[0-9]*: error: ' err || { report "bad machine file not named at a line"; show err; }
     [ -e x.h ] || [ -e x.apt ] && report "output written on an error"
     ;;
+  linear-travel)
+    # With --work-offset the slides of every output block are checked against the target's
+    # linear travel (G7). DMU 80P, tool vertical (B = 0): the slides are the part point plus the
+    # pivot and tool lengths along Z, Z_slide = Z_tip + offset_Z + 200 + tool length, whatever
+    # C is (the C table turns about Z). Z travels over [-600, 0] mm.
+    printf '%s\n' '0 BEGIN PGM T2 MM' '1 TOOL CALL 1 Z S4000' '2 M128' '3 L X+10 Y+20 Z+30 B+0 C+0 F1000' \
+      '4 L X+10 Y+20 Z+60 B+0 C+0 F1000' '5 M129' '6 END PGM T2 MM' >t2.h
+    # offset -400, tool 100: Z = -70 and -40: within.
+    run 0 translate --from dmu-80p --to dmu-80p --tool-length 100 --work-offset 0,0,-400 -o ok.h t2.h
+    # offset -300: Z = 30 and 60, past 0 by 30 and 60 mm; both blocks reported, nothing written.
+    run 3 translate --from dmu-80p --to dmu-80p --tool-length 100 --work-offset 0,0,-300 -o past.h t2.h
+    grep -q '^t2\.h:4:[0-9]*: error: .*slide Z=30\.000 mm, 30\.000 mm past its travel \[-600\.000, 0\.000\] mm' err ||
+      { report "Z 30 mm past not reported at line 4"; show err; }
+    grep -q '^t2\.h:5:[0-9]*: error: .*slide Z=60\.000 mm, 60\.000 mm past' err || { report "Z 60 mm past not reported at line 5"; show err; }
+    grep -q '2 unreachable' err || { report "not counted as unreachable"; show err; }
+    [ -e past.h ] && report "past.h written"
+    # offset -940: Z = -610 (10 mm below -600) and -580: only the first block.
+    run 3 translate --from dmu-80p --to dmu-80p --tool-length 100 --work-offset 0,0,-940 -o low.h t2.h
+    grep -q '^t2\.h:4:[0-9]*: error: .*slide Z=-610\.000 mm, 10\.000 mm past' err || { report "Z 10 mm below not reported"; show err; }
+    grep -q '^t2\.h:5:' err && { report "block 5 reported within travel"; show err; }
+    # Without --work-offset nothing is checked; --tool-length alone is a usage error.
+    run 0 translate --from dmu-80p --to dmu-80p -o free.h t2.h
+    run 1 translate --from dmu-80p --to dmu-80p --tool-length 100 -o free.h t2.h
+    run 1 post --machine dmu-80p --work-offset 0,0 -o p.h "$examples/cl-path.apt"
+    ;;
   *)
     echo "run.sh: unknown test '$name'" >&2
     exit 2

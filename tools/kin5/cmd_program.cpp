@@ -292,7 +292,38 @@ struct common_arguments {
   std::vector<std::string> allow;
   std::optional<int> digits;
   std::vector<std::string> m_map;
+  std::string tool_length, work_offset;  ///< translate and post: the target's placement
 };
+
+std::optional<std::vector<double>> parse_list(std::string_view text, std::size_t count);
+
+/// `c.placement` from --tool-length and --work-offset (the check of the target's linear travel
+/// runs when the part's place is given); false, with the reason printed, on bad input.
+bool parse_placement(std::string_view command, const common_arguments& a, common_options& c) {
+  if (a.work_offset.empty()) {
+    if (a.tool_length.empty()) return true;
+    std::cerr << "kin5 " << command << ": --tool-length needs --work-offset: the target's linear travel is checked "
+                                       "only where the part's place on it is given\n";
+    return false;
+  }
+  run_inputs in;
+  if (!a.tool_length.empty()) {
+    const auto l = parse_real(a.tool_length);
+    if (!l || !(*l >= 0.0) || !prog::writable(*l)) {
+      std::cerr << "kin5 " << command << ": --tool-length: give a length in mm, 0 or more\n";
+      return false;
+    }
+    in.tool_length_mm = *l;
+  }
+  const auto w = parse_list(a.work_offset, 3);
+  if (!w || !prog::writable((*w)[0]) || !prog::writable((*w)[1]) || !prog::writable((*w)[2])) {
+    std::cerr << "kin5 " << command << ": --work-offset needs 3 numbers X,Y,Z (mm, within ±1e9)\n";
+    return false;
+  }
+  in.work_offset.translation_mm = {(*w)[0], (*w)[1], (*w)[2]};
+  c.placement = in;
+  return true;
+}
 
 /// `common_options` from `a`; prints the reason and returns nothing on bad input.
 std::optional<common_options> parse_common(std::string_view command, const common_arguments& a) {
@@ -320,6 +351,7 @@ std::optional<common_options> parse_common(std::string_view command, const commo
       std::cerr << "kin5 " << command << ": --m-map: '" << entry << "' is neither N=M (rename) nor N= (drop)\n";
       return std::nullopt;
     }
+  if (!parse_placement(command, a, c)) return std::nullopt;
   return c;
 }
 
@@ -335,6 +367,14 @@ void add_common_options(CLI::App* sub, common_arguments& a) {
   sub->add_option("--m-map", a.m_map,
                   "Into another dialect, write M function N as M (N=M) or drop it (N=); other M functions "
                   "whose meaning is the machine maker's are refused");
+}
+
+/// Adds --tool-length and --work-offset (the target's placement) to `sub`.
+void add_placement_options(CLI::App* sub, common_arguments& a) {
+  sub->add_option("--work-offset", a.work_offset,
+                  "Where the workpiece zero sits on the target, X,Y,Z in mm (machine coordinates at the zero pose); "
+                  "given, every output block's slides are checked against the target's linear travel");
+  sub->add_option("--tool-length", a.tool_length, "Tool length on the target, gauge point to tip, mm (with --work-offset; default 0)");
 }
 
 struct translate_arguments {
@@ -543,6 +583,7 @@ void add_program_commands(CLI::App& app, int& exit_code) {
     sub->add_option("--setup-offset", a->setup_offset,
                     "Setup translation X,Y,Z in mm: target point = R * source point + offset (default: the pair's)");
     add_common_options(sub, a->common);
+    add_placement_options(sub, a->common);
     sub->add_flag("-v,--verbose", a->verbose, "Also list the blocks translated on the other solution branch");
     sub->add_option("input", a->input, "Input NC program; '-' for stdin")->required();
     sub->footer(default_dialect_table() + exit_code_footer);
@@ -567,6 +608,7 @@ void add_program_commands(CLI::App& app, int& exit_code) {
     sub->add_option("--dialect", a->dialect, "Dialect of OUT (default: the machine's)")->check(dialects);
     sub->add_option("-o,--output", a->output, "Output file; '-' for stdout")->capture_default_str();
     add_common_options(sub, a->common);
+    add_placement_options(sub, a->common);
     sub->add_flag("-v,--verbose", a->verbose, "Also list the blocks posted on the other solution branch");
     sub->add_option("input", a->input, "Input APT CL file; '-' for stdin")->required();
     sub->footer(default_dialect_table() + exit_code_footer);

@@ -30,6 +30,7 @@ class cl_target {
   explicit cl_target(program::dialect source_language) : source_language_(source_language) {}
 
   void set_tool_axis_tolerance(radians) {}  // nothing to reach: CL data names no machine
+  void set_placement(const std::optional<run_inputs>&) {}  // no slides either
   void plan(const source_step&) {}
   void finish_plan() {}
 
@@ -53,7 +54,7 @@ class cl_target {
       emit(std::move(o));
       return;
     }
-    block_report report{b.where, s.principal ? matchability::direct : matchability::other_branch, {}, {}, {}};
+    block_report report{b.where, s.principal ? matchability::direct : matchability::other_branch, {}, {}, {}, 0.0};
     if (!s.principal) report.why = "the source pose is on the second solution branch of the source machine (K3)";
     on_report(std::move(report));
     if (program::is_arc(s.motion)) {

@@ -29,6 +29,7 @@
 
 #include "../core/rigid.hpp"
 #include "../kinematics/branch_plan.hpp"
+#include "../kinematics/inverse_pose.hpp"
 #include "../program/block.hpp"
 #include "../program/modal.hpp"
 #include "carry_over.hpp"
@@ -88,6 +89,10 @@ class nc_target {
     planner_ = rotary_planner_values(to_, options);
   }
 
+  /// Where the part sits and the tool length: each block's slides are then checked against the
+  /// target's linear travel (`common_options::placement`); before the first `write`.
+  void set_placement(const std::optional<run_inputs>& placement) { placement_ = placement; }
+
   /// First pass: the step of every block, in order.
   void plan(const source_step& s) {
     if (s.what == source_step::kind::motion) planner_.add(normalized(target_T_source_.map_direction(s.u_source)));
@@ -130,6 +135,7 @@ class nc_target {
   bool switch_tcp_on_;
   rotary_planner_values planner_;
   rotary_path_values path_;
+  std::optional<run_inputs> placement_;
   bool output_inverse_time_ = false, tcp_switched_on_ = false, inverse_time_error_ = false;
   std::optional<std::size_t> previous_motion_;  // motion index of the last written motion
   int branch_off_pole_ = -1;                    // branch of the last written motion off a pole
@@ -197,12 +203,20 @@ class nc_target {
   template <class Report>
   bool report_motion(const program::block& b, const source_step& s, std::size_t j, translation& out,
                      Report&& on_report) {
-    block_report report{b.where, matchability::direct, {}, {}, {}};
+    block_report report{b.where, matchability::direct, {}, {}, {}, 0.0};
     if (!path_.angles[j]) {
       report.match = matchability::unreachable;
       report.gap = path_.gap[j];
       report.why = "tool axis " + fixed(to_degrees(path_.gap[j]).value, 3) + "° outside the reach of " +
                    std::string(to_.geometry.id);
+      out.errors.push_back(at(b, std::string(to_.geometry.id) + " cannot reach this block (" + angles_text(s) + "): " + report.why));
+      on_report(std::move(report));
+      return false;
+    }
+    if (auto past = slide_past_travel(s, *path_.angles[j])) {
+      report.match = matchability::unreachable;
+      report.linear_excess_mm = past->excess_mm;
+      report.why = past->why;
       out.errors.push_back(at(b, std::string(to_.geometry.id) + " cannot reach this block (" + angles_text(s) + "): " + report.why));
       on_report(std::move(report));
       return false;
@@ -214,6 +228,35 @@ class nc_target {
     }
     on_report(std::move(report));
     return true;
+  }
+
+  /// A slide past its travel: the largest excess, mm, and what to say.
+  struct slide_excess {
+    double excess_mm;
+    std::string why;
+  };
+
+  /// With a placement, the slides X, Y, Z (G7) of the tip of step `s` with the planned angles:
+  /// the one farthest past its travel, if any is by more than `linear_slack_mm`. An arc is
+  /// checked at its end point.
+  std::optional<slide_excess> slide_past_travel(const source_step& s, const kin5::rotary_values& angles) const {
+    if (!placement_) return std::nullopt;
+    const vec3 tip_target_mm = target_T_source_.map_point(s.tip_source_mm);
+    const vec3 slides_mm = linear_axes_for(to_, angles, placement_->work_offset.map_point(tip_target_mm), *placement_);
+    const std::array<double, 3> x{slides_mm.x, slides_mm.y, slides_mm.z};
+    std::size_t worst = 0;
+    double excess = 0.0;
+    for (std::size_t i = 0; i < 3; ++i)
+      if (const double e = to_.linear(i).travel.excess_mm(x[i]); e > excess) excess = e, worst = i;
+    if (!(excess > inverse_options{}.linear_slack_mm)) return std::nullopt;
+    const linear_travel& t = to_.linear(worst).travel;
+    const char letter = to_char(to_.linear(worst).letter);
+    return slide_excess{excess, std::string("slide ") + letter + "=" + fixed(x[worst], 3) + " mm, " + fixed(excess, 3) +
+                                    " mm past its travel [" + fixed(t.lower_mm, 3) + ", " + fixed(t.upper_mm, 3) +
+                                    "] mm (tool length " + fixed(placement_->tool_length_mm, 3) + " mm, work offset " +
+                                    fixed(placement_->work_offset.translation_mm.x, 3) + "," +
+                                    fixed(placement_->work_offset.translation_mm.y, 3) + "," +
+                                    fixed(placement_->work_offset.translation_mm.z, 3) + ")"};
   }
 
   /// The words of an arc: end point, direction and centre in the plane the setup maps the

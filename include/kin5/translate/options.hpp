@@ -22,6 +22,7 @@
 
 #include "../core/rigid.hpp"
 #include "../core/units.hpp"
+#include "../kinematics/forward.hpp"
 #include "../kinematics/matchability.hpp"
 #include "../program/block.hpp"
 #include "allowances.hpp"
@@ -43,6 +44,11 @@ struct common_options {
   std::optional<int> digits;
   /// M functions renamed or dropped on the way into another dialect (m_codes.hpp).
   m_map m_codes;
+  /// Where the part sits on the target and the tool length (`run_inputs`: the work offset,
+  /// machine_T_work, and the tool length, mm). Given, every output block's slides X, Y, Z (G7)
+  /// are checked against the target's linear travel, and a block past it is reported like an
+  /// unreachable one, with the excess in mm. Not given: the linear axes are not checked.
+  std::optional<run_inputs> placement;
 };
 
 /// How to translate.
@@ -61,6 +67,7 @@ struct block_report {
   radians gap{};              ///< angle from the tool axis to the target's reach, when unreachable
   std::string source_angles;  ///< the source pose as written/modal, e.g. "A=-77.954 B=3.536" (degrees)
   std::string why;            ///< the reason, when not direct
+  double linear_excess_mm = 0.0;  ///< how far a slide lies past its travel, when that is why
 };
 
 /// The result of `translate`, `reverse` or `post`.

@@ -169,6 +169,7 @@ class two_pass_translator final : public block_translator {
     first_.configure(source_, common_.allow);
     second_.configure(source_, common_.allow);
     target_.set_tool_axis_tolerance(tool_axis_tolerance(source_.tolerance, first_.source().rounded_values()));
+    target_.set_placement(common_.placement);
   }
 };
 
