@@ -28,6 +28,9 @@ run 0 json match --from sajo-12000p --to dmu-80p --format json
 has json '"rows_independent": true'
 run 0 svg match --from sajo-12000p --to dmu-80p --format svg
 has svg '<svg xmlns="http://www.w3.org/2000/svg"'
+# Machine files (machines/*.toml) give the same table as the bundled machines they describe.
+run 0 csv_files match --from-file "$dir/../../machines/sajo-12000p.toml" --to-file "$dir/../../machines/dmu-80p.toml" --format csv
+cmp -s "$out/csv" "$out/csv_files" || report "csv_files: differs from the table of the bundled machines"
 run 1 unknown match --from sajo-12000p --to no-such-machine
 grep -q "unknown machine 'no-such-machine'" "$out/unknown.err" || report "unknown: no message"
 

@@ -42,12 +42,12 @@ struct pair_info {
 
 std::vector<pair_info> pairs() {
   std::vector<pair_info> out;
-  machines::for_each_machine([&]<class From>() {
-    machines::for_each_machine([&]<class To>() {
-      const auto t = reach::make_pair_table<From, To>(default_setup<From, To>(), true, false);
+  for (const machine_model* from : machines::catalog_models)
+    for (const machine_model* to : machines::catalog_models) {
+      const rigid_transform setup = default_setup(from->geometry.id, to->geometry.id);
+      const auto t = reach::make_pair_table(*from, *to, setup, true, false);
       out.push_back({"match-" + t.from + "-to-" + t.to, t.sphere_share});
-    });
-  });
+    }
   return out;
 }
 

@@ -39,19 +39,17 @@ struct generated {
   std::string name, text;
 };
 
-/// Calls f.template operator()<From, To>(index) for every ordered pair, in catalog order.
+/// Calls f(from, to, index) for every ordered pair of catalog machines, in catalog order.
 template <class F>
 void for_each_pair(F&& f) {
   std::size_t index = 0;
-  machines::for_each_machine([&]<class From>() {
-    machines::for_each_machine([&]<class To>() { f.template operator()<From, To>(index++); });
-  });
+  for (const machine_model* from : machines::catalog_models)
+    for (const machine_model* to : machines::catalog_models) f(*from, *to, index++);
 }
 
-template <machine From, machine To>
-reach::pair_table table_of(bool with_ipopt) {
-  const rigid_transform setup = default_setup<From, To>();
-  return reach::make_pair_table<From, To>(setup, true, with_ipopt);
+reach::pair_table table_of(const machine_model& from, const machine_model& to, bool with_ipopt) {
+  const rigid_transform setup = default_setup(from.geometry.id, to.geometry.id);
+  return reach::make_pair_table(from, to, setup, true, with_ipopt);
 }
 
 /// Ipopt checks that disagree with the closed form by more than 1e-6°.
@@ -77,7 +75,9 @@ std::vector<generated> pair_files(const reach::pair_table& t) {
 int write_all(const fs::path& dir) {
   fs::create_directories(dir);
   std::vector<reach::pair_table> tables;
-  for_each_pair([&]<class From, class To>(std::size_t) { tables.push_back(table_of<From, To>(true)); });
+  for_each_pair([&](const machine_model& from, const machine_model& to, std::size_t) {
+    tables.push_back(table_of(from, to, true));
+  });
   std::vector<generated> files{{"reach.md", gen_tables::reach_page()}, {"README.md", gen_tables::index_page(tables)}};
   for (const auto& t : tables)
     for (auto& f : pair_files(t)) files.push_back(std::move(f));
@@ -104,10 +104,10 @@ bool same_as_committed(const fs::path& dir, const generated& f, double tolerance
 
 int check_pairs(const fs::path& dir, std::size_t shard, std::size_t shards, double tolerance) {
   int failures = 0, pairs = 0;
-  for_each_pair([&]<class From, class To>(std::size_t index) {
+  for_each_pair([&](const machine_model& from, const machine_model& to, std::size_t index) {
     if (index % shards != shard) return;
     ++pairs;
-    const auto t = table_of<From, To>(true);
+    const auto t = table_of(from, to, true);
     for (const auto& f : pair_files(t)) failures += same_as_committed(dir, f, tolerance) ? 0 : 1;
     for (const auto& d : disagreements(t)) {
       std::fprintf(stderr, "closed form and Ipopt disagree: %s\n", d.c_str());
@@ -121,10 +121,10 @@ int check_pairs(const fs::path& dir, std::size_t shard, std::size_t shards, doub
 int check_index(const fs::path& dir, double tolerance) {
   std::vector<reach::pair_table> tables;
   std::set<std::string> expected{"README.md", "reach.md"};
-  for_each_pair([&]<class From, class To>(std::size_t) {
-    tables.push_back(table_of<From, To>(false));
+  for_each_pair([&](const machine_model& from, const machine_model& to, std::size_t) {
+    tables.push_back(table_of(from, to, false));
     for (const auto& ext : {".md", ".csv", ".svg"})
-      expected.insert("match-" + std::string(From::id) + "-to-" + std::string(To::id) + ext);
+      expected.insert("match-" + std::string(from.geometry.id) + "-to-" + std::string(to.geometry.id) + ext);
   });
   int failures = 0;
   failures += same_as_committed(dir, {"README.md", gen_tables::index_page(tables)}, tolerance) ? 0 : 1;
@@ -144,10 +144,10 @@ int check_index(const fs::path& dir, double tolerance) {
 
 int print_pair(const std::string& from, const std::string& to, const std::string& format) {
   bool found = false;
-  for_each_pair([&]<class From, class To>(std::size_t) {
-    if (From::id != from || To::id != to) return;
+  for_each_pair([&](const machine_model& f, const machine_model& t_model, std::size_t) {
+    if (f.geometry.id != from || t_model.geometry.id != to) return;
     found = true;
-    const auto t = table_of<From, To>(true);
+    const auto t = table_of(f, t_model, true);
     const std::string text = format == "csv" ? reach::csv(t)
                              : format == "svg" ? gen_tables::map_svg(t)
                              : format == "json" ? reach::json(t)

@@ -87,10 +87,9 @@ inline std::string index_page(const std::vector<reach::pair_table>& tables) {
   return o;
 }
 
-/// Range of ∠(p, u) of M in closed form: the ends of `reach_band` ((G5) narrowed to q's travel).
-template <machine M>
-std::array<double, 2> closed_form_cone() {
-  const auto edges = reach::reach_band<M>().edges();
+/// Range of ∠(p, u) of `m` in closed form: the ends of `reach_band` ((G5) narrowed to q's travel).
+inline std::array<double, 2> closed_form_cone(const machine_model& m) {
+  const auto edges = reach::reach_band(m).edges();
   return {edges.front(), edges.back()};
 }
 
@@ -111,9 +110,9 @@ inline std::string reach_page() {
   o += "| machine | travel | angle to fixed axis, closed form (deg) | Ipopt (deg) | max difference (deg) |\n";
   o += "|---|---|---|---|---|\n";
   reach_page_ok() = true;
-  machines::for_each_machine([&]<class M>() {
-    const auto closed = closed_form_cone<M>();
-    const auto numeric = reach::angle_range_to<M>(M::rotary[0].direction);
+  for (const machine_model* m : machines::catalog_models) {
+    const auto closed = closed_form_cone(*m);
+    const auto numeric = reach::angle_range_to(*m, m->rotary(0).direction);
     const double lo = numeric.smallest.value, hi = numeric.largest.value;
     const double diff = std::max(std::abs(closed[0] - lo), std::abs(closed[1] - hi));
     for (auto [c, n] : {std::pair{closed[0], lo}, std::pair{closed[1], hi}}) {
@@ -121,10 +120,10 @@ inline std::string reach_page() {
       reach_page_ok() = reach_page_ok() && reach::agrees(v, 1e-6 * pi / 180.0);
     }
     using reach::text_detail::deg;
-    o += "| `" + std::string(M::id) + "` | " + reach::travel_text<M>() + " | [" + deg(closed[0]) + ", " +
+    o += "| `" + std::string(m->geometry.id) + "` | " + reach::travel_text(*m) + " | [" + deg(closed[0]) + ", " +
          deg(closed[1]) + "] | [" + deg(lo) + ", " + deg(hi) + "] | " + reach::text_detail::sci(diff * 180.0 / pi) +
          " |\n";
-  });
+  }
   return o;
 }
 

@@ -1,7 +1,7 @@
 // The matchability subcommand of the kin5 tool:
 //
-//   kin5 match --from ID --to ID [--program FILE] [--from-dialect D] [--format md|csv|svg|json]
-//              [--tool-length MM] [--work-offset X,Y,Z]
+//   kin5 match --from ID|--from-file FILE --to ID|--to-file FILE [--program FILE] [--from-dialect D]
+//              [--format md|csv|svg|json] [--tool-length MM] [--work-offset X,Y,Z]
 //
 // Without a program: the pair's table (the same text as docs/tables/, computed afresh, Ipopt
 // checks included) or its sphere map. With one: the program's report — motion blocks per class,
@@ -36,6 +36,7 @@
 #include <kin5/translate/setup.hpp>
 
 #include "format.hpp"
+#include "machine_option.hpp"
 
 namespace kin5::tool {
 namespace {
@@ -43,7 +44,8 @@ namespace {
 namespace prog = kin5::program;
 
 struct match_arguments {
-  std::string from, to, program, from_dialect, format = "md";
+  machine_choice from, to;
+  std::string program, from_dialect, format = "md";
   double tool_length_mm = 0.0;
   std::vector<double> work_offset_mm;  ///< X, Y, Z of the workpiece frame on the target, or empty
 };
@@ -66,9 +68,8 @@ std::optional<std::string> read_file(const std::string& path) {
 
 void print(const std::string& text) { std::fwrite(text.data(), 1, text.size(), stdout); }
 
-template <machine From, machine To>
-int pair_only(const match_arguments& a) {
-  const auto t = reach::make_pair_table<From, To>(default_setup<From, To>(), true);
+int pair_only(const machine_model& from, const machine_model& to, const match_arguments& a) {
+  const auto t = reach::make_pair_table(from, to, default_setup(from.geometry.id, to.geometry.id), true);
   if (a.format == "svg") {
     reach::map_text text{t.from + " \u2192 " + t.to, "tool axes in the " + t.from + " workpiece frame", {}};
     print(reach::sphere_svg(t.raster, t.curves, t.markers, text));
@@ -78,15 +79,14 @@ int pair_only(const match_arguments& a) {
   return exit_codes::ok;
 }
 
-template <machine From, machine To>
-int with_program(const match_arguments& a) {
+int with_program(const machine_model& from, const machine_model& to, const match_arguments& a) {
   const std::string name = a.program == "-" ? "<stdin>" : a.program;
   const auto bytes = read_file(a.program);
   if (!bytes) {
     std::fprintf(stderr, "kin5 match: cannot read %s: %s\n", name.c_str(), std::strerror(errno));
     return exit_codes::input_error;
   }
-  const prog::dialect d = a.from_dialect.empty() ? prog::default_dialect(From::id).value_or(prog::dialect::siemens)
+  const prog::dialect d = a.from_dialect.empty() ? prog::default_dialect(from.geometry.id).value_or(prog::dialect::siemens)
                                                  : *prog::parse_dialect(a.from_dialect);
   const prog::read_result in = prog::read(d, *bytes, name);
   if (!in.ok()) {
@@ -94,16 +94,16 @@ int with_program(const match_arguments& a) {
     std::fprintf(stderr, "kin5 match: %zu errors in %s; no report\n", in.errors.size(), name.c_str());
     return exit_codes::input_error;
   }
-  const rigid_transform setup = default_setup<From, To>();
-  const auto report = reach::make_program_report<From, To>(in.parsed, setup, true, target_inputs(a), placed(a));
+  const rigid_transform setup = default_setup(from.geometry.id, to.geometry.id);
+  const auto report = reach::make_program_report(from, to, in.parsed, setup, true, target_inputs(a), placed(a));
   std::optional<reach::setup_search_result> search;
   std::optional<reach::chosen_setup> chosen;
   if (!report.unreachable.empty()) {
-    search = reach::search_setup<From, To>(report.source_axes, setup.rotation);
-    chosen = reach::choose_setup<From, To>(in.parsed, *search, setup.translation_mm, target_inputs(a), placed(a));
+    search = reach::search_setup(from, to, report.source_axes, setup.rotation);
+    chosen = reach::choose_setup(from, to, in.parsed, *search, setup.translation_mm, target_inputs(a), placed(a));
   }
   if (a.format == "svg") {
-    const auto t = reach::make_pair_table<From, To>(setup, true, false);
+    const auto t = reach::make_pair_table(from, to, setup, true, false);
     reach::map_text text{t.from + " \u2192 " + t.to + ": " + name, "tool axes of the program's blocks (dots)", {}};
     print(reach::sphere_svg(t.raster, t.curves, t.markers, text, report.source_axes));
   } else if (a.format == "csv") {
@@ -117,21 +117,12 @@ int with_program(const match_arguments& a) {
 }
 
 int run_match(const match_arguments& a) {
-  int code = -1;
-  bool from_known = false, to_known = false;
-  kin5::machines::for_each_machine([&]<class From>() {
-    if (From::id != a.from) return;
-    from_known = true;
-    kin5::machines::for_each_machine([&]<class To>() {
-      if (To::id != a.to) return;
-      to_known = true;
-      code = a.program.empty() ? pair_only<From, To>(a) : with_program<From, To>(a);
-    });
-  });
-  if (code >= 0) return code;
-  std::fprintf(stderr, "kin5 match: unknown machine '%s'; known: %s\n", (from_known ? a.to : a.from).c_str(),
-               join(machine_ids()).c_str());
-  return exit_codes::usage;
+  int code = exit_codes::ok;
+  const std::optional<chosen_machine> from = resolve_machine(a.from, "match", code);
+  if (!from) return code;
+  const std::optional<chosen_machine> to = resolve_machine(a.to, "match", code);
+  if (!to) return code;
+  return a.program.empty() ? pair_only(from->model(), to->model(), a) : with_program(from->model(), to->model(), a);
 }
 
 }  // namespace
@@ -139,8 +130,8 @@ int run_match(const match_arguments& a) {
 void add_match_command(CLI::App& app, int& exit_code) {
   auto a = std::make_shared<match_arguments>();
   auto* sub = app.add_subcommand("match", "Which blocks of a machine another can run: the pair's table, or a program's report");
-  sub->add_option("--from", a->from, "Source machine (see `kin5 machines`)")->required();
-  sub->add_option("--to", a->to, "Target machine")->required();
+  add_machine_options(*sub, a->from, "--from", "Source machine");
+  add_machine_options(*sub, a->to, "--to", "Target machine");
   sub->add_option("--program", a->program, "NC program of the source machine ('-' for stdin): report on it");
   sub->add_option("--from-dialect", a->from_dialect, "Dialect of the program (default: the --from machine's)")
       ->check(CLI::IsMember({"siemens", "heidenhain", "iso"}));

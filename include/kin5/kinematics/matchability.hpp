@@ -73,14 +73,23 @@ constexpr matchability classify(bool source_principal, bool target_reachable) {
   return source_principal ? matchability::direct : matchability::other_branch;
 }
 
-/// The class of source angles of From on machine To, tool axes mapped by `target_R_source`.
-/// `gap`, when given, receives the angle to the target's reach (0 when reachable).
+/// The class of source angles of machine `from` (chain order) on machine `to`, tool axes mapped
+/// by `target_R_source`. `gap`, when given, receives the angle to the target's reach (0 when
+/// reachable).
+template <std::size_t N>
+constexpr matchability classify(const machine_model& from, const machine_model& to, const std::array<radians, N>& source,
+                                const mat3& target_R_source, radians* gap = nullptr) {
+  const vec3 u = tool_axis(from, source);
+  const auto target = inverse(to, target_R_source * u);
+  if (gap) *gap = target.reachable() ? radians{0.0} : target.gap;
+  return classify(on_principal_branch(from, source, u), target.reachable());
+}
+
+/// `classify` of machine types From → To.
 template <machine From, machine To>
 constexpr matchability classify(const rotary_angles<From>& source, const mat3& target_R_source,
                                 radians* gap = nullptr) {
-  const auto target = inverse<To>(target_R_source * tool_axis<From>(source));
-  if (gap) *gap = target.reachable() ? radians{0.0} : target.gap;
-  return classify(on_principal_branch<From>(source), target.reachable());
+  return classify(From::model, To::model, source, target_R_source, gap);
 }
 
 }  // namespace kin5

@@ -1,9 +1,11 @@
 /// @file machines/catalog.hpp
 /// The catalog: every bundled machine type, and `catalog`, a type list of them for code (tests,
 /// the command line) that must do something for each, or for the one with a given id
-/// (`with_machine` for its type, `find_machine` for its `machine_model` value).
+/// (`with_machine` for its type, `find_machine` for its `machine_model` value), and
+/// `catalog_models`, the same machines as values for loops at run time.
 #pragma once
 
+#include <array>
 #include <string_view>
 #include <tuple>
 
@@ -25,6 +27,18 @@ template <class F>
 constexpr void for_each_machine(F&& f) {
   [&]<class... Ms>(std::tuple<Ms...>*) { (f.template operator()<Ms>(), ...); }(static_cast<catalog*>(nullptr));
 }
+
+/// The models of the machines of the type list `List`, in its order: for code that does the
+/// same for each machine at run time (one instantiation, not one per machine or pair).
+template <class List>
+consteval auto models_of() {
+  return []<class... Ms>(std::tuple<Ms...>*) {
+    return std::array<const machine_model*, sizeof...(Ms)>{&Ms::model...};
+  }(static_cast<List*>(nullptr));
+}
+
+/// The models of every catalog machine, in catalog order.
+inline constexpr auto catalog_models = models_of<catalog>();
 
 /// Calls `f.template operator()<M>()` for the catalog machine M with `M::id == id`: the one
 /// lookup of a machine by id. False, without calling `f`, when no catalog machine has that id.

@@ -12,18 +12,24 @@
 namespace kin5::reach {
 
 /// The parameter s in [reachable_at, unreachable_at] where `family(s)` (a tool axis in the
-/// target frame) stops being reachable on machine To, to within `resolution` (same unit as s).
+/// target frame) stops being reachable on machine `to`, to within `resolution` (same unit as s).
 /// Requires family(reachable_at) reachable and family(unreachable_at) not.
-template <machine To>
-double reach_boundary(const std::function<vec3(double)>& family, double reachable_at, double unreachable_at,
-                      double resolution, radians tolerance = {1e-6}) {
-  auto reachable = [&](double s) { return nearest_reachable_axis<To>(family(s)).gap.value <= tolerance.value; };
+inline double reach_boundary(const machine_model& to, const std::function<vec3(double)>& family, double reachable_at,
+                             double unreachable_at, double resolution, radians tolerance = {1e-6}) {
+  auto reachable = [&](double s) { return nearest_reachable_axis(to, family(s)).gap.value <= tolerance.value; };
   double good = reachable_at, bad = unreachable_at;
   while (std::abs(bad - good) > resolution) {
     const double mid = 0.5 * (good + bad);
     (reachable(mid) ? good : bad) = mid;
   }
   return 0.5 * (good + bad);
+}
+
+/// `reach_boundary` on machine type To.
+template <machine To>
+double reach_boundary(const std::function<vec3(double)>& family, double reachable_at, double unreachable_at,
+                      double resolution, radians tolerance = {1e-6}) {
+  return reach_boundary(To::model, family, reachable_at, unreachable_at, resolution, tolerance);
 }
 
 }  // namespace kin5::reach

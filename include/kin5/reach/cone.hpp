@@ -11,39 +11,42 @@
 
 namespace kin5::reach {
 
-/// Smallest and largest angle between the tool axis and a direction, with the angles reaching them.
-template <machine M>
+/// Smallest and largest angle between the tool axis and a direction, with the angles reaching
+/// them (chain order; `[1]` unused on a 4-axis machine).
 struct angle_range {
   radians smallest{}, largest{};
-  rotary_angles<M> at_smallest{}, at_largest{};
+  rotary_values at_smallest{}, at_largest{};
   bool converged = false;
 };
 
-/// The range of ∠(d, u) over the travel of M.
-template <machine M>
-angle_range<M> angle_range_to(const vec3& d_in, int starts_per_axis = 3) {
+/// The range of ∠(d, u) over the travel of machine `m`.
+inline angle_range angle_range_to(const machine_model& m, const vec3& d_in, int starts_per_axis = 3) {
   const vec3 d = normalized(d_in);
   std::vector<double> lower, upper;
-  detail::travel_box<M>(lower, upper);
+  detail::travel_box(m, lower, upper);
   const auto starts = detail::grid_starts(lower, upper, starts_per_axis);
   auto solve = [&](double sign) {
-    const objective f = [&d, sign](const std::vector<double>& x, std::vector<double>& gradient,
-                                   std::vector<double>& hessian) {
-      return detail::linear_in_axis<M>(x, d, sign, gradient, hessian);
+    const objective f = [&m, &d, sign](const std::vector<double>& x, std::vector<double>& gradient,
+                                       std::vector<double>& hessian) {
+      return detail::linear_in_axis(m, x, d, sign, gradient, hessian);
     };
     return minimize_in_box(f, lower, upper, starts);
   };
   const box_minimum nearest = solve(-1.0);   // maximise d·u: smallest angle
   const box_minimum farthest = solve(+1.0);  // minimise d·u: largest angle
-  angle_range<M> out;
-  for (std::size_t i = 0; i < rotary_count<M>; ++i) {
-    out.at_smallest[i] = {nearest.x[i]};
-    out.at_largest[i] = {farthest.x[i]};
-  }
-  out.smallest = angle_between(d, tool_axis<M>(out.at_smallest));
-  out.largest = angle_between(d, tool_axis<M>(out.at_largest));
+  angle_range out;
+  out.at_smallest = detail::angles_of(nearest.x);
+  out.at_largest = detail::angles_of(farthest.x);
+  out.smallest = angle_between(d, tool_axis(m, out.at_smallest));
+  out.largest = angle_between(d, tool_axis(m, out.at_largest));
   out.converged = nearest.converged && farthest.converged;
   return out;
+}
+
+/// `angle_range_to` of machine type M.
+template <machine M>
+angle_range angle_range_to(const vec3& d, int starts_per_axis = 3) {
+  return angle_range_to(M::model, d, starts_per_axis);
 }
 
 }  // namespace kin5::reach

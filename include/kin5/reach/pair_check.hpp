@@ -44,15 +44,14 @@ inline bool agrees(const value_check& c, double tolerance) {
 
 namespace detail {
 
-/// The commanded angles of From's carried axis where ∠(p_s, u) is extreme, by Ipopt: minimise
-/// ±p_s · R(q, ψq) t over the carried axis' travel from `starts` evenly spread starts. Optima on
-/// the travel ends are dropped; the rest are returned sorted, duplicates merged.
-template <machine From>
-std::vector<double> latitude_extremes_numeric(int starts = 6) {
-  static_assert(rotary_count<From> == 2);
-  const rotary_axis& q = From::rotary[1];
+/// The commanded angles of the carried axis of `from` (two rotary axes) where ∠(p_s, u) is
+/// extreme, by Ipopt: minimise ±p_s · R(q, ψq) t over the carried axis' travel from `starts`
+/// evenly spread starts. Optima on the travel ends are dropped; the rest are returned sorted,
+/// duplicates merged.
+inline std::vector<double> latitude_extremes_numeric(const machine_model& from, int starts = 6) {
+  const rotary_axis& q = from.rotary(1);
   const commanded_range r = range_of(q);
-  const vec3 p = From::rotary[0].direction, axis = q.direction, t = From::tool_reference;
+  const vec3 p = from.rotary(0).direction, axis = q.direction, t = from.tool_reference();
   const double sq = q.psi_per_commanded();
   std::vector<double> out;
   for (double sign : {1.0, -1.0}) {
@@ -77,17 +76,16 @@ std::vector<double> latitude_extremes_numeric(int starts = 6) {
 
 }  // namespace detail
 
-/// The branch boundaries of From found by Ipopt beside the closed form δ, δ + π (commanded).
-template <machine From>
-std::vector<value_check> check_branch_boundaries() {
+/// The branch boundaries of `from` found by Ipopt beside the closed form δ, δ + π (commanded).
+inline std::vector<value_check> check_branch_boundaries(const machine_model& from) {
   std::vector<value_check> out;
-  if constexpr (rotary_count<From> == 2) {
+  if (from.rotary_count == 2) {
     std::vector<row_point> closed;
-    const latitude_curve own = carried_curve<From>(From::rotary[0].direction);
-    const double sense = From::rotary[1].psi_per_commanded();
-    const commanded_range r = range_of(From::rotary[1]);
+    const latitude_curve own = carried_curve(from, from.rotary(0).direction);
+    const double sense = from.rotary(1).psi_per_commanded();
+    const commanded_range r = range_of(from.rotary(1));
     for (double e : {own.delta.value, own.delta.value + pi}) detail::add_shifts(closed, e, sense, r, 0);
-    const std::vector<double> numeric = detail::latitude_extremes_numeric<From>();
+    const std::vector<double> numeric = detail::latitude_extremes_numeric(from);
     for (const auto& c : closed) {
       if (c.at - r.lo < 1e-6 || r.hi - c.at < 1e-6) continue;  // on a travel end: not a boundary
       value_check v{"branch boundary", c.at, 0.0, false, false};
@@ -99,20 +97,19 @@ std::vector<value_check> check_branch_boundaries() {
   return out;
 }
 
-/// The Ipopt gap to To's reach of the source pose at `s` on `row`, started from `starts` (or a
-/// 2 × 2 grid when empty); the optimum is written back to `starts` for the next call.
-template <machine From, machine To>
-double numeric_gap(const pair_geometry<From, To>& g, const pose_row& row, double s,
-                   std::vector<std::vector<double>>& starts) {
-  const vec3 v = g.target_R_source * tool_axis<From>(detail::pose_on_row<From>(row, s));
+/// The Ipopt gap to the target's reach of the source pose at `s` on `row`, started from `starts`
+/// (or a 2 × 2 grid when empty); the optimum is written back to `starts` for the next call.
+inline double numeric_gap(const pair_geometry& g, const pose_row& row, double s,
+                          std::vector<std::vector<double>>& starts) {
+  const vec3 v = g.target_R_source * tool_axis(g.from(), detail::pose_on_row(g.from(), row, s));
   if (starts.empty()) {
     std::vector<double> lower, upper;
-    detail::travel_box<To>(lower, upper);
+    detail::travel_box(g.to(), lower, upper);
     starts = detail::grid_starts(lower, upper, 2);
   }
-  const auto n = nearest_reachable_axis_from<To>(v, starts);
+  const auto n = nearest_reachable_axis_from(g.to(), v, starts);
   std::vector<double> x;
-  for (const auto& a : n.angles) x.push_back(a.value);
+  for (std::size_t i = 0; i < g.to().rotary_count; ++i) x.push_back(n.angles[i].value);
   starts = {x};
   return n.gap.value;
 }
@@ -121,9 +118,8 @@ double numeric_gap(const pair_geometry<From, To>& g, const pose_row& row, double
 /// from the Ipopt gap alone: sampled at closed + σh, closed + 2σh, closed + 3σh into the
 /// unreachable region (h = 0.02°, less in a short region), the quadratic through the three
 /// samples extrapolated to zero gap.
-template <machine From, machine To>
-value_check check_reach_boundary(const pair_geometry<From, To>& g, const pose_row& row, double closed,
-                                 const region& unreachable) {
+inline value_check check_reach_boundary(const pair_geometry& g, const pose_row& row, double closed,
+                                        const region& unreachable) {
   const double into = unreachable.lo >= closed - 1e-12 ? 1.0 : -1.0;
   const double room = into > 0 ? unreachable.hi - closed : closed - unreachable.lo;
   const double h = std::min(to_radians(degrees{0.02}).value, room / 4.0);
@@ -149,8 +145,7 @@ value_check check_reach_boundary(const pair_geometry<From, To>& g, const pose_ro
 }
 
 /// Every Ipopt check of one row: its reach boundaries and the worst gap of each unreachable region.
-template <machine From, machine To>
-std::vector<value_check> check_row(const pair_geometry<From, To>& g, const pose_row& row) {
+inline std::vector<value_check> check_row(const pair_geometry& g, const pose_row& row) {
   std::vector<value_check> out;
   const auto& regs = row.regions;
   for (std::size_t i = 0; i < regs.size(); ++i) {
@@ -162,7 +157,7 @@ std::vector<value_check> check_row(const pair_geometry<From, To>& g, const pose_
     std::vector<std::vector<double>> starts;
     {
       std::vector<double> lower, upper;
-      detail::travel_box<To>(lower, upper);
+      detail::travel_box(g.to(), lower, upper);
       starts = detail::grid_starts(lower, upper, 3);
     }
     const double numeric = numeric_gap(g, row, regs[i].worst_gap_at_rad, starts);

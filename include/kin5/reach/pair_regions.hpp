@@ -68,35 +68,39 @@ inline void add_shifts(std::vector<row_point>& out, double psi, double sense, co
     out.push_back({std::clamp(v, r.lo, r.hi), kind, false});
 }
 
-/// Commanded source angles on the row at swept value s.
-template <machine From>
-rotary_angles<From> pose_on_row(const pose_row& row, double s) {
-  rotary_angles<From> a{};
-  if constexpr (rotary_count<From> == 2) a[0] = {*row.fixed};
-  a[rotary_count<From> - 1] = {s};
+/// Commanded angles of source `from` on the row at swept value s.
+inline rotary_values pose_on_row(const machine_model& from, const pose_row& row, double s) {
+  rotary_values a{};
+  if (from.rotary_count == 2) a[0] = {*row.fixed};
+  a[from.rotary_count - 1] = {s};
   return a;
+}
+
+/// The direction d′ = R(p_s, −ψp) Rᵀ p_d of the row: the target's fixed axis seen from the
+/// source's carried axis.
+inline vec3 row_direction(const pair_geometry& g, const pose_row& row) {
+  const machine_model& from = g.from();
+  if (from.rotary_count == 2) return rotate(from.rotary(0).direction, from.rotary(0).psi({-*row.fixed}), g.target_axis_in_source);
+  return g.target_axis_in_source;
 }
 
 /// The candidate points of a row: travel ends, branch meets and poles of the source, and, on a
 /// band target, the roots of κ(ψ) = cos(edge) and κ = ±1.
-template <machine From, machine To>
-std::vector<row_point> candidate_points(const pair_geometry<From, To>& g, const pose_row& row) {
-  constexpr std::size_t s = rotary_count<From> - 1;
-  const rotary_axis& swept = From::rotary[s];
+inline std::vector<row_point> candidate_points(const pair_geometry& g, const pose_row& row) {
+  const machine_model& from = g.from();
+  const rotary_axis& swept = from.rotary(from.rotary_count - 1);
   const commanded_range r = range_of(swept);
   const double sense = swept.psi_per_commanded();
   std::vector<row_point> pts{{r.lo, travel_end, false}, {r.hi, travel_end, false}};
-  if constexpr (rotary_count<From> == 2) {
-    const latitude_curve own = carried_curve<From>(From::rotary[0].direction);
+  if (from.rotary_count == 2) {
+    const latitude_curve own = carried_curve(from, from.rotary(0).direction);
     const unsigned top = std::abs(own.c0 + own.rho - 1.0) < 1e-12 ? source_pole : 0u;
     const unsigned bottom = std::abs(own.c0 - own.rho + 1.0) < 1e-12 ? source_pole : 0u;
     add_shifts(pts, own.delta.value, sense, r, source_branch | top);
     add_shifts(pts, own.delta.value + pi, sense, r, source_branch | bottom);
   }
   if (!g.band_target) return pts;
-  vec3 d = g.target_axis_in_source;
-  if constexpr (rotary_count<From> == 2) d = rotate(From::rotary[0].direction, From::rotary[0].psi({-*row.fixed}), d);
-  const latitude_curve curve = carried_curve<From>(d);
+  const latitude_curve curve = carried_curve(from, row_direction(g, row));
   auto add_roots = [&](double k, unsigned kind) {
     std::size_t n = 0;
     const auto roots = curve.roots(k, n);
@@ -121,11 +125,10 @@ inline std::vector<row_point> sorted_points(std::vector<row_point> pts) {
 
 /// Adds the class changes of a row on a target without a band: a scan in steps of at most
 /// 0.25°, each change located by bisection on the class to 1e-13 rad.
-template <machine From, machine To>
-void add_scanned_points(const pair_geometry<From, To>& g, const pose_row& row, std::vector<row_point>& pts) {
-  const commanded_range r = range_of(From::rotary[rotary_count<From> - 1]);
+inline void add_scanned_points(const pair_geometry& g, const pose_row& row, std::vector<row_point>& pts) {
+  const commanded_range r = range_of(g.from().rotary(g.from().rotary_count - 1));
   const int n = static_cast<int>(std::ceil((r.hi - r.lo) / to_radians(degrees{0.25}).value));
-  auto cls = [&](double s) { return g.classify_pose(pose_on_row<From>(row, s)); };
+  auto cls = [&](double s) { return g.classify_pose(pose_on_row(g.from(), row, s)); };
   double prev = r.lo;
   matchability prev_class = cls(prev);
   for (int i = 1; i <= n; ++i) {
@@ -147,11 +150,11 @@ void add_scanned_points(const pair_geometry<From, To>& g, const pose_row& row, s
 
 /// Largest gap over [lo, hi] of a row, and where: on a band target at the ends or where the
 /// latitude is extreme (ψ − δ′ = kπ); otherwise by a scan and golden-section refinement.
-template <machine From, machine To>
-std::pair<double, double> worst_gap(const pair_geometry<From, To>& g, const pose_row& row, double lo, double hi) {
+inline std::pair<double, double> worst_gap(const pair_geometry& g, const pose_row& row, double lo, double hi) {
+  const machine_model& from = g.from();
   auto gap = [&](double s) {
     radians out{};
-    g.classify_pose(detail::pose_on_row<From>(row, s), &out);
+    g.classify_pose(detail::pose_on_row(from, row, s), &out);
     return out.value;
   };
   std::vector<double> xs{lo, hi};
@@ -159,10 +162,8 @@ std::pair<double, double> worst_gap(const pair_geometry<From, To>& g, const pose
   for (int i = 1; i < n; ++i) xs.push_back(lo + (hi - lo) * i / n);
   if (g.band_target) {
     std::vector<row_point> extremes;
-    vec3 d = g.target_axis_in_source;
-    if constexpr (rotary_count<From> == 2) d = rotate(From::rotary[0].direction, From::rotary[0].psi({-*row.fixed}), d);
-    const latitude_curve curve = carried_curve<From>(d);
-    const rotary_axis& swept = From::rotary[rotary_count<From> - 1];
+    const latitude_curve curve = carried_curve(from, detail::row_direction(g, row));
+    const rotary_axis& swept = from.rotary(from.rotary_count - 1);
     for (double e : {curve.delta.value, curve.delta.value + pi})
       detail::add_shifts(extremes, e, swept.psi_per_commanded(), {lo, hi}, 0);
     for (const auto& e : extremes) xs.push_back(e.at);
@@ -186,14 +187,13 @@ std::pair<double, double> worst_gap(const pair_geometry<From, To>& g, const pose
 
 /// The regions of the row with the source's fixed axis at `fixed` (commanded, radians; ignored
 /// for a one-rotary source).
-template <machine From, machine To>
-pose_row row_regions(const pair_geometry<From, To>& g, double fixed = 0.0) {
+inline pose_row row_regions(const pair_geometry& g, double fixed = 0.0) {
   pose_row row;
-  if constexpr (rotary_count<From> == 2) row.fixed = fixed;
+  if (g.from().rotary_count == 2) row.fixed = fixed;
   std::vector<row_point> pts = detail::candidate_points(g, row);
   if (!g.band_target) detail::add_scanned_points(g, row, pts);
   pts = detail::sorted_points(std::move(pts));
-  auto cls = [&](double s) { return g.classify_pose(detail::pose_on_row<From>(row, s)); };
+  auto cls = [&](double s) { return g.classify_pose(detail::pose_on_row(g.from(), row, s)); };
   // Pieces: point, open gap, point, …, point; merged while the class stays the same.
   for (std::size_t i = 0; i < pts.size(); ++i) {
     const matchability at_point = cls(pts[i].at);

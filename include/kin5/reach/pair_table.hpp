@@ -23,10 +23,10 @@
 namespace kin5::reach {
 
 /// Text describing a machine's rotary axes: "B endless, A [-120, 30]".
-template <machine M>
-std::string travel_text() {
+inline std::string travel_text(const machine_model& m) {
   std::string out;
-  for (const auto& a : M::rotary) {
+  for (std::size_t i = 0; i < m.rotary_count; ++i) {
+    const rotary_axis& a = m.rotary(i);
     if (!out.empty()) out += ", ";
     out += to_char(a.letter);
     if (a.travel.continuous) {
@@ -63,10 +63,9 @@ struct pair_table {
 
 namespace detail {
 
-/// Values of the fixed axis for the table's rows (commanded, radians).
-template <machine From>
-std::vector<double> row_values(int endless_step_deg = 30, int bounded_steps = 12) {
-  const rotary_axis& p = From::rotary[0];
+/// Values of the fixed axis of `from` for the table's rows (commanded, radians).
+inline std::vector<double> row_values(const machine_model& from, int endless_step_deg = 30, int bounded_steps = 12) {
+  const rotary_axis& p = from.rotary(0);
   std::vector<double> out;
   if (p.travel.continuous) {
     for (int v = -180; v < 180; v += endless_step_deg) out.push_back(to_radians(degrees{double(v)}).value);
@@ -94,15 +93,14 @@ inline std::array<double, 3> row_share(const pose_row& row) {
 
 /// Share of each class over the pose box (one row, or the mean of 360 evenly spaced rows), and
 /// the largest gap met on those rows.
-template <machine From, machine To>
-std::pair<std::array<double, 3>, double> pose_share(const pair_geometry<From, To>& g, const pair_table& t) {
+inline std::pair<std::array<double, 3>, double> pose_share(const pair_geometry& g, const pair_table& t) {
   auto worst_of = [](const pose_row& row) {
     double w = 0.0;
     for (const auto& r : row.regions) w = std::max(w, r.worst_gap_rad);
     return w;
   };
   if (t.rows_independent) return {row_share(t.rows.front()), worst_of(t.rows.front())};
-  const commanded_range r = range_of(From::rotary[0]);
+  const commanded_range r = range_of(g.from().rotary(0));
   std::array<double, 3> out{};
   double worst = 0.0;
   constexpr int n = 360;
@@ -117,25 +115,25 @@ std::pair<std::array<double, 3>, double> pose_share(const pair_geometry<From, To
 
 }  // namespace detail
 
-/// Analyses From → To under `setup`; with `with_ipopt`, also the Ipopt checks.
-template <machine From, machine To>
-pair_table make_pair_table(const rigid_transform& setup, bool is_default_setup, bool with_ipopt = true) {
-  const pair_geometry<From, To> g(setup.rotation);
+/// Analyses `from` → `to` under `setup`; with `with_ipopt`, also the Ipopt checks.
+inline pair_table make_pair_table(const machine_model& from, const machine_model& to, const rigid_transform& setup,
+                                  bool is_default_setup, bool with_ipopt = true) {
+  const pair_geometry g(from, to, setup.rotation);
   pair_table t;
-  t.from = From::id, t.to = To::id;
-  t.from_structure = From::structure, t.to_structure = To::structure;
-  t.from_travel = travel_text<From>(), t.to_travel = travel_text<To>();
-  t.fixed_letter = rotary_count<From> == 2 ? to_char(From::rotary[0].letter) : 0;
-  t.swept_letter = to_char(From::rotary[rotary_count<From> - 1].letter);
+  t.from = from.geometry.id, t.to = to.geometry.id;
+  t.from_structure = from.geometry.structure, t.to_structure = to.geometry.structure;
+  t.from_travel = travel_text(from), t.to_travel = travel_text(to);
+  t.fixed_letter = from.rotary_count == 2 ? to_char(from.rotary(0).letter) : 0;
+  t.swept_letter = to_char(from.rotary(from.rotary_count - 1).letter);
   t.setup = setup, t.default_setup = is_default_setup;
   t.band_target = g.band_target, t.band_source = g.band_source;
-  t.rows_independent = rotary_count<From> == 1 ||
-                       (g.band_target && norm(cross(g.target_axis_in_source, From::rotary[0].direction)) < 1e-12);
-  const std::vector<double> values = t.rows_independent ? std::vector<double>{0.0} : detail::row_values<From>();
+  t.rows_independent = from.rotary_count == 1 ||
+                       (g.band_target && norm(cross(g.target_axis_in_source, from.rotary(0).direction)) < 1e-12);
+  const std::vector<double> values = t.rows_independent ? std::vector<double>{0.0} : detail::row_values(from);
   for (double v : values) t.rows.push_back(row_regions(g, v));
   t.checks.resize(t.rows.size());
   if (with_ipopt) {
-    t.branch_checks = check_branch_boundaries<From>();
+    t.branch_checks = check_branch_boundaries(from);
     t.checks.front() = check_row(g, t.rows.front());
     if (t.rows.size() > 1) t.checks[t.rows.size() / 2] = check_row(g, t.rows[t.rows.size() / 2]);
   }

@@ -6,7 +6,7 @@
 /// Classes and gaps come from `translate` itself, so the report and a translation never
 /// disagree; the tool axes come from `reverse` (one per motion block written as a GOTO).
 /// @code
-///   const auto r = kin5::reach::make_program_report<From, To>(nc, kin5::default_setup<From, To>(), true);
+///   const auto r = kin5::reach::make_program_report(from, to, nc, kin5::default_setup(from.geometry.id, to.geometry.id), true);
 ///   std::cout << kin5::reach::report_markdown(r);
 /// @endcode
 #pragma once
@@ -108,11 +108,10 @@ inline std::vector<unreachable_run> runs_of(const std::vector<block_report>& rep
   return out;
 }
 
-template <machine To>
-std::vector<axis_span> spans_of(const rotary_path<To>& path) {
+inline std::vector<axis_span> spans_of(const machine_model& to, const rotary_path_values& path) {
   std::vector<axis_span> out;
-  for (std::size_t i = 0; i < rotary_count<To>; ++i) {
-    const auto& axis = To::rotary[i];
+  for (std::size_t i = 0; i < to.rotary_count; ++i) {
+    const auto& axis = to.rotary(i);
     axis_span s{to_char(axis.letter), 0.0, 0.0, !axis.travel.continuous, axis.travel.lower.value, axis.travel.upper.value};
     bool first = true;
     for (const auto& a : path.angles) {
@@ -128,16 +127,15 @@ std::vector<axis_span> spans_of(const rotary_path<To>& path) {
 }
 
 /// The slide values of each reachable block with the planned angles (G7), and their ranges.
-template <machine To>
-void place_slides(program_report& out, const rotary_path<To>& path) {
+inline void place_slides(const machine_model& to, program_report& out, const rotary_path_values& path) {
   std::array<double, 3> lo{}, hi{};
   bool any = false;
   for (std::size_t i = 0; i < out.blocks.size(); ++i) {
     auto& b = out.blocks[i];
     if (!path.angles[i]) continue;
     b.reachable = true;
-    for (std::size_t k = 0; k < rotary_count<To>; ++k) b.rotary_rad[k] = (*path.angles[i])[k].value;
-    b.slides_mm = linear_axes_for(To::model, *path.angles[i], out.target_inputs.work_offset.map_point(b.tip_mm),
+    for (std::size_t k = 0; k < to.rotary_count; ++k) b.rotary_rad[k] = (*path.angles[i])[k].value;
+    b.slides_mm = linear_axes_for(to, *path.angles[i], out.target_inputs.work_offset.map_point(b.tip_mm),
                                   out.target_inputs);
     const std::array<double, 3> x{b.slides_mm.x, b.slides_mm.y, b.slides_mm.z};
     for (std::size_t k = 0; k < 3; ++k) lo[k] = any ? std::min(lo[k], x[k]) : x[k], hi[k] = any ? std::max(hi[k], x[k]) : x[k];
@@ -145,30 +143,31 @@ void place_slides(program_report& out, const rotary_path<To>& path) {
   }
   if (!any) return;
   for (std::size_t k = 0; k < 3; ++k) {
-    const linear_axis& a = To::linear[k];
+    const linear_axis& a = to.linear(k);
     out.linear.push_back({to_char(a.letter), lo[k], hi[k], a.travel.lower_mm, a.travel.upper_mm, out.placed});
   }
 }
 
 }  // namespace detail
 
-/// The report of program `nc` (of machine From) on machine To under `setup`; `target_inputs`
+/// The report of program `nc` (of machine `from`) on machine `to` under `setup`; `target_inputs`
 /// place the slides: the tool length, and where the workpiece frame sits on the target (the
 /// translation of its work offset; how the part is turned is the setup's rotation, so the
 /// offset's rotation is not used). `placed`: the work offset is the part's real place, so the
 /// slides are checked against the travel's ends; otherwise only their strokes against its length.
-template <machine From, machine To>
-program_report make_program_report(const program::program& nc, const rigid_transform& setup, bool is_default_setup,
-                                   const run_inputs& target_inputs = {}, bool placed = false) {
+inline program_report make_program_report(const machine_model& from, const machine_model& to,
+                                          const program::program& nc, const rigid_transform& setup,
+                                          bool is_default_setup, const run_inputs& target_inputs = {},
+                                          bool placed = false) {
   program_report out;
   out.target_inputs = target_inputs;
   out.placed = placed;
   out.target_inputs.work_offset.rotation = mat3::identity();
-  out.file = nc.file, out.from = From::id, out.to = To::id;
+  out.file = nc.file, out.from = from.geometry.id, out.to = to.geometry.id;
   out.setup = setup, out.default_setup = is_default_setup;
   translate_options options;
   options.setup = setup;
-  const translation t = translate<From, To>(nc, options);
+  const translation t = translate(from, to, nc, options);
   out.per_class = t.per_class;
   out.unreachable = detail::runs_of(t.reports);
   std::set<std::size_t> unreachable_lines;
@@ -176,7 +175,7 @@ program_report make_program_report(const program::program& nc, const rigid_trans
     if (r.match == matchability::unreachable) unreachable_lines.insert(r.where.line);
   for (const auto& e : t.errors)
     if (!unreachable_lines.count(e.where.line)) out.other_errors.push_back(e);
-  const translation cl = reverse<From>(nc);
+  const translation cl = reverse(from, nc);
   std::vector<vec3> target_axes;
   for (const auto& b : cl.output.blocks) {
     if (!b.axes.tool_axis) continue;
@@ -189,10 +188,10 @@ program_report make_program_report(const program::program& nc, const rigid_trans
     out.has_tips = true;
     out.blocks.push_back({b.where.line, tip});
   }
-  const rotary_path<To> path = plan_rotary_path<To>(target_axes);
-  out.rotary = detail::spans_of<To>(path);
+  const rotary_path_values path = plan_rotary_path(to, target_axes);
+  out.rotary = detail::spans_of(to, path);
   out.rotary_travel_rad = path.travel_rad;
-  detail::place_slides<To>(out, path);
+  detail::place_slides(to, out, path);
   return out;
 }
 
@@ -207,13 +206,13 @@ struct chosen_setup {
 
 /// Tries `search.ranked` in order (offset: the pair's default translation, mm): the first with
 /// which the program translates and every slide stays within its travel.
-template <machine From, machine To>
-std::optional<chosen_setup> choose_setup(const program::program& nc, const setup_search_result& search,
-                                         const vec3& offset_mm, const run_inputs& target_inputs = {},
-                                         bool placed = false) {
+inline std::optional<chosen_setup> choose_setup(const machine_model& from, const machine_model& to,
+                                                const program::program& nc, const setup_search_result& search,
+                                                const vec3& offset_mm, const run_inputs& target_inputs = {},
+                                                bool placed = false) {
   chosen_setup out;
   for (const auto& c : search.ranked) {
-    program_report r = make_program_report<From, To>(nc, {c.rotation, offset_mm}, false, target_inputs, placed);
+    program_report r = make_program_report(from, to, nc, {c.rotation, offset_mm}, false, target_inputs, placed);
     if (r.unreachable.empty() && r.other_errors.empty() && !r.linear_exceeded()) {
       out.candidate = c;
       out.report = std::move(r);

@@ -74,10 +74,11 @@ struct setup_search_result {
   std::size_t refined = 0;                ///< refinements run (Ipopt)
 };
 
-/// Evaluates rotation R on the tool axes `axes` (source frame, unit, program order).
-template <machine From, machine To>
-setup_candidate evaluate_setup(const mat3& r, std::span<const vec3> axes, bool axis_aligned) {
-  const pair_geometry<From, To> g(r);
+/// Evaluates rotation R of pair `from` → `to` on the tool axes `axes` (source frame, unit,
+/// program order).
+inline setup_candidate evaluate_setup(const machine_model& from, const machine_model& to, const mat3& r,
+                                      std::span<const vec3> axes, bool axis_aligned) {
+  const pair_geometry g(from, to, r);
   setup_candidate c{r, axis_aligned};
   std::vector<vec3> target;
   for (const vec3& u : axes) {
@@ -85,7 +86,7 @@ setup_candidate evaluate_setup(const mat3& r, std::span<const vec3> axes, bool a
     if (gap > 0) ++c.unreachable, c.worst_gap_rad = std::max(c.worst_gap_rad, gap);
     target.push_back(r * u);
   }
-  if (c.feasible()) c.travel_rad = plan_rotary_path<To>(target).travel_rad;
+  if (c.feasible()) c.travel_rad = plan_rotary_path(to, target).travel_rad;
   return c;
 }
 
@@ -156,13 +157,13 @@ inline std::pair<double, double> kappa_bounds(const angle_set& band) {
   return {lo > 1e-12 ? std::cos(std::min(lo + margin, hi)) : 2.0, hi < pi - 1e-12 ? std::cos(std::max(hi - margin, lo)) : -2.0};
 }
 
-/// Step 2a from rotation `start`: the penalty alone; the refined rotation.
-template <machine To>
-mat3 refine_setup(const mat3& start, const std::vector<vec3>& distinct, const angle_set& band) {
+/// Step 2a from rotation `start` on target `to`: the penalty alone; the refined rotation.
+inline mat3 refine_setup(const machine_model& to, const mat3& start, const std::vector<vec3>& distinct,
+                         const angle_set& band) {
   const auto [kappa_hi, kappa_lo] = kappa_bounds(band);
   std::vector<vec3> ws;
   for (const vec3& u : distinct) ws.push_back(start * u);
-  const vec3 p = To::rotary[0].direction;
+  const vec3 p = to.rotary(0).direction;
   const objective f = [&](const std::vector<double>& x, std::vector<double>& g, std::vector<double>& h) {
     return band_penalty(x, ws, p, kappa_hi, kappa_lo, g, h);
   };
@@ -170,11 +171,12 @@ mat3 refine_setup(const mat3& start, const std::vector<vec3>& distinct, const an
   return m.x.empty() ? start : turn_of(m.x) * start;
 }
 
-/// Step 2b from rotation `start`: least planned travel, blocks kept in the shrunk band.
-template <machine To>
-mat3 refine_travel(const mat3& start, std::span<const vec3> axes, const angle_set& band) {
+/// Step 2b from rotation `start` on target `to`: least planned travel, blocks kept in the
+/// shrunk band.
+inline mat3 refine_travel(const machine_model& to, const mat3& start, std::span<const vec3> axes,
+                          const angle_set& band) {
   const auto [kappa_hi, kappa_lo] = kappa_bounds(band);
-  const vec3 p = To::rotary[0].direction;
+  const vec3 p = to.rotary(0).direction;
   std::vector<vec3> turned_axes(axes.size());
   auto value = [&](const std::vector<double>& x) {
     const mat3 r = turn_of(x) * start;
@@ -185,7 +187,7 @@ mat3 refine_travel(const mat3& start, std::span<const vec3> axes, const angle_se
       const double e = kappa > kappa_hi ? kappa - kappa_hi : (kappa < kappa_lo ? kappa - kappa_lo : 0.0);
       penalty += e * e;
     }
-    return plan_rotary_path<To>(turned_axes).travel_rad + 1e4 * penalty;
+    return plan_rotary_path(to, turned_axes).travel_rad + 1e4 * penalty;
   };
   const objective f = [&](const std::vector<double>& x, std::vector<double>& g, std::vector<double>&) {
     constexpr double h = 1e-6;
@@ -204,20 +206,20 @@ mat3 refine_travel(const mat3& start, std::span<const vec3> axes, const angle_se
 
 }  // namespace detail
 
-/// Searches a setup rotation for the tool axes `axes` (source frame, program order), starting
-/// with `preferred` (the pair's default or the current setup).
-template <machine From, machine To>
-setup_search_result search_setup(std::span<const vec3> axes, const mat3& preferred) {
+/// Searches a setup rotation of pair `from` → `to` for the tool axes `axes` (source frame,
+/// program order), starting with `preferred` (the pair's default or the current setup).
+inline setup_search_result search_setup(const machine_model& from, const machine_model& to, std::span<const vec3> axes,
+                                        const mat3& preferred) {
   setup_search_result out;
   auto equal = [](const mat3& a, const mat3& b) {
     return norm(a.row[0] - b.row[0]) + norm(a.row[1] - b.row[1]) + norm(a.row[2] - b.row[2]) < 1e-12;
   };
   bool preferred_aligned = false;
   for (const mat3& r : axis_aligned_rotations()) preferred_aligned = preferred_aligned || equal(r, preferred);
-  out.tried.push_back(evaluate_setup<From, To>(preferred, axes, preferred_aligned));
+  out.tried.push_back(evaluate_setup(from, to, preferred, axes, preferred_aligned));
   for (const mat3& r : axis_aligned_rotations())
-    if (!equal(r, preferred)) out.tried.push_back(evaluate_setup<From, To>(r, axes, true));
-  const pair_geometry<From, To> g;
+    if (!equal(r, preferred)) out.tried.push_back(evaluate_setup(from, to, r, axes, true));
+  const pair_geometry g(from, to);
   if (g.band_target && !g.target_band.empty()) {
     auto indices = [&](auto&& better) {
       std::vector<std::size_t> order(out.tried.size());
@@ -231,14 +233,16 @@ setup_search_result search_setup(std::span<const vec3> axes, const mat3& preferr
     if (!any_feasible) {  // 2a
       const std::vector<vec3> distinct = detail::distinct_axes(axes);
       for (std::size_t i : indices([&](std::size_t a, std::size_t b) { return badness(a) < badness(b); })) {
-        out.tried.push_back(evaluate_setup<From, To>(detail::refine_setup<To>(out.tried[i].rotation, distinct, g.target_band), axes, false));
+        const mat3 refined = detail::refine_setup(to, out.tried[i].rotation, distinct, g.target_band);
+        out.tried.push_back(evaluate_setup(from, to, refined, axes, false));
         ++out.refined;
       }
     }
     auto travel = [&](std::size_t i) { return out.tried[i].feasible() ? out.tried[i].travel_rad : 1e300; };
     for (std::size_t i : indices([&](std::size_t a, std::size_t b) { return travel(a) < travel(b); })) {  // 2b
       if (!out.tried[i].feasible()) continue;
-      out.tried.push_back(evaluate_setup<From, To>(detail::refine_travel<To>(out.tried[i].rotation, axes, g.target_band), axes, false));
+      const mat3 refined = detail::refine_travel(to, out.tried[i].rotation, axes, g.target_band);
+      out.tried.push_back(evaluate_setup(from, to, refined, axes, false));
       ++out.refined;
     }
   }

@@ -101,8 +101,7 @@ struct sphere_raster {
 };
 
 /// Classifies the centre of every cell of both discs.
-template <machine From, machine To>
-sphere_raster rasterize(const pair_geometry<From, To>& g, int cells_across = 90) {
+inline sphere_raster rasterize(const pair_geometry& g, int cells_across = 90) {
   sphere_raster out;
   out.cells_across = cells_across;
   const double span = 2.0 * std::sqrt(2.0), cell = span / cells_across;
@@ -182,8 +181,7 @@ struct map_marker {
 /// The boundary curves of a pair, where they have a closed form: the target's band edges about
 /// Rᵀ p_d, and, about p_s, where the source's branches meet and where its carried axis ends its
 /// travel. A one-rotary source holds a single circle, drawn coloured by class.
-template <machine From, machine To>
-std::vector<map_curve> boundary_curves(const pair_geometry<From, To>& g) {
+inline std::vector<map_curve> boundary_curves(const pair_geometry& g) {
   std::vector<map_curve> out;
   auto plain = [](const vec3&) { return map_colour::outside; };
   auto interior = [](double th) { return th > 1e-9 && th < pi - 1e-9; };
@@ -191,17 +189,18 @@ std::vector<map_curve> boundary_curves(const pair_geometry<From, To>& g) {
     for (double edge : g.target_band.edges())
       if (interior(edge)) out.push_back(circle_on_map(g.target_axis_in_source, edge, curve_style::target_edge, plain));
   if (!g.band_source) return out;
-  const vec3 p = From::rotary[0].direction;
-  if constexpr (rotary_count<From> == 1) {
-    const double theta = angle_between(p, From::tool_reference).value;
+  const machine_model& from = g.from();
+  const vec3 p = from.rotary(0).direction;
+  if (from.rotary_count == 1) {
+    const double theta = angle_between(p, from.tool_reference()).value;
     out.push_back(circle_on_map(p, theta, curve_style::source_circle, [&](const vec3& u) {
       radians gap{};
       const orientation_class c = g.classify_orientation(u, &gap);
       return colour_of(c == orientation_class::not_on_source ? orientation_class::direct : c, gap);
     }));
   } else {
-    const latitude_curve own = carried_curve<From>(p);
-    const rotary_axis& q = From::rotary[1];
+    const latitude_curve own = carried_curve(from, p);
+    const rotary_axis& q = from.rotary(1);
     const commanded_range r = range_of(q);
     auto latitude = [&](double psi) { return math::acos(math::clamp(own.kappa({psi}), -1.0, 1.0)); };
     for (double meet : {own.delta.value, own.delta.value + pi}) {
@@ -219,11 +218,10 @@ std::vector<map_curve> boundary_curves(const pair_geometry<From, To>& g) {
 }
 
 /// The poles to mark: ±p_s where the source holds them, ±Rᵀ p_d where the target reaches them.
-template <machine From, machine To>
-std::vector<map_marker> pole_markers(const pair_geometry<From, To>& g) {
+inline std::vector<map_marker> pole_markers(const pair_geometry& g) {
   std::vector<map_marker> out;
-  if constexpr (rotary_count<From> == 2) {
-    const vec3 p = From::rotary[0].direction;
+  if (g.from().rotary_count == 2) {
+    const vec3 p = g.from().rotary(0).direction;
     for (const vec3& u : {p, -1.0 * p})
       if (g.source_branches(u) != 0) out.push_back({true, u});
   }

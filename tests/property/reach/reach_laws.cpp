@@ -111,7 +111,7 @@ TEST_CASE("With both axes bounded (ac-head) the closed-form gap is an upper boun
 }
 
 TEST_CASE("SAJO 12000P to DMU 80P: the regions of Tian et al. 2010 section 1.1, both ways", "[reach][match]") {
-  const auto t = reach::make_pair_table<sajo_12000p, dmu_80p>(default_setup<sajo_12000p, dmu_80p>(), true);
+  const auto t = reach::make_pair_table(sajo_12000p::model, dmu_80p::model, default_setup<sajo_12000p, dmu_80p>(), true);
   REQUIRE(t.rows_independent);  // T Y_s = Z_d: the regions do not depend on B
   const auto& regions = t.rows.front().regions;
   REQUIRE(regions.size() == 3);
@@ -139,7 +139,7 @@ TEST_CASE("SAJO 12000P to DMU 80P: the regions of Tian et al. 2010 section 1.1, 
 }
 
 TEST_CASE("Per-block gap of SAJO poses on the DMU 80P: closed form = A = Ipopt above 0", "[reach][match]") {
-  const reach::pair_geometry<sajo_12000p, dmu_80p> g(default_setup<sajo_12000p, dmu_80p>().rotation);
+  const reach::pair_geometry g(sajo_12000p::model, dmu_80p::model, default_setup<sajo_12000p, dmu_80p>().rotation);
   for (double b_s : {-170.0, 0.0, 77.0}) {
     const reach::pose_row row = reach::row_regions(g, deg(b_s));
     for (double a_s : {0.5, 5.0, 17.0, 30.0}) {

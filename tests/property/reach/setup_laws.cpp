@@ -66,7 +66,7 @@ TEST_CASE("A setup found for tool axes the default setup cannot take reaches the
       const double radius = deg(85.0) * unit(random);
       axes.push_back(std::cos(radius) * d + std::sin(radius) * test::perpendicular(d, 2.0 * pi * unit(random)));
     }
-    const auto found = reach::search_setup<sajo_12000p, dmu_80p>(axes, default_setup<sajo_12000p, dmu_80p>().rotation);
+    const auto found = reach::search_setup(sajo_12000p::model, dmu_80p::model, axes, default_setup<sajo_12000p, dmu_80p>().rotation);
     INFO("program " << k << ", " << n << " axes");
     REQUIRE(found.best.has_value());
     CHECK(all_reachable<dmu_80p>(found.best->rotation, axes));
@@ -85,7 +85,7 @@ TEST_CASE("Only the continuous refinement finds a setup no axis-aligned rotation
   // Twelve axes 80° around (1, 1, 1)/√3: every coordinate axis is 134.7° from some of them, so
   // no axis-aligned rotation puts them in the DMU 80P's upper hemisphere; d itself does.
   const std::vector<vec3> axes = circle(normalized(vec3{1, 1, 1}), deg(80.0), 12);
-  const auto found = reach::search_setup<sajo_12000p, dmu_80p>(axes, default_setup<sajo_12000p, dmu_80p>().rotation);
+  const auto found = reach::search_setup(sajo_12000p::model, dmu_80p::model, axes, default_setup<sajo_12000p, dmu_80p>().rotation);
   for (const auto& c : found.tried)
     if (c.axis_aligned) CHECK_FALSE(all_reachable<dmu_80p>(c.rotation, axes));
   REQUIRE(found.best.has_value());
@@ -93,7 +93,7 @@ TEST_CASE("Only the continuous refinement finds a setup no axis-aligned rotation
   CHECK(all_reachable<dmu_80p>(found.best->rotation, axes));
   // ±X, ±Y, ±Z fit in no hemisphere: nothing is found, and the closest is named.
   const std::vector<vec3> wide{unit_x, -1.0 * unit_x, unit_y, -1.0 * unit_y, unit_z, -1.0 * unit_z};
-  const auto none = reach::search_setup<sajo_12000p, dmu_80p>(wide, mat3::identity());
+  const auto none = reach::search_setup(sajo_12000p::model, dmu_80p::model, wide, mat3::identity());
   CHECK_FALSE(none.best.has_value());
   CHECK(none.closest.unreachable > 0);
 }
@@ -122,7 +122,7 @@ TEST_CASE("Program report: classes, unreachable runs with their gap, planned tra
       "N60 G1 X3 A-30\nN70 G1 X4 A-100\nN80 G1 X5 A20\nN90 TRAFOOF\nN100 M30\n";
   const auto in = program::read(program::dialect::siemens, text, "wall.mpf");
   REQUIRE(in.ok());
-  const auto r = reach::make_program_report<sajo_12000p, dmu_80p>(in.parsed, default_setup<sajo_12000p, dmu_80p>(), true);
+  const auto r = reach::make_program_report(sajo_12000p::model, dmu_80p::model, in.parsed, default_setup<sajo_12000p, dmu_80p>(), true);
   CHECK(r.per_class == std::array<std::size_t, 3>{2, 1, 3});
   REQUIRE(r.unreachable.size() == 2);
   CHECK((r.unreachable[0].first_line == 4 && r.unreachable[0].last_line == 5 && r.unreachable[0].blocks == 2));
@@ -151,7 +151,7 @@ TEST_CASE("Program report: the slides of each reachable block put the tool back 
   const rigid_transform setup = default_setup<sajo_12000p, dmu_80p>();
   run_inputs inputs{.tool_length_mm = 120.0};
   inputs.work_offset.translation_mm = {30.0, -30.0, -200.0};
-  const auto r = reach::make_program_report<sajo_12000p, dmu_80p>(in.parsed, setup, true, inputs, true);
+  const auto r = reach::make_program_report(sajo_12000p::model, dmu_80p::model, in.parsed, setup, true, inputs, true);
   REQUIRE(r.blocks.size() == 6);
   REQUIRE(r.linear.size() == 3);
   std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
@@ -178,10 +178,10 @@ TEST_CASE("Program report: the slides of each reachable block put the tool back 
   }
   // The DMU 80P's Z travel is [-600, 0] mm: a workpiece frame 2 m up puts every block out of it.
   inputs.work_offset.translation_mm = {0.0, 0.0, 2000.0};
-  const auto high = reach::make_program_report<sajo_12000p, dmu_80p>(in.parsed, setup, true, inputs, true);
+  const auto high = reach::make_program_report(sajo_12000p::model, dmu_80p::model, in.parsed, setup, true, inputs, true);
   CHECK(high.linear_exceeded());
   CHECK(high.linear[2].lo_mm == Approx(r.linear[2].lo_mm + 2200.0));  // the slides follow the offset
   // Not placed, only the strokes count, and these few millimetres fit.
-  const auto loose = reach::make_program_report<sajo_12000p, dmu_80p>(in.parsed, setup, true, inputs, false);
+  const auto loose = reach::make_program_report(sajo_12000p::model, dmu_80p::model, in.parsed, setup, true, inputs, false);
   CHECK(!loose.linear_exceeded());
 }
