@@ -42,6 +42,9 @@ TEST_CASE("heidenhain: spellings read as their plain equivalent and written plai
       {"L X+1 FMAX\n* - NOTE~~\n", "L X+1 FMAX\n* - NOTE\n"},  // no `~` kept at a comment's end
       {"L X+1 FMAX\n* - NOTE ~ ~\n", "L X+1 FMAX\n* - NOTE\n"},
       {"L~\n\nL X+1 FMAX\n", "L\n\nL X+1 FMAX\n"},  // a move without coordinates, kept as a comment
+      // two comments in one block, joined: the `*` text ends in `~` where the `;` comment began
+      {"*~;x~\n", "*x\n"},
+      {"L X+1 FMAX\n* a~ ;b~\n\n", "L X+1 FMAX\n*b  a\n"},
   };
   for (const row& r : rows) {
     INFO(r.spelled);
@@ -52,6 +55,16 @@ TEST_CASE("heidenhain: spellings read as their plain equivalent and written plai
     same_blocks(spelled.parsed.blocks, plain.parsed.blocks);
     CHECK(heidenhain::write(spelled.parsed) == heidenhain::write(plain.parsed));
   }
+}
+
+TEST_CASE("heidenhain: a block whose number follows a `~` line is written as one block") {
+  // Written with the old number's line after the new number's `0 ~`, `14` read as a keyword.
+  const read_result r = heidenhain::read("  ~\n14 Q1=2\n", "t.h");
+  REQUIRE(r.errors.empty());
+  const std::string written = heidenhain::write(r.parsed);
+  INFO(written);
+  CHECK(errors_of(written).empty());
+  CHECK(written.find("14") == std::string::npos);
 }
 
 TEST_CASE("heidenhain: cycle parameters after `;comment~` stay in their cycle's block") {

@@ -52,6 +52,20 @@ struct block_text {
   }
 };
 
+/// Where the text of a comment ends, from `begin` on, once the `~`s it ends in and the blanks
+/// around them are cut (`text.size()` when it does not end in `~`). The rule for every comment
+/// read or written: none ends in `~`, which at the end of a line continues the block onto the
+/// next one.
+inline std::size_t end_without_continuation(std::string_view text, std::size_t begin = 0) {
+  std::size_t end = text.size();
+  for (bool cut = false;;) {
+    std::size_t e = end;
+    while (e > begin && is_space(text[e - 1])) --e;
+    if (e == begin || text[e - 1] != '~') return cut ? e : end;
+    end = e - 1, cut = true;
+  }
+}
+
 namespace detail {
 
 inline bool is_axis_letter(char c) { return c == 'X' || c == 'Y' || c == 'Z' || c == 'A' || c == 'B' || c == 'C'; }
@@ -75,24 +89,14 @@ inline std::size_t join_block(const std::vector<text_line>& lines, std::size_t l
     if (li != first) out.raw += '\n';
     out.raw += t;
     out.lines.add(out.content.size(), lines[li].number, 1);
+    // The continuing `~` is cut, and so are the `~`s (and blanks) before it (`;NOTE~~`,
+    // `* - NOTE ~ ~`): a comment never ends in `~` (end_without_continuation).
     if (continued && semicolon < end - 1) {  // `Q200=3 ;SET-UP CLEARANCE~`: the comment ends at the `~`
-      // A comment that itself ends in `~` would read as a continuation once written back at the
-      // end of a line: the `~`s (and the blanks before them) are not kept as its text.
-      std::size_t comment_end = end - 1;
-      for (;;) {
-        std::size_t k = comment_end;
-        while (k > semicolon + 1 && is_space(t[k - 1])) --k;
-        if (k <= semicolon + 1 || t[k - 1] != '~') break;
-        comment_end = k - 1;
-      }
+      const std::size_t comment_end = end_without_continuation(t.substr(0, end), semicolon + 1);
       out.inner_comments.emplace_back(t.substr(semicolon + 1, comment_end - semicolon - 1));
       out.content += t.substr(0, semicolon);
     } else if (continued) {
-      // `* - NOTE~~`: the `~`s (and blanks) before the continuing one are not kept either, or a
-      // comment ending in `~` would read as a continuation once written back.
-      std::size_t content_end = end - 1;
-      while (content_end > 0 && (t[content_end - 1] == '~' || is_space(t[content_end - 1]))) --content_end;
-      out.content += t.substr(0, content_end);
+      out.content += t.substr(0, end_without_continuation(t.substr(0, end)));
     } else {
       out.content += t;
     }

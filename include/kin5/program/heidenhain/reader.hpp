@@ -49,6 +49,7 @@ class block_reader : public word_checks {
     cycle_call_m();
     for (auto c = t_.inner_comments.rbegin(); c != t_.inner_comments.rend(); ++c)  // comments before `~`
       if (!b_.passthrough) b_.comment = *c + (b_.comment ? " " + *b_.comment : std::string());
+    if (b_.comment) b_.comment->resize(end_without_continuation(*b_.comment));  // `*~;x~` is `x`, not `x ~`
     if (!b_.passthrough) {
       for (std::size_t k : stray_) stray_error(k);
       if (b_.axes.x_mm) state_.last[0] = b_.axes.x_mm;

@@ -23,6 +23,7 @@
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
+#include "lexer.hpp"
 
 namespace kin5::program::heidenhain {
 
@@ -130,22 +131,22 @@ class writer {
   /// `text` as the end of a line after `;`: without the `~`s it ends in (and the blanks around
   /// them), which would read as a continuation of the block onto the next line.
   static std::string without_continuation(std::string text) {
-    for (bool cut = false;;) {
-      std::size_t end = text.size();
-      while (end > 0 && is_space(text[end - 1])) --end;
-      if (end == 0 || text[end - 1] != '~') {
-        if (cut) text.resize(end);
-        return text;
-      }
-      text.resize(end - 1), cut = true;
-    }
+    text.resize(end_without_continuation(text));
+    return text;
   }
 
   /// A passthrough block: its text (same dialect, without its block number) or a comment.
   void passthrough(std::string& out, const block& b) {
     std::string body = b.text;
     if (same_) {
-      std::size_t k = lexing::skip_blanks(body, 0);
+      // Lines of blanks and `~` before the block number (`  ~\n14 Q1=2`) are dropped with it:
+      // kept, they would continue the new number's line onto the old number.
+      std::size_t k = 0;
+      for (std::size_t e = 0;; k = ++e) {
+        while (e < body.size() && (is_space(body[e]) || body[e] == '~')) ++e;
+        if (e >= body.size() || body[e] != '\n') break;
+      }
+      k = lexing::skip_blanks(body, k);
       std::size_t d = k;
       while (d < body.size() && is_digit(body[d])) ++d;
       if (d > k) k = lexing::skip_blanks(body, d);
