@@ -117,6 +117,44 @@ inline void append_number(std::string& out, double value, int decimals, bool plu
   out.append(begin, static_cast<std::size_t>(end - begin));
 }
 
+namespace detail {
+
+/// `rate_decimals`' choice for `value`, and whether those decimals write it within 0.5 %.
+struct rate_choice {
+  int decimals = 0;
+  bool within = true;
+};
+
+inline rate_choice choose_rate_decimals(double value, int decimals, int finest) {
+  decimals = std::clamp(decimals, 0, 12);
+  const double m = std::abs(value);
+  if (!(m > 0.0) || !writable(value)) return {decimals, true};
+  const int three_digits = 2 - static_cast<int>(std::floor(std::log10(m)));
+  if (three_digits <= decimals) return {decimals, true};
+  const int d = std::max(decimals, std::min(three_digits, std::clamp(finest, 0, 12)));
+  const double scale = std::pow(10.0, d);
+  return {d, std::abs(std::round(m * scale) / scale - m) <= 0.005 * m};
+}
+
+/// `value` as short as it reads back: fixed from 1e-4 to 1e9 (`0.0004`), else with an exponent.
+inline std::string shortest(double value) {
+  char text[48];
+  const double m = std::abs(value);
+  const bool fixed = m == 0.0 || (m >= 1e-4 && m <= max_magnitude);  // at most 4 + 17 digits: fits 48
+  const auto shown = fixed ? std::to_chars(text, text + sizeof text, value, std::chars_format::fixed)
+                           : std::to_chars(text, text + sizeof text, value);  // shortest form: fits 48
+  return std::string(text, shown.ptr);
+}
+
+inline std::string rate_refusal(double value, int d, std::string_view what) {
+  const double scale = std::pow(10.0, d);
+  return "the " + std::string(what) + " " + shortest(value) + " cannot be written with " + std::to_string(d) +
+         " decimals, the most the controller reads (it would read as " +
+         (std::round(std::abs(value) * scale) == 0.0 ? std::string("0") : std::string("another value")) + ")";
+}
+
+}  // namespace detail
+
 /// Decimals to write a feed or spindle speed `value` (F, S) with: at least `decimals`, and as
 /// many more as keep three significant digits, up to `finest` (the controller's input
 /// resolution), so that a rate is written within 0.5 % — an inverse-time F of 0.02 (1000 mm at
@@ -124,22 +162,22 @@ inline void append_number(std::string& out, double value, int decimals, bool plu
 /// decimals cannot write within 0.5 % (it would read as 0, or as another rate); what is not
 /// `writable` is left to `append_number` to refuse.
 inline int rate_decimals(double value, int decimals, int finest, std::string_view what = "feed") {
-  decimals = std::clamp(decimals, 0, 12);
-  const double m = std::abs(value);
-  if (!(m > 0.0) || !writable(value)) return decimals;
-  const int three_digits = 2 - static_cast<int>(std::floor(std::log10(m)));
-  if (three_digits <= decimals) return decimals;
-  const int d = std::max(decimals, std::min(three_digits, std::clamp(finest, 0, 12)));
-  const double scale = std::pow(10.0, d);
-  if (std::abs(std::round(m * scale) / scale - m) > 0.005 * m) {
-    char text[32];
-    const auto shown = std::to_chars(text, text + sizeof text, value);  // shortest form: fits 32
-    throw number_out_of_range("the " + std::string(what) + " " + std::string(text, shown.ptr) +
-                              " cannot be written with " + std::to_string(d) +
-                              " decimals, the most the controller reads (it would read as " +
-                              (std::round(m * scale) == 0.0 ? std::string("0") : std::string("another value")) + ")");
-  }
-  return d;
+  const detail::rate_choice c = detail::choose_rate_decimals(value, decimals, finest);
+  if (!c.within) throw number_out_of_range(detail::rate_refusal(value, c.decimals, what));
+  return c.decimals;
+}
+
+/// Why a writer with at most `finest` decimals would refuse the feed or spindle speed `value`
+/// (in the unit it writes it in): not `writable`, or not within 0.5 % (`rate_decimals`); nothing
+/// when it writes it. Readers refuse such a rate at its word, so that what a dialect's reader
+/// accepts its writer writes back: `S.0101` is not read where the controller reads 3 decimals.
+inline std::optional<std::string> unwritable_rate(double value, int finest, std::string_view what = "feed") {
+  if (!writable(value))
+    return "the " + std::string(what) + " " + detail::shortest(value) +
+           " cannot be written in an NC program (finite, magnitude at most 1e9)";
+  const detail::rate_choice c = detail::choose_rate_decimals(value, 0, finest);
+  if (c.within) return std::nullopt;
+  return detail::rate_refusal(value, c.decimals, what);
 }
 
 /// `value` in fixed notation with at most `decimals` decimals, trailing zeros and a trailing

@@ -217,6 +217,10 @@ class statement_reader {
     double f = 0;
     if (!value) return error(c_.major_at, "FEDRAT needs a feed value");
     if (!number(*value, f)) return;
+    // refused if the writer could not write it back, in the unit it writes (the program's)
+    const double written = mode == feed_unit::inverse_time ? f : f * unit_mm / (inch_ ? mm_per_inch : 1.0);
+    if (auto why = unwritable_rate(written, finest_rate_decimals + (inch_ ? 1 : 0)))
+      return error(value->offset, *why);
     b.feed = f * unit_mm;
     b.feed_mode = mode;
   }
@@ -241,6 +245,7 @@ class statement_reader {
     if (value) {
       double s = 0;
       if (!number(*value, s)) return;
+      if (auto why = unwritable_rate(s, finest_rate_decimals, "spindle speed")) return error(value->offset, *why);
       b.spindle_rpm = s;
     }
     if (direction) b.m_codes.push_back(direction);

@@ -17,6 +17,11 @@
 
 namespace kin5::program::apt::detail {
 
+/// The most decimals of a FEDRAT or SPINDL value written (CL data has no controller to limit
+/// them; one more for a feed in inches): the writer's finest, and the reader refuses a rate
+/// these cannot write back (`unwritable_rate`).
+inline constexpr int finest_rate_decimals = 6;
+
 /// Whether statement `major`/`tail` only describes the program (tool, post, display, data
 /// format) and changes no motion: `MULTAX` (the GOTOs' value count says whether a tool axis
 /// follows), `CUTTER` and `TLDATA` (the tool's shape; CL points are already tool-tip points),

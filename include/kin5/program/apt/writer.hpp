@@ -16,6 +16,7 @@
 #include "../block.hpp"
 #include "../number.hpp"
 #include "../units.hpp"
+#include "vocabulary.hpp"
 
 namespace kin5::program::apt {
 
@@ -24,7 +25,7 @@ struct write_options {
   int linear_decimals = 3;   ///< GOTO x, y, z (mm)
   int angle_decimals = 3;    ///< unused: APT has no angle words
   int feed_decimals = 1;     ///< FEDRAT and SPINDL values
-  int finest_feed_decimals = 6;  ///< more decimals for a small F or S, up to these (rate_decimals)
+  int finest_feed_decimals = detail::finest_rate_decimals;  ///< more decimals for a small F or S, up to these (rate_decimals)
   int vector_decimals = 7;   ///< GOTO i, j, k
 };
 

@@ -68,6 +68,11 @@ inline std::size_t end_without_continuation(std::string_view text, std::size_t b
 
 namespace detail {
 
+/// The most decimals of a feed or spindle speed (F, S) the TNC reads (TNC 640 User's Manual
+/// DIN/ISO 1/2015, §19.3 p. 631): the writer's finest, and the reader refuses a rate these
+/// cannot write back (`unwritable_rate`).
+inline constexpr int finest_rate_decimals = 3;
+
 inline bool is_axis_letter(char c) { return c == 'X' || c == 'Y' || c == 'Z' || c == 'A' || c == 'B' || c == 'C'; }
 
 inline bool starts_number(std::string_view s, std::size_t i) {

@@ -57,6 +57,17 @@ class word_checks {
     return false;
   }
 
+  /// A feed or spindle speed the writer could write back (`unwritable_rate`: `S.0101` needs a
+  /// fourth decimal); false, reported, if not.
+  bool rate_ok(word& w, std::string_view what) {
+    if (!value_ok(w)) return false;
+    const auto why = unwritable_rate(*w.value, finest_rate_decimals, what);
+    if (!why) return true;
+    error(w.pos, *why);
+    w.bad = true;
+    return false;
+  }
+
   /// A whole number that is not negative (a tool or M number) into `n`; false, reported, if not.
   bool integer_word(word& w, long long& n) {
     if (!value_ok(w)) return false;
@@ -166,7 +177,7 @@ class motion_reader : public word_checks {
       direction_ = w.sign;
     } else if (key == "F") {
       if (b_.feed) error(w.pos, "word 'F' given twice");
-      else if (value_ok(w)) b_.feed = *w.value;
+      else if (rate_ok(w, "feed")) b_.feed = *w.value;
     } else if (key == "FMAX" && bare) {
       b_.feed_rapid = true;
       b_.motion = arc_ ? b_.motion : motion_kind::rapid;

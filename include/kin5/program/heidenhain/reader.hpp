@@ -187,9 +187,9 @@ class block_reader : public word_checks {
                  !w.expression && w.error == number_error::none) {
         t.kept_words.push_back(w.key);
       } else if (w.key == "S" && w.value && !t.spindle_rpm) {
-        t.spindle_rpm = *w.value;
+        if (rate_ok(w, "spindle speed")) t.spindle_rpm = *w.value;
       } else if (w.key == "F" && w.value && !t.feed) {
-        t.feed = *w.value;
+        if (rate_ok(w, "feed")) t.feed = *w.value;
       } else if ((w.key == "DL" || w.key == "DR" || w.key == "DR2") && w.value) {
         if (*w.value != 0 && !oversize) oversize = &w;
         t.kept_words.push_back(w.written);

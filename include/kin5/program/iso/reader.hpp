@@ -149,6 +149,7 @@ class reader {
       if (b.axes.y_mm) state_.last[1] = b.axes.y_mm;
       if (b.axes.z_mm) state_.last[2] = b.axes.z_mm;
     }
+    rates();
     if (state_.inch) inches_to_mm(b, !state_.inverse_time);
     state_.moved = state_.moved || b.moves();
     // The order the writer uses: G codes first, then the others (H, D, P, Q), each as written.
@@ -158,6 +159,17 @@ class reader {
     // Not understood: refused, moving or not (a word kin5 does not read may change the motion).
     error(l.unknown->column, "unknown word '" + std::string(l.unknown->text) + "'");
     state_ = saved;
+  }
+
+  /// F and S words the writer could not write back, refused at the word (`unwritable_rate`):
+  /// `S.0101` needs a fourth decimal. An inch feed per minute is written with one more.
+  void rates() {
+    const int inch = state_.inch && !state_.inverse_time ? 1 : 0;
+    for (const word& w : words_)
+      if (w.letter == 'F' || w.letter == 'S')
+        if (auto why = unwritable_rate(w.value, detail::finest_rate_decimals + (w.letter == 'F' ? inch : 0),
+                                       w.letter == 'F' ? "feed" : "spindle speed"))
+          error(w.column, *why);
   }
 
   /// The meaning of one word.

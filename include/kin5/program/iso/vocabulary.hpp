@@ -7,6 +7,11 @@
 
 namespace kin5::program::iso::detail {
 
+/// The most decimals of a feed or spindle speed (F, S) the controller reads (input setting unit
+/// IS-C, Mitsubishi M700V Programming Manual §2.1; one more for an inch feed per minute): the
+/// writer's finest, and the reader refuses a rate these cannot write back (`unwritable_rate`).
+inline constexpr int finest_rate_decimals = 3;
+
 /// G code as ten times its value (G43.4 → 434), or -1 if not a multiple of 0.1.
 inline int g_code(double v) {
   const double t = std::round(v * 10);

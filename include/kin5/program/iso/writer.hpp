@@ -29,7 +29,7 @@ struct write_options {
   int linear_decimals = 3;   ///< X Y Z, arc I J K, R (mm)
   int angle_decimals = 3;    ///< A B C (degrees)
   int feed_decimals = 1;     ///< F (mm/min or 1/min) and S (1/min)
-  int finest_feed_decimals = 3;  ///< more decimals for a small F or S, up to these (rate_decimals)
+  int finest_feed_decimals = detail::finest_rate_decimals;  ///< more decimals for a small F or S, up to these (rate_decimals)
   int vector_decimals = 7;   ///< tool-axis I J K under G43.5
 };
 

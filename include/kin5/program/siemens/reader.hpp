@@ -173,7 +173,7 @@ struct plain_motion {
       case 'A': return set(axes.a_deg);
       case 'B': return set(axes.b_deg);
       case 'C': return set(axes.c_deg);
-      case 'F': return v >= 0 && set(feed);
+      case 'F': return v >= 0 && !unwritable_rate(v, finest_rate_decimals) && set(feed);  // else reported by the full reader
       default: return false;
     }
   }

@@ -16,6 +16,11 @@
 
 namespace kin5::program::siemens::detail {
 
+/// The most decimals of a feed or spindle speed (F, S) the controller reads (840Di Manual (HBI)
+/// 06/2003 §10.3.1): the writer's finest, and the reader refuses a rate these cannot write back
+/// (`unwritable_rate`).
+inline constexpr int finest_rate_decimals = 3;
+
 constexpr bool is_ident_char(char c) { return is_letter(c) || is_digit(c) || c == '_'; }
 constexpr bool is_axis_letter(char c) { return c == 'X' || c == 'Y' || c == 'Z' || c == 'A' || c == 'B' || c == 'C'; }
 constexpr bool is_centre_letter(char c) { return c == 'I' || c == 'J' || c == 'K'; }

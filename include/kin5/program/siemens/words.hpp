@@ -251,6 +251,9 @@ class word_reader {
     if (v < 0) return error(start, "value out of range");
     auto& field = letter == 'F' ? out_.b.feed : out_.b.spindle_rpm;
     if (duplicate(field.has_value(), start, std::string(1, letter))) return;
+    // what the writer could not write back (`S.0101` needs a fourth decimal) is refused here
+    if (auto why = unwritable_rate(v, finest_rate_decimals, letter == 'F' ? "feed" : "spindle speed"))
+      return error(start, *why);
     field = v;
   }
 

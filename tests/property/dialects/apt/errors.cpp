@@ -17,6 +17,10 @@ std::vector<kin5::test::bad_input> kin5::test::contract<apt::dialect>::bad_input
   };
   const std::vector<bad> cases{
       {"GOTO/1,2\n", "t.cls:1:1: error: GOTO needs 3 or 6 values"},
+      // a rate the writer cannot write back with its 6 decimals (7 for a feed in inches)
+      {"SPINDL/0.0000004,CLW\n", "t.cls:1:8: error: the spindle speed 4e-07 cannot be written with 6 decimals, the most the controller reads (it would read as 0)"},
+      {"FEDRAT/MMPM,0.0000101\n", "t.cls:1:13: error: the feed 1.01e-05 cannot be written with 6 decimals, the most the controller reads (it would read as another value)"},
+      {"UNITS/INCHES\nFEDRAT/0.00000004\n", "t.cls:2:8: error: the feed 4e-08 cannot be written with 7 decimals, the most the controller reads (it would read as 0)"},
       {"GOTO/1,2,3,4\n", "t.cls:1:1: error: GOTO needs 3 or 6 values"},
       {"GOTO\n", "t.cls:1:1: error: GOTO needs 3 or 6 values"},
       {"  goto/1,2,3,0,0\n", "t.cls:1:3: error: GOTO needs 3 or 6 values"},

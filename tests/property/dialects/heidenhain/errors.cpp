@@ -27,6 +27,9 @@ std::vector<kin5::test::bad_input> kin5::test::contract<heidenhain::dialect>::ba
   };
   const std::vector<bad> cases{
       {"L X+1 Y\n", "t.h:1:7: error: word 'Y' has no value"},
+      // a rate the writer cannot write back with the TNC's 3 decimals
+      {"L X+1 F0.0004\n", "t.h:1:7: error: the feed 0.0004 cannot be written with 3 decimals, the most the controller reads (it would read as 0)"},
+      {"TOOL CALL 1 Z S0.0101\n", "t.h:1:15: error: the spindle speed 0.0101 cannot be written with 3 decimals, the most the controller reads (it would read as another value)"},
       {"5 L X+1 F\n", "t.h:1:9: error: word 'F' has no value"},
       {"L X+1 +5\n", "t.h:1:7: error: number without an address letter"},
       {"L X+1.2.3\n", "t.h:1:3: error: malformed number '+1.2.3'"},

@@ -17,6 +17,10 @@ std::vector<kin5::test::bad_input> kin5::test::contract<iso::dialect>::bad_input
   };
   const std::vector<bad> cases{
       {"G1 X\n", "t.nc:1:4: error: word 'X' has no value"},
+      // a rate the writer cannot write back with the controller's 3 decimals (4 for an inch feed)
+      {"S.0101\n", "t.nc:1:1: error: the spindle speed 0.0101 cannot be written with 3 decimals, the most the controller reads (it would read as another value)"},
+      {"G1 X1. F.0004\n", "t.nc:1:8: error: the feed 0.0004 cannot be written with 3 decimals, the most the controller reads (it would read as 0)"},
+      {"G20\nG1 X1. F.00004\n", "t.nc:2:8: error: the feed 4e-05 cannot be written with 4 decimals, the most the controller reads (it would read as 0)"},
       {"G1 X- 5\n", "t.nc:1:4: error: word 'X' has no value"},
       {"G1 10\n", "t.nc:1:4: error: number with no address letter"},
       {"G1 X2000000000\n", "t.nc:1:4: error: value out of range"},

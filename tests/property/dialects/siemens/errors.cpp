@@ -21,6 +21,9 @@ const std::string expr = "expressions and parameters in axis words are not suppo
 const std::vector<kin5::test::bad_input> cases = {
     // letters without numbers, numbers without letters, truncated words
     {"G1 X", {"bad.mpf:1:4: error: word 'X' has no value"}},
+    // a rate the writer cannot write back with the controller's 3 decimals
+    {"G1 X1 F100 S.0101", {"bad.mpf:1:12: error: the spindle speed 0.0101 cannot be written with 3 decimals, the most the controller reads (it would read as another value)"}},
+    {"G1 X1 F.0004", {"bad.mpf:1:7: error: the feed 0.0004 cannot be written with 3 decimals, the most the controller reads (it would read as 0)"}},
     {"G1 X10 Y", {"bad.mpf:1:8: error: word 'Y' has no value"}},
     {"G1 X=10 Y=", {"bad.mpf:1:9: error: word 'Y' has no value"}},
     {"G1 X-", {"bad.mpf:1:4: error: word 'X' has no value"}},
