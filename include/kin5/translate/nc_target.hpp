@@ -359,19 +359,22 @@ class nc_target {
     for (std::size_t i = 1; i < to_.rotary_count; ++i)
       if (math::abs(to[i].value - from[i].value) > math::abs(to[axis].value - from[axis].value)) axis = i;
     const radians turn{math::abs(to[axis].value - from[axis].value)};
-    const std::string turned = std::string(1, to_char(to_.rotary(axis).letter)) + " turns by " +
-                               fixed(to_degrees(turn).value, 3) + "°";
+    // The text and the tool axes only when a warning is written: most blocks have none.
+    const auto turned = [&] {
+      return std::string(1, to_char(to_.rotary(axis).letter)) + " turns by " + fixed(to_degrees(turn).value, 3) + "°";
+    };
     if (!path_.pole[j] && before >= 0 && before != path_.branch[j]) {
       const bool avoidable = (path_.branches[*previous_motion_] & path_.branches[j]) != 0;
       out.warnings.push_back(at(b, std::string(avoidable ? "solution branch switch (least total rotary travel)"
                                                          : "unavoidable solution branch switch") +
                                        " from branch " + std::to_string(before) + " to " +
-                                       std::to_string(path_.branch[j]) + " on " + std::string(to_.geometry.id) + ": " + turned));
+                                       std::to_string(path_.branch[j]) + " on " + std::string(to_.geometry.id) + ": " + turned()));
       return;
     }
+    if (turn.value < sudden_turn.value) return;
     const radians axis_turn = angle_between(tool_axis(to_, from), tool_axis(to_, to));
-    if (turn.value >= sudden_turn.value && turn.value > 2.0 * axis_turn.value)
-      out.warnings.push_back(at(b, "sudden rotary move on " + std::string(to_.geometry.id) + ": " + turned +
+    if (turn.value > 2.0 * axis_turn.value)
+      out.warnings.push_back(at(b, "sudden rotary move on " + std::string(to_.geometry.id) + ": " + turned() +
                                        " while the tool axis turns by " + fixed(to_degrees(axis_turn).value, 3) +
                                        "° (past a pole)"));
   }
