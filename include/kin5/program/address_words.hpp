@@ -9,7 +9,8 @@
 /// optional `=`, an optional sign and a decimal number not followed by `=` (so `A3=0.5`, a
 /// Siemens vector component, and `R1=5`, a parameter, are not words). Comments: `;` to the end
 /// of the line, `( … )` in ISO, strings `"…"` skipped. APT CL data is scanned by its records
-/// (`GOTO/x,y,z,i,j,k`, `FEDRAT/f`, `SPINDL/s`).
+/// (`GOTO/x,y,z,i,j,k`, `FEDRAT/f`, `SPINDL/s`). `for_each_address_word_in_text` finds the
+/// same words in a whole text in one pass over its bytes (the scan of a long program).
 /// @code
 ///   kin5::program::for_each_address_word("N10 G1 X10.25 A-30", kin5::program::dialect::iso,
 ///                                        [](const kin5::program::address_word& w) { /* X 2, A 0 */ });
@@ -17,6 +18,7 @@
 /// @endcode
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <string_view>
 
@@ -132,16 +134,79 @@ constexpr void count_apt_statement(number_resolution& r, std::string_view s) {
   }
 }
 
+/// The bytes `for_each_address_word_in_text` stops at: letters, `;`, `(` and `"`; every other byte (digits,
+/// blanks, line ends) is passed over.
+inline constexpr auto scan_stops = [] {
+  std::array<bool, 256> stop{};
+  for (int c = 0; c < 256; ++c) stop[c] = is_letter(static_cast<char>(c)) || c == ';' || c == '(' || c == '"';
+  return stop;
+}();
+
+constexpr bool is_line_end(char c) { return c == '\n' || c == '\r'; }
+
+/// The line end at or after `i` in `text` (its size if none).
+constexpr std::size_t line_end(std::string_view text, std::size_t i) {
+  while (i < text.size() && !is_line_end(text[i])) ++i;
+  return i;
+}
+
 }  // namespace detail
+
+/// Calls `f(letter, offset, decimals)` for each word `for_each_address_word` finds on the lines
+/// of `text` (a letter-address dialect), in order, `offset` counted from the start of `text`;
+/// one pass over the bytes that stops only at letters, `;`, `(` and `"`, without splitting the
+/// text into lines: a line end only ends a comment or a string, and it is a word boundary as
+/// the start of a line is.
+template <class F>
+constexpr void for_each_address_word_in_text(std::string_view text, dialect d, F&& f) {
+  const std::size_t n = text.size();
+  std::size_t i = 0;
+  while (i < n) {
+    const char c = text[i];
+    if (!detail::scan_stops[static_cast<unsigned char>(c)]) {
+      ++i;
+    } else if (c == ';') {
+      i = detail::line_end(text, i);
+    } else if (c == '(') {
+      if (d != dialect::iso) {
+        ++i;
+        continue;
+      }
+      int depth = 1;  // nested ISO comments, to the line end at most
+      for (++i; i < n && depth > 0 && !detail::is_line_end(text[i]); ++i)
+        depth += text[i] == '(' ? 1 : (text[i] == ')' ? -1 : 0);
+    } else if (c == '"') {
+      std::size_t close = i + 1;
+      while (close < n && text[close] != '"' && !detail::is_line_end(text[close])) ++close;
+      i = close < n && text[close] == '"' ? close + 1 : close;  // unclosed: the rest of the line
+    } else if (i > 0 && !detail::word_boundary(text[i - 1])) {
+      ++i;
+    } else {
+      std::size_t j = i + 1;
+      if (j < n && text[j] == '=') ++j;
+      int decimals = 0;
+      const std::size_t end = detail::scan_number(text, j, decimals);
+      if (end == 0 || (end < n && text[end] == '=')) {
+        ++i;
+        continue;
+      }
+      f(to_upper(c), i, decimals);
+      i = end;
+    }
+  }
+}
 
 /// How finely `text`, a program in dialect `d`, writes its numbers (see the file comment): one
 /// pass over the bytes, no reading.
 inline number_resolution scan_resolution(std::string_view text, dialect d) {
   number_resolution r;
-  for_each_line(text, [&](const text_line& line) {
-    if (d == dialect::apt) return detail::count_apt_statement(r, line.text);
-    for_each_address_word(line.text, d, [&](const address_word& w) { detail::count_word(r, w.letter, w.decimals); });
-  });
+  if (d != dialect::apt) {
+    for_each_address_word_in_text(text, d, [&r](char letter, std::size_t, int decimals) {
+      detail::count_word(r, letter, decimals);
+    });
+    return r;
+  }
+  for_each_line(text, [&](const text_line& line) { detail::count_apt_statement(r, line.text); });
   return r;
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -286,6 +287,44 @@ TEST_CASE("resolution: decimals per word class, scanned from the text of each di
   CHECK(default_angle_tolerance(h).value == Approx(0.00005).margin(1e-15));
   CHECK(default_angle_tolerance(program::number_resolution{}).value == 0.0005);
   CHECK(default_angle_tolerance(a).value == Approx(std::sqrt(3.0) * 0.5e-7 * 180.0 / pi).margin(1e-15));
+}
+
+/// The words of `text` as the word rule states them, line by line (`for_each_address_word`):
+/// letter, offset in `text`, decimals.
+std::vector<std::tuple<char, std::size_t, int>> words_line_by_line(std::string_view text, dialect d) {
+  std::vector<std::tuple<char, std::size_t, int>> words;
+  program::for_each_line(text, [&](const program::text_line& line) {
+    program::for_each_address_word(line.text, d, [&](const program::address_word& w) {
+      words.emplace_back(w.letter, static_cast<std::size_t>(line.text.data() - text.data()) + w.offset, w.decimals);
+    });
+  });
+  return words;
+}
+
+TEST_CASE("resolution: the one-pass scan finds the words of the word rule, line by line") {
+  // Texts of words of every class (and not) and of the bytes the rule turns on: letters,
+  // boundaries, signs, points, `=`, comments, strings and every line ending.
+  static const std::vector<std::string> pieces{
+      "X1.5", "y=-2.25", "A3", "b+.125", "C7.", "F100.5", "S1.25", "I12.125", "r7.75", "G1", "N10", "A3=0.5", "LN",
+      "X", "c", "_", "#", "$", "=", "+", "-", ".", "0", "7", "12.5", " ", "\t", "\n", "\r", "\r\n", ";", "(", ")",
+      "\"", "\xc3\xa4"};
+  for (dialect d : {dialect::siemens, dialect::heidenhain, dialect::iso}) {
+    rc::prop(std::string("dialect ") + std::string(program::name(d)), [d] {
+      // Every piece as likely at any size (inRange alone favours the first ones on small sizes).
+      const auto piece = rc::gen::resize(100, rc::gen::inRange<std::size_t>(0, pieces.size()));
+      const auto picks = *rc::gen::container<std::vector<std::size_t>>(piece);
+      std::string text;
+      for (std::size_t k : picks) text += pieces[k];
+      std::vector<std::tuple<char, std::size_t, int>> words;
+      program::for_each_address_word_in_text(text, d, [&](char letter, std::size_t offset, int decimals) {
+        words.emplace_back(letter, offset, decimals);
+      });
+      RC_ASSERT(words == words_line_by_line(text, d));
+      program::number_resolution counted;
+      for (const auto& [letter, offset, decimals] : words) program::detail::count_word(counted, letter, decimals);
+      RC_ASSERT(program::scan_resolution(text, d) == counted);
+    });
+  }
 }
 
 TEST_CASE("an empty program is an input error, and nothing reaches the sink") {
