@@ -217,8 +217,13 @@ class basic_rotary_planner {
   std::optional<vec3> near_pole(const vec3& u) const {
     if (N >= 2 && machine_.rotary_count == 2) {
       const vec3 p = machine_.orientation.p;
-      for (const vec3& pole : {p, -p})
+      for (const vec3& pole : {p, -p}) {
+        // More than 60° away (on the far side, or cos² < 1/4) is far outside `pole_zone`: no
+        // atan2 spent on it. A zero `u` passes on to `angle_between`.
+        const double cos_scaled = dot(u, pole);
+        if (!(cos_scaled >= 0.0 && 4.0 * cos_scaled * cos_scaled >= dot(u, u) * dot(pole, pole))) continue;
         if (angle_between(u, pole).value <= pole_zone.value && inverse(machine_, pole, options_).reachable()) return pole;
+      }
     }
     return std::nullopt;
   }
