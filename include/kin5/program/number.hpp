@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -89,6 +90,44 @@ struct number_out_of_range : std::invalid_argument {
 /// rounding to any number of decimals is then within the bound too, 1e9 being exact).
 constexpr bool writable(double value) { return value == value && value >= -max_magnitude && value <= max_magnitude; }
 
+namespace detail {
+
+/// `value` (finite, |value| at most `max_magnitude`) in fixed notation with `decimals` (0 to 12)
+/// decimals into `[first, last)` (32 bytes or more), byte for byte as
+/// `std::to_chars(first, last, value, std::chars_format::fixed, decimals)` writes it: the sign
+/// of a negative value or -0, the digits of |value| correctly rounded, the point when
+/// `decimals` > 0. Returns the end.
+///
+/// The digits are those of the integer nearest s = |value|·10^decimals. Below 2^31 the product
+/// is within 2^-23 of the exact one (10^decimals is exact), so unless it lies within 1e-6 of a
+/// half, its nearest integer is the exact product's; otherwise (larger values, near-ties)
+/// `to_chars` decides. No string, no division of doubles.
+inline char* fixed_chars(char* first, char* last, double value, int decimals) {
+  static constexpr double scale[13]{1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12};
+  const double scaled = std::abs(value) * scale[decimals];
+  const double whole = std::floor(scaled), part = scaled - whole;
+  if (!(scaled < 0x1p31) || std::abs(part - 0.5) <= 1e-6) {
+    const auto r = std::to_chars(first, last, value, std::chars_format::fixed, decimals);
+    if (r.ec != std::errc{}) throw number_out_of_range("a number too long to write");  // not reached
+    return r.ptr;
+  }
+  auto n = static_cast<std::uint64_t>(whole) + (part > 0.5 ? 1u : 0u);
+  char digits[24];  // least significant first; at least decimals + 1 of them
+  int k = 0;
+  do {
+    digits[k++] = static_cast<char>('0' + n % 10);
+    n /= 10;
+  } while (n != 0 || k <= decimals);
+  char* out = first;
+  if (std::signbit(value)) *out++ = '-';
+  for (int i = k - 1; i >= decimals; --i) *out++ = digits[i];
+  if (decimals > 0) *out++ = '.';
+  for (int i = decimals - 1; i >= 0; --i) *out++ = digits[i];
+  return out;
+}
+
+}  // namespace detail
+
 /// Appends `value` to `out` in fixed notation with at most `decimals` decimals (clamped to 0 to
 /// 12), trailing zeros and a trailing point removed, `-0` written as `0`; with `plus`, a `+`
 /// before a value that is not negative (Heidenhain's `X+34.983`). Throws `number_out_of_range`,
@@ -104,10 +143,8 @@ inline void append_number(std::string& out, double value, int decimals, bool plu
   // Sign, 10 digits up to 1e9, point, 12 decimals, and the '+' in front: 25 of the 32 bytes.
   char buf[32];
   char* const first = buf + 1;  // room for a leading '+'
-  const auto r = std::to_chars(first, buf + sizeof buf, value, std::chars_format::fixed, decimals);
-  if (r.ec != std::errc{}) throw number_out_of_range("a number too long to write");  // not reached
-  char* end = r.ptr;
-  if (std::find(first, end, '.') != end) {
+  char* end = detail::fixed_chars(first, buf + sizeof buf, value, decimals);
+  if (decimals > 0) {  // a point was written: trailing zeros go
     while (end > first && end[-1] == '0') --end;
     if (end > first && end[-1] == '.') --end;
   }
@@ -129,6 +166,7 @@ inline rate_choice choose_rate_decimals(double value, int decimals, int finest) 
   decimals = std::clamp(decimals, 0, 12);
   const double m = std::abs(value);
   if (!(m > 0.0) || !writable(value)) return {decimals, true};
+  if (m >= 100.0) return {decimals, true};  // three digits before the point already (no logarithm)
   const int three_digits = 2 - static_cast<int>(std::floor(std::log10(m)));
   if (three_digits <= decimals) return {decimals, true};
   const int d = std::max(decimals, std::min(three_digits, std::clamp(finest, 0, 12)));

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
@@ -73,20 +74,60 @@ TEST_CASE("read_number reads the NC number grammar with strtod's value") {
   });
 }
 
+namespace {
+
+/// What `append_number` must write: `std::to_chars`' fixed digits, trailing zeros and point
+/// removed, "-0" as "0".
+std::string to_chars_trimmed(double v, int decimals) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
+  std::string want(buf, r.ptr);
+  if (want.find('.') != std::string::npos) {
+    while (want.back() == '0') want.pop_back();
+    if (want.back() == '.') want.pop_back();
+  }
+  if (want == "-0") want = "0";
+  return want;
+}
+
+/// Values as programs hold them (up to 1e5, and up to 2^31 / 10^d or 1e9), and the ones whose rounding
+/// is a tie or next to one: halves of the last place, binary fractions, and their neighbours.
+rc::Gen<double> nc_scale_double(int decimals) {
+  const double unit = std::pow(10.0, -decimals);
+  return rc::gen::resize(100, rc::gen::oneOf(  // the whole range at every size
+      rc::gen::map(rc::gen::inRange<long long>(-100000000000, 100000000000),
+                   [](long long n) { return static_cast<double>(n) * 1e-6; }),
+      rc::gen::map(rc::gen::arbitrary<double>(), [=](double x) { return std::isfinite(x) ? std::fmod(x, std::min(max_magnitude, 2147483648.0 * unit)) : 0.0; }),
+      rc::gen::map(rc::gen::pair(rc::gen::inRange<long long>(-2000000, 2000000), rc::gen::inRange(-2, 3)),
+                   [=](std::pair<long long, int> p) {
+                     double v = (static_cast<double>(p.first) + 0.5) * unit;  // a half of the last place
+                     for (int k = 0; k < std::abs(p.second); ++k) v = std::nextafter(v, p.second > 0 ? 1e300 : -1e300);
+                     return v;
+                   }),
+      rc::gen::map(rc::gen::pair(rc::gen::inRange<long long>(-1000000, 1000000), rc::gen::inRange(1, 40)),
+                   [](std::pair<long long, int> p) { return std::ldexp(static_cast<double>(p.first), -p.second); }),
+      rc::gen::element(0.0, -0.0, -1e-300, 1e-300, 0.5, -0.5, 999999999.5, -999999999.5, 1e9, -1e9)));
+}
+
+}  // namespace
+
 TEST_CASE("append_number writes to_chars' digits, trimmed, and reads back") {
+  rc::prop("values as programs hold them and next to ties, 0 to 12 decimals", [] {
+    const int decimals = *rc::gen::resize(100, rc::gen::inRange(0, 13));
+    const double v = *nc_scale_double(decimals);
+    std::string got;
+    append_number(got, v, decimals);
+    RC_ASSERT(got == to_chars_trimmed(v, decimals));
+    std::string plus;
+    append_number(plus, v, decimals, true);
+    RC_ASSERT(plus == (got.front() == '-' ? got : "+" + got));
+  });
   rc::prop("finite values up to 1e9, 0 to 6 decimals", [] {
     const double v = *rc::gen::map(rc::gen::arbitrary<double>(), [](double x) { return std::isfinite(x) ? std::fmod(x, 1e9) : 0.0; });
     const int decimals = *rc::gen::inRange(0, 7);
     std::string got;
     append_number(got, v, decimals);
-    char buf[64];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
-    std::string want(buf, r.ptr);
-    if (want.find('.') != std::string::npos) {
-      while (want.back() == '0') want.pop_back();
-      if (want.back() == '.') want.pop_back();
-    }
-    if (want == "-0") want = "0";
+    const std::string want = to_chars_trimmed(v, decimals);
     RC_ASSERT(got == want);
     const parsed_number back = read_number(got);
     RC_ASSERT(back.length == got.size());
