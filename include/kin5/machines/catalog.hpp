@@ -10,17 +10,26 @@
 #include <tuple>
 
 #include "a_rotary_4axis.hpp"
+#include "ab_trunnion.hpp"
 #include "ac_head.hpp"
 #include "ac_trunnion.hpp"
 #include "b_head_a_tilted_table.hpp"
+#include "bc_nutating_table.hpp"
+#include "bc_trunnion.hpp"
 #include "dmu_50v.hpp"
 #include "dmu_80p.hpp"
 #include "sajo_12000p.hpp"
+#include "xyzac_trt.hpp"
+#include "xyzbc_trt.hpp"
 
 namespace kin5::machines {
 
-/// Every catalog machine, in the order `kin5 machines` lists them.
-using catalog = std::tuple<sajo_12000p, dmu_80p, ac_trunnion, dmu_50v, a_rotary_4axis, ac_head, b_head_a_tilted_table>;
+/// Every catalog machine, in the order `kin5 machines` lists them: the machines of the source
+/// papers and two of Li et al. 2013's structures, then a B/C and an A/B trunnion, a nutating B/C
+/// table and LinuxCNC's two table-rotary-tilting simulation machines. Each also ships as a
+/// machine file, machines/<id>.toml.
+using catalog = std::tuple<sajo_12000p, dmu_80p, ac_trunnion, dmu_50v, a_rotary_4axis, ac_head, b_head_a_tilted_table,
+                           bc_trunnion, ab_trunnion, bc_nutating_table, xyzac_trt, xyzbc_trt>;
 
 /// Calls `f.template operator()<M>()` for each catalog machine M, in order.
 template <class F>

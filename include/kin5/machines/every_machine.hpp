@@ -1,8 +1,7 @@
 /// @file machines/every_machine.hpp
-/// Every bundled machine as the type list `every_machine`: the catalog (catalog.hpp), then the
-/// structures added with the whole-machine chain — a B/C and an A/B trunnion, a nutating B/C
-/// table and LinuxCNC's two table-rotary-tilting simulation machines. Each also ships as a machine
-/// file, machines/<id>.toml. The matchability tables and the by-id translation cover `catalog`.
+/// `every_machine`, the name the whole-machine chain gave the list of every bundled machine while
+/// the catalog held only the papers' machines: now the catalog itself (catalog.hpp), kept so that
+/// code written against it still reads. `for_each_machine_in<List>` folds over any such list.
 /// @code
 ///   kin5::machines::for_each_machine_in<kin5::machines::every_machine>(
 ///       []<class M>() { std::cout << M::id << '\n'; });
@@ -11,20 +10,12 @@
 
 #include <tuple>
 
-#include "ab_trunnion.hpp"
-#include "bc_nutating_table.hpp"
-#include "bc_trunnion.hpp"
 #include "catalog.hpp"
-#include "xyzac_trt.hpp"
-#include "xyzbc_trt.hpp"
 
 namespace kin5::machines {
 
-/// `catalog`, then the machines added with the whole-machine chain, in the order `kin5 machines`
-/// lists them.
-using every_machine = std::tuple<sajo_12000p, dmu_80p, ac_trunnion, dmu_50v, a_rotary_4axis, ac_head,
-                                 b_head_a_tilted_table, bc_trunnion, ab_trunnion, bc_nutating_table, xyzac_trt,
-                                 xyzbc_trt>;
+/// Every bundled machine: the catalog, in the order `kin5 machines` lists them.
+using every_machine = catalog;
 
 /// Calls `f.template operator()<M>()` for each machine M of the type list `List`, in order.
 template <class List, class F>

@@ -98,14 +98,17 @@ inline std::vector<value_check> check_branch_boundaries(const machine_model& fro
 }
 
 /// The Ipopt gap to the target's reach of the source pose at `s` on `row`, started from `starts`
-/// (or a 2 × 2 grid when empty); the optimum is written back to `starts` for the next call.
+/// (or a 3 × 3 grid when empty); the optimum is written back to `starts` for the next call. The
+/// gap has a local minimum on each side of a tilting axis' travel (xyzac-trt: A at −100° and
+/// at +50°); an odd grid puts an endless axis' starts at three distinct orientations, where an
+/// even one over its two turns repeats them (−180° and +180°) and can miss the global minimum.
 inline double numeric_gap(const pair_geometry& g, const pose_row& row, double s,
                           std::vector<std::vector<double>>& starts) {
   const vec3 v = g.target_R_source * tool_axis(g.from(), detail::pose_on_row(g.from(), row, s));
   if (starts.empty()) {
     std::vector<double> lower, upper;
     detail::travel_box(g.to(), lower, upper);
-    starts = detail::grid_starts(lower, upper, 2);
+    starts = detail::grid_starts(lower, upper, 3);
   }
   const auto n = nearest_reachable_axis_from(g.to(), v, starts);
   std::vector<double> x;
