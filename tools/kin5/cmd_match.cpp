@@ -127,6 +127,12 @@ int run_match(const match_arguments& a) {
 
 }  // namespace
 
+/// The dialects a source program may be in: every one of `program::dialects` but CL data.
+std::vector<std::string> source_dialect_names() {
+  const auto names = dialect_names([](const prog::capabilities& can) { return !can.cl_data; });
+  return {names.begin(), names.end()};
+}
+
 void add_match_command(CLI::App& app, int& exit_code) {
   auto a = std::make_shared<match_arguments>();
   auto* sub = app.add_subcommand("match", "Which blocks of a machine another can run: the pair's table, or a program's report");
@@ -134,7 +140,7 @@ void add_match_command(CLI::App& app, int& exit_code) {
   add_machine_options(*sub, a->to, "--to", "Target machine");
   sub->add_option("--program", a->program, "NC program of the source machine ('-' for stdin): report on it");
   sub->add_option("--from-dialect", a->from_dialect, "Dialect of the program (default: the --from machine's)")
-      ->check(CLI::IsMember({"siemens", "heidenhain", "iso"}));
+      ->check(CLI::IsMember(source_dialect_names()));
   sub->add_option("--format", a->format, "md, csv, svg or json")
       ->check(CLI::IsMember({"md", "csv", "svg", "json"}))
       ->capture_default_str();
