@@ -6,4 +6,4 @@ cd "$(dirname "$0")/.."
 ./scripts/setup-debian.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build --target kin5_cli -j"$(nproc 2>/dev/null || echo 2)"
-./build/tools/kin5/kin5 translate --from sajo-12000p --to dmu-80p examples/table1-sajo.mpf
+./build/tools/kin5/kin5 translate --from sajo-12000p --to dmu-80p --work-offset-map G54=1 examples/table1-sajo.mpf

@@ -17,7 +17,7 @@ set -u
 KIN5_RUN_ENV=--default-signal
 . "$(cd "$(dirname "$0")" && pwd)/harness.sh"
 example="$examples/table1-sajo.mpf"
-translate="translate --from sajo-12000p --to dmu-80p"
+translate="translate --from sajo-12000p --to dmu-80p --work-offset-map G54=1"  # the example's G54: preset 1
 
 # no_temporary: no temporary file of kin5's is left in the directory.
 no_temporary() { [ "$(ls -A | grep -c 'kin5-')" = 0 ] || report "temporary files left: $(ls -A | grep 'kin5-')"; }

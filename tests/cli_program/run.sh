@@ -71,11 +71,15 @@ check_table1() {
 }
 
 example="$examples/table1-sajo.mpf"
+# The example selects G54, which has no certain equivalent on a TNC (presets) nor in CL data:
+# the runs below say what it is there (docs/user-guide.md, work offsets).
+g54="--work-offset-map G54=1"
+no_g54="--work-offset-map G54="
 
 case "$name" in
   example)
     # Table 1, sajo -> dmu, default feed policy (tcp: F kept).
-    run 0 translate --from sajo-12000p --to dmu-80p -o table1.h "$example"
+    run 0 translate --from sajo-12000p --to dmu-80p $g54 -o table1.h "$example"
     [ -s table1.h ] || report "table1.h not written"
     [ -s out ] && report "stdout not empty with -o"
     check_table1 table1.h || { report "Table 1 values"; show table1.h; }
@@ -83,38 +87,38 @@ case "$name" in
   block-time)
     # (K17) f_d = f_s l_d / l_s on consecutive rows: docs/golden.md gives 1089.25, 1094.48, 1102.02 for
     # rows 2-4; row 1 comes from a pure 50 mm approach (no rotary change): F kept, 1091.
-    run 0 translate --from sajo-12000p --to dmu-80p --feed block-time -o bt.h "$example"
+    run 0 translate --from sajo-12000p --to dmu-80p $g54 --feed block-time -o bt.h "$example"
     check_table1 bt.h "1091 1089.25 1094.48 1102.02" || { report "block-time feeds"; show bt.h; }
     ;;
   crlf)
     # Read as bytes: the example with CRLF line ends gives the same motion.
-    run 0 translate --from sajo-12000p --to dmu-80p -o lf.h "$example"
+    run 0 translate --from sajo-12000p --to dmu-80p $g54 -o lf.h "$example"
     awk '{ printf "%s\r\n", $0 }' "$example" >crlf.mpf
-    run 0 translate --from sajo-12000p --to dmu-80p -o crlf.h crlf.mpf
+    run 0 translate --from sajo-12000p --to dmu-80p $g54 -o crlf.h crlf.mpf
     check_table1 crlf.h || { report "Table 1 values from CRLF input"; show crlf.h; }
     words lf.h >a; words crlf.h >b
     cmp -s a b || report "CRLF and LF inputs give different motion"
     ;;
   stdin-stdout)
     # '-' in and out: the same program as file to file.
-    run 0 translate --from sajo-12000p --to dmu-80p -o file.h "$example"
-    "$exe" translate --from sajo-12000p --to dmu-80p - <"$example" >piped.h 2>err
+    run 0 translate --from sajo-12000p --to dmu-80p $g54 -o file.h "$example"
+    "$exe" translate --from sajo-12000p --to dmu-80p $g54 - <"$example" >piped.h 2>err
     [ $? = 0 ] || { report "stdin run failed"; show err; }
     check_table1 piped.h || { report "Table 1 values through a pipe"; show piped.h; }
     words file.h >a; words piped.h >b
     cmp -s a b || { report "stdin/stdout and file/file motion differ"; show file.h piped.h; }
-    "$exe" translate --from sajo-12000p --to dmu-80p -o - "$example" >dash.h 2>err
+    "$exe" translate --from sajo-12000p --to dmu-80p $g54 -o - "$example" >dash.h 2>err
     words dash.h >c
     cmp -s a c || report "-o - differs from -o file"
     # Errors in stdin are named <stdin>.
-    printf 'N10 TRAORI\nN20 G91 X1\n' | "$exe" translate --from sajo-12000p --to dmu-80p - >out 2>err
+    printf 'N10 TRAORI\nN20 G91 X1\n' | "$exe" translate --from sajo-12000p --to dmu-80p $g54 - >out 2>err
     [ $? = 2 ] || report "bad stdin: exit code"
     grep -q '^<stdin>:2:5: error: ' err || { report "bad stdin: no <stdin>:2:5 error"; show err; }
     ;;
   summary)
     # The example has 23 lines, one block each; 6 of them move (the approach, the four rows
     # and the retract), all directly reachable.
-    run 0 translate --from sajo-12000p --to dmu-80p -o s.h "$example"
+    run 0 translate --from sajo-12000p --to dmu-80p $g54 -o s.h "$example"
     grep -Eq '23 blocks read, 23 written, [0-9]+ passed through; 6 direct, 0 other-branch, 0 unreachable' err ||
       { report "summary line"; show err; }
     ;;
@@ -126,7 +130,7 @@ case "$name" in
       'N50 G1 X1 Y2 Z3 YY F100' 'N60 G1 X0 Y0 G91' 'N70 M30' >bad.mpf
     echo keep >bad.h
     cp bad.h before.h
-    run 2 translate --from sajo-12000p --to dmu-80p -o bad.h bad.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p $g54 -o bad.h bad.mpf
     for where in 'bad.mpf:3:8: error: ' 'bad.mpf:5:17: error: ' 'bad.mpf:6:14: error: '; do
       grep -Fq -- "$where" err || report "missing '$where...'"
     done
@@ -143,7 +147,7 @@ case "$name" in
     printf '%s\n' 'N10 G17 G90 G94' 'N20 TRAORI' 'N30 G1 X0 Y0 Z50 A-45 B30 F1000' \
       'N40 G1 X1 Y0 Z50 A5 B30' 'N50 G1 X2 Y0 Z50 A-30 B60' 'N60 G1 X3 Y0 Z50 A10 B200' \
       'N70 G1 X4 Y0 Z50 A-100 B20' 'N80 G1 X5 Y0 Z50 A20 B0' 'N90 TRAFOOF' 'N100 M30' >up.mpf
-    run 3 translate --from sajo-12000p --to dmu-80p -o up.h up.mpf
+    run 3 translate --from sajo-12000p --to dmu-80p $g54 -o up.h up.mpf
     for pair in '4 5' '6 10' '8 20'; do
       set -- $pair
       l=$(grep -E "^up\.mpf:$1:[0-9]+: error: " err)
@@ -166,38 +170,38 @@ case "$name" in
     printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A10 B0 F500' 'N30 M30' >up.mpf
     printf 'previous contents\n' >out.h
     cp out.h before.h
-    run 3 translate --from sajo-12000p --to dmu-80p -o out.h up.mpf
+    run 3 translate --from sajo-12000p --to dmu-80p $g54 -o out.h up.mpf
     cmp -s out.h before.h || report "exit 3 changed out.h"
-    run 3 translate --from sajo-12000p --to dmu-80p -o new.h up.mpf
+    run 3 translate --from sajo-12000p --to dmu-80p $g54 -o new.h up.mpf
     [ -e new.h ] && report "exit 3 created new.h"
-    run 2 translate --from sajo-12000p --to dmu-80p -o new.h missing.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p $g54 -o new.h missing.mpf
     [ -e new.h ] && report "exit 2 created new.h"
     [ "$(ls -A | grep -c kin5)" = 0 ] || report "temporary files left: $(ls -A)"
     chmod 640 out.h
-    run 0 translate --from sajo-12000p --to dmu-80p -o out.h "$example"
+    run 0 translate --from sajo-12000p --to dmu-80p $g54 -o out.h "$example"
     check_table1 out.h || report "out.h not replaced on success"
     [ "$(stat -c %a out.h)" = 640 ] || report "out.h lost its permissions: $(stat -c %a out.h)"
     [ "$(ls -A | grep -c kin5)" = 0 ] || report "temporary files left: $(ls -A)"
     ;;
   missing-input)
-    run 2 translate --from sajo-12000p --to dmu-80p -o x.h does-not-exist.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p $g54 -o x.h does-not-exist.mpf
     grep -q "does-not-exist.mpf" err || report "path not named"
     [ -e x.h ] && report "x.h created"
     mkdir adir
-    run 2 translate --from sajo-12000p --to dmu-80p adir
+    run 2 translate --from sajo-12000p --to dmu-80p $g54 adir
     grep -q "adir" err || report "directory not named"
     ;;
   usage)
     run 1 translate --from sajo-12000p --to no-such-machine "$example"
     grep -q "unknown machine 'no-such-machine'" err || report "unknown machine message"
-    run 1 translate --from sajo-12000p --to dmu-80p --feed fast "$example"
-    run 1 translate --from sajo-12000p --to dmu-80p --to-dialect fanuc "$example"
-    run 1 translate --from sajo-12000p --to dmu-80p --to-dialect apt "$example"
+    run 1 translate --from sajo-12000p --to dmu-80p $g54 --feed fast "$example"
+    run 1 translate --from sajo-12000p --to dmu-80p $g54 --to-dialect fanuc "$example"
+    run 1 translate --from sajo-12000p --to dmu-80p $g54 --to-dialect apt "$example"
     run 1 translate --from sajo-12000p "$example"
-    run 1 translate --from sajo-12000p --to dmu-80p
+    run 1 translate --from sajo-12000p --to dmu-80p $g54
     run 1 post --machine dmu-80p --dialect klingon "$examples/cl-path.apt"
     # Heidenhain has no inverse-time feed (G93): an argument error, found before reading.
-    run 1 translate --from sajo-12000p --to dmu-80p --feed inverse-time "$example"
+    run 1 translate --from sajo-12000p --to dmu-80p $g54 --feed inverse-time "$example"
     grep -q 'inverse-time' err || report "inverse-time message"
     ;;
   inverse-time)
@@ -208,8 +212,9 @@ case "$name" in
   both-ways)
     # Table 1 back again: DMU 80P -> SAJO 12000P on the translated program returns the SAJO
     # columns (K13; docs/golden.md: within 0.00055 deg of the table), B compared modulo 360.
-    run 0 translate --from sajo-12000p --to dmu-80p -o there.h "$example"
-    run 0 translate --from dmu-80p --to sajo-12000p -o back.mpf there.h
+    run 0 translate --from sajo-12000p --to dmu-80p $g54 -o there.h "$example"
+    run 0 translate --from dmu-80p --to sajo-12000p --work-offset-map 1=G54 -o back.mpf there.h
+    grep -q ' G54$' back.mpf || { report "preset 1 not back to G54"; show back.mpf; }
     printf '%s\n' "$table1" | while read -r sx sy sz sa sb rest; do
       l=$(line_with back.mpf X "$sx")
       [ -n "$l" ] || { echo "no block with X=$sx" >&2; exit 1; }
@@ -226,15 +231,15 @@ case "$name" in
       '4 L X-33.824 Y+9.118 Z+117.545 A-77.913 B+4.027 F1093' \
       '5 L X-32.674 Y+9.153 Z+116.558 A-77.918 B+4.588 F1094' \
       '6 L X-31.531 Y+9.203 Z+115.567 A-77.963 B+5.158 F1096' '7 M129' '8 END PGM T1 MM' >t1.h
-    run 0 translate --from sajo-12000p --to dmu-80p -o t1-dmu.h t1.h
+    run 0 translate --from sajo-12000p --to dmu-80p $g54 -o t1-dmu.h t1.h
     grep -q 'as heidenhain' err || report "no note on the recognised dialect"
     check_table1 t1-dmu.h || { report "Table 1 values from a Heidenhain source"; show t1-dmu.h; }
     # Told explicitly, kin5 reads it as Siemens, and fails on the Heidenhain words.
-    run 2 translate --from sajo-12000p --to dmu-80p --from-dialect siemens -o t1-dmu.h t1.h
+    run 2 translate --from sajo-12000p --to dmu-80p $g54 --from-dialect siemens -o t1-dmu.h t1.h
     ;;
   reverse)
     # NC -> CL: GOTO/x,y,z,i,j,k with (i,j,k) = (cos A sin B, -sin A, cos A cos B) (K1).
-    run 0 reverse --machine sajo-12000p -o t.apt "$example"
+    run 0 reverse --machine sajo-12000p $no_g54 -o t.apt "$example"
     printf '%s\n' "$table1" | while read -r sx sy sz sa sb rest; do
       l=$(grep -E "^GOTO/" t.apt | awk -F'[/,]' -v x="$sx" '{ d = $2 - x; if (d < 0) d = -d; if (d < 1e-6) { print; exit } }')
       [ -n "$l" ] || { echo "no GOTO at X=$sx" >&2; exit 1; }
@@ -266,7 +271,7 @@ case "$name" in
     # and B, A travels over [-120, 30] deg. A C word, an A past -120 and the Table 1 example
     # given with the wrong --from are errors at the word, and nothing is written.
     printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A-30 B10 F500' 'N30 G1 X1 C77' 'N40 G1 X2 A-150' 'N50 M30' >foreign.mpf
-    run 2 translate --from sajo-12000p --to dmu-80p -o f.h foreign.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p $g54 -o f.h foreign.mpf
     grep -q '^foreign\.mpf:3:11: error: C77: sajo-12000p has no C axis' err || { report "C77 not refused at 3:11"; show err; }
     grep -q '^foreign\.mpf:4:11: error: A-150: outside the travel of A on sajo-12000p, \[-120°, 30°\]' err ||
       { report "A-150 not refused at 4:11"; show err; }
@@ -284,19 +289,19 @@ case "$name" in
     # A rotary axis with no value at a motion is refused (its pose would be a guess), unless
     # allowed by name.
     printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A-30 F500' 'N30 G1 X1 B10' 'N40 M30' >unset.mpf
-    run 2 translate --from sajo-12000p --to dmu-80p -o u.h unset.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p $g54 -o u.h unset.mpf
     grep -q '^unset\.mpf:2:1: error: rotary axis B has no value yet' err || { report "unset B not refused"; show err; }
     grep -q -- '--allow unset-rotary' err || report "the option is not named"
-    run 0 translate --from sajo-12000p --to dmu-80p --allow unset-rotary -o u.h unset.mpf
+    run 0 translate --from sajo-12000p --to dmu-80p $g54 --allow unset-rotary -o u.h unset.mpf
     grep -q '^unset\.mpf:2:1: warning: rotary axis B has no value yet.*allowed' err || { report "no allowed warning"; show err; }
-    run 1 translate --from sajo-12000p --to dmu-80p --allow everything -o u.h unset.mpf
+    run 1 translate --from sajo-12000p --to dmu-80p $g54 --allow everything -o u.h unset.mpf
     ;;
   empty-input)
     # No block at all: an input error, nothing written.
     : >empty.mpf
     printf '\n  \n\n' >blank.mpf
     for f in empty.mpf blank.mpf; do
-      run 2 translate --from sajo-12000p --to dmu-80p -o e.h "$f"
+      run 2 translate --from sajo-12000p --to dmu-80p $g54 -o e.h "$f"
       grep -q "^$f: error: empty program" err || { report "$f: no empty-program error"; show err; }
       [ -e e.h ] && report "$f: e.h written"
     done
@@ -316,7 +321,7 @@ case "$name" in
     # The summary comes after the output is committed and counts what OUT holds: nothing when
     # the device is full.
     if [ -w /dev/full ]; then
-      run 2 translate --from sajo-12000p --to dmu-80p -o /dev/full "$example"
+      run 2 translate --from sajo-12000p --to dmu-80p $g54 -o /dev/full "$example"
       grep -q "cannot write '/dev/full'" err || { report "no write error"; show err; }
       grep -q '23 written' err && { report "summary counts blocks never written"; show err; }
       grep -Eq '23 blocks read, 0 written' err || { report "summary line"; show err; }
@@ -325,11 +330,11 @@ case "$name" in
   precision)
     # A source with 4 decimals keeps them in the output (the TNC reads 4); --digits 2 rounds.
     sed 's/X-34.983 Y9.100/X-34.9834 Y9.1006/' "$example" >fine.mpf
-    run 0 translate --from sajo-12000p --to dmu-80p -o fine.h fine.mpf
+    run 0 translate --from sajo-12000p --to dmu-80p $g54 -o fine.h fine.mpf
     l=$(line_with fine.h X 34.9834)
     [ -n "$l" ] || { report "X34.9834 not kept"; show fine.h; }
     near "$(value "$l" Z)" 9.1006 1e-9 || report "Z9.1006 not kept: $l"
-    run 0 translate --from sajo-12000p --to dmu-80p --digits 2 -o d2.h fine.mpf
+    run 0 translate --from sajo-12000p --to dmu-80p $g54 --digits 2 -o d2.h fine.mpf
     [ -n "$(line_with d2.h X 34.98)" ] || { report "--digits 2"; show d2.h; }
     ;;
   m-codes)
@@ -347,15 +352,50 @@ case "$name" in
     grep -q 'M3' m.nc && grep -q 'M8' m.nc || { report "M3 or M8 lost"; show m.nc; }
     run 1 translate --from dmu-80p --to dmu-80p --to-dialect iso --m-map 126 -o m.nc m.h
     ;;
+  work-offsets)
+    # The example's G54 (line 8, column 5) has no certain equivalent on a TNC (presets) nor in
+    # CL data: refused at the word, naming the option, nothing written. Mapped, it is Cycle 247
+    # with Q339; into ISO it is G54 itself (both select the first settable zero offset).
+    run 2 translate --from sajo-12000p --to dmu-80p -o w.h "$example"
+    grep -q 'table1-sajo\.mpf:8:5: error: G54: a work offset of siemens with no certain equivalent in heidenhain' err ||
+      { report "G54 into heidenhain not refused at 8:5"; show err; }
+    grep -q -- '--work-offset-map G54=' err || report "the option is not named"
+    [ -e w.h ] && report "w.h written"
+    run 2 reverse --machine sajo-12000p -o w.apt "$example"
+    grep -q 'table1-sajo\.mpf:8:5: error: G54: .* in apt' err || { report "G54 into apt not refused"; show err; }
+    run 0 translate --from sajo-12000p --to dmu-80p --work-offset-map G54=1 -o p.h "$example"
+    grep -q ' CYCL DEF 247 DATUM SETTING ~$' p.h && grep -q '^  Q339=+1$' p.h || { report "no preset 1"; show p.h; }
+    run 0 translate --from sajo-12000p --to dmu-80p --to-dialect iso -o i.nc "$example"
+    grep -q '^N20 G54$' i.nc || { report "G54 not written into iso"; show i.nc; }
+    # Back from the TNC program: preset 1 is refused into Siemens, or mapped to G55.
+    run 2 translate --from dmu-80p --to dmu-80p --to-dialect siemens -o s.mpf p.h
+    grep -q '^p\.h:[0-9]*:1: error: preset 1: ' err || { report "preset 1 into siemens not refused"; show err; }
+    run 0 translate --from dmu-80p --to dmu-80p --to-dialect siemens --work-offset-map 1=G55 -o s.mpf p.h
+    grep -q ' G55$' s.mpf || { report "preset 1 not written as G55"; show s.mpf; }
+    # A mapping to a selection the target lacks, and one that is not a selection.
+    run 2 translate --from sajo-12000p --to dmu-80p --work-offset-map G54=G55 -o w.h "$example"
+    grep -q 'G54: --work-offset-map gives G55, which heidenhain does not select' err || { report "unwritable map"; show err; }
+    run 1 translate --from sajo-12000p --to dmu-80p --work-offset-map G54=G53 -o w.h "$example"
+    run 1 translate --from sajo-12000p --to dmu-80p --work-offset-map G54=1,G54=2 -o w.h "$example"
+    ;;
+  machine-coordinates)
+    # A move in machine coordinates means the source machine's own axis positions: refused.
+    printf '%s\n' 'N10 G54' 'N20 SUPA G0 Z0' 'N30 TRAORI' 'N40 G1 X0 Y0 Z50 A-45 B30 F500' 'N50 M30' >mc.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p --to-dialect iso -o mc.nc mc.mpf
+    grep -q '^mc\.mpf:2:1: error: a move in machine coordinates' err || { report "SUPA move not refused"; show err; }
+    printf '%s\n' '%' 'O1' 'G54' 'G43.4 H1' 'G1 X0 Y0 Z50 B10 C20 F500' 'G49' 'G91 G28 Z0' 'M30' '%' >mc.nc
+    run 2 translate --from dmu-80p --to dmu-80p --from-dialect iso --to-dialect siemens -o mc.mpf mc.nc
+    grep -q '^mc\.nc:7:1: error: a move in machine coordinates' err || { report "G28 move not refused"; show err; }
+    ;;
   setup)
     # A setup given three ways. T of (K10) written as a matrix and as the half turn about
     # (0,1,1) ((K10): T = R((0,1,1)/sqrt2, 180 deg)) must give Table 1 exactly as the default.
-    run 0 translate --from sajo-12000p --to dmu-80p --setup-rotation=-1,0,0,0,0,1,0,1,0 -o m.h "$example"
+    run 0 translate --from sajo-12000p --to dmu-80p $g54 --setup-rotation=-1,0,0,0,0,1,0,1,0 -o m.h "$example"
     check_table1 m.h || { report "Table 1 with --setup-rotation"; show m.h; }
-    run 0 translate --from sajo-12000p --to dmu-80p --setup-axis 0,1,1 --setup-angle 180 -o a.h "$example"
+    run 0 translate --from sajo-12000p --to dmu-80p $g54 --setup-axis 0,1,1 --setup-angle 180 -o a.h "$example"
     check_table1 a.h || { report "Table 1 with --setup-axis/--setup-angle"; show a.h; }
     # An offset moves every tip by (10, 20, 30) mm and leaves B and C as in Table 1.
-    run 0 translate --from sajo-12000p --to dmu-80p --setup-offset 10,20,-30 -o o.h "$example"
+    run 0 translate --from sajo-12000p --to dmu-80p $g54 --setup-offset 10,20,-30 -o o.h "$example"
     while read -r xs ys zs as bs fs xd yd zd bd cd; do
       x=$(awk -v v="$xd" 'BEGIN { print v + 10 }')
       l=$(line_with o.h X "$x")
@@ -369,12 +409,12 @@ $table1
 EOF
     [ "$fail" = 0 ] || show o.h
     # Bad setups are usage errors (exit 1) and write nothing.
-    run 1 translate --from sajo-12000p --to dmu-80p --setup-rotation 1,0,0,0,1,0,0,0,2 -o bad.h "$example"
+    run 1 translate --from sajo-12000p --to dmu-80p $g54 --setup-rotation 1,0,0,0,1,0,0,0,2 -o bad.h "$example"
     grep -q "not a proper rotation" err || { report "improper rotation message"; show err; }
-    run 1 translate --from sajo-12000p --to dmu-80p --setup-rotation=1,0,0,0,1,0,0,0,1 --setup-axis 0,0,1 \
+    run 1 translate --from sajo-12000p --to dmu-80p $g54 --setup-rotation=1,0,0,0,1,0,0,0,1 --setup-axis 0,0,1 \
       --setup-angle 5 -o bad.h "$example"
-    run 1 translate --from sajo-12000p --to dmu-80p --setup-axis 0,0,1 -o bad.h "$example"
-    run 1 translate --from sajo-12000p --to dmu-80p --setup-offset 1,2 -o bad.h "$example"
+    run 1 translate --from sajo-12000p --to dmu-80p $g54 --setup-axis 0,0,1 -o bad.h "$example"
+    run 1 translate --from sajo-12000p --to dmu-80p $g54 --setup-offset 1,2 -o bad.h "$example"
     [ -e bad.h ] && report "bad.h written on a usage error"
     ;;
   machine-files)
@@ -382,12 +422,12 @@ EOF
     # reverse and post with --from-file/--to-file/--machine-file write byte for byte what the
     # ids write (the bundled files: machines/<id>.toml).
     machines="$examples/../machines"
-    run 0 translate --from sajo-12000p --to dmu-80p -o by-id.h "$example"
-    run 0 translate --from-file "$machines/sajo-12000p.toml" --to-file "$machines/dmu-80p.toml" -o by-file.h "$example"
+    run 0 translate --from sajo-12000p --to dmu-80p $g54 -o by-id.h "$example"
+    run 0 translate --from-file "$machines/sajo-12000p.toml" --to-file "$machines/dmu-80p.toml" $g54 -o by-file.h "$example"
     cmp -s by-id.h by-file.h || { report "translate: file and id outputs differ"; show by-id.h by-file.h; }
     check_table1 by-file.h || { report "Table 1 values with machine files"; show by-file.h; }
-    run 0 reverse --machine sajo-12000p -o by-id.apt "$example"
-    run 0 reverse --machine-file "$machines/sajo-12000p.toml" -o by-file.apt "$example"
+    run 0 reverse --machine sajo-12000p $no_g54 -o by-id.apt "$example"
+    run 0 reverse --machine-file "$machines/sajo-12000p.toml" $no_g54 -o by-file.apt "$example"
     cmp -s by-id.apt by-file.apt || { report "reverse: file and id outputs differ"; show by-id.apt by-file.apt; }
     run 0 post --machine dmu-80p -o post-id.h "$examples/cl-path.apt"
     run 0 post --machine-file "$machines/dmu-80p.toml" -o post-file.h "$examples/cl-path.apt"
@@ -405,7 +445,7 @@ EOF
         { echo "expected B=$db C=-($dc) at X=$dx: $l" >&2; exit 1; }
     done || { report "Table 1 on a machine from a file"; show shop.toml shop.h; }
     # Both or neither of --to and --to-file: a usage error; a broken file: an input error at its line.
-    run 1 translate --from sajo-12000p --to dmu-80p --to-file shop.toml -o x.h "$example"
+    run 1 translate --from sajo-12000p --to dmu-80p $g54 --to-file shop.toml -o x.h "$example"
     run 1 translate --from sajo-12000p -o x.h "$example"
     grep -q 'give exactly one of --to ID and --to-file FILE' err || { report "neither --to nor --to-file"; show err; }
     sed 's/^direction = \[0, 0.70710678118654757, 0.70710678118654757\]/direction = [0, 0, 1]/' shop.toml >bad.toml

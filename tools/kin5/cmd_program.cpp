@@ -293,6 +293,7 @@ struct common_arguments {
   std::optional<int> digits;
   std::vector<std::string> m_map;
   std::string tool_length, work_offset;  ///< translate and post: the target's placement
+  std::vector<std::string> work_offset_map;
 };
 
 std::optional<std::vector<double>> parse_list(std::string_view text, std::size_t count);
@@ -352,6 +353,13 @@ std::optional<common_options> parse_common(std::string_view command, const commo
       return std::nullopt;
     }
   if (!parse_placement(command, a, c)) return std::nullopt;
+  for (const auto& entries : a.work_offset_map)
+    if (!c.work_offsets.add(entries)) {
+      std::cerr << "kin5 " << command << ": --work-offset-map: '" << entries
+                << "' is not FROM=TO[,FROM=TO…] (FROM, TO: G54 … G59, G54.1P n, G500, G505 … G599, or a "
+                   "Heidenhain preset number; TO empty drops it), or maps a work offset twice\n";
+      return std::nullopt;
+    }
   return c;
 }
 
@@ -366,7 +374,12 @@ void add_common_options(CLI::App* sub, common_arguments& a) {
                   "controller reads)");
   sub->add_option("--m-map", a.m_map,
                   "Into another dialect, write M function N as M (N=M) or drop it (N=); other M functions "
-                  "whose meaning is the machine maker's are refused");
+                  "whose meaning is the machine maker's are refused")
+      ->allow_extra_args(false);  // one entry per option: the input file after it stays the input
+  sub->add_option("--work-offset-map", a.work_offset_map,
+                  "Write work offset FROM as TO (G54=1: G54 selects Heidenhain preset 1; G505=G54.1P5; G54= "
+                  "drops it); a work offset with no certain equivalent in the output dialect is refused")
+      ->allow_extra_args(false);
 }
 
 /// Adds --tool-length and --work-offset (the target's placement) to `sub`.

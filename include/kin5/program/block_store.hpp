@@ -89,7 +89,7 @@ class block_store {
     has_y = 1u << 15, has_z = 1u << 16, has_a = 1u << 17, has_b = 1u << 18, has_c = 1u << 19,
     has_tool_axis = 1u << 20, has_arc = 1u << 21, arc_centre = 1u << 22, arc_radius = 1u << 23,
     has_feed = 1u << 24, feed_rapid = 1u << 25, machine_coordinates = 1u << 26, has_kept = 1u << 27,
-    passthrough = 1u << 28,
+    passthrough = 1u << 28, has_state = 1u << 29,
   };
 
   std::string file_;
@@ -183,12 +183,13 @@ class block_store {
     set(b.machine_coordinates, machine_coordinates);
     set(!b.kept_words.empty(), has_kept);
     set(b.passthrough, passthrough);
+    set(!b.state.empty(), has_state);
     // An upper bound of the record's size: the fixed part, then the strings and lists (a
     // LEB128 size takes at most 10 bytes).
     constexpr std::size_t leb = 10;
     std::size_t size = sizeof flags + 2 * leb + sizeof(long long) + sizeof(feed_unit) + sizeof(long long) +
                        sizeof(double) + sizeof(motion_kind) + 6 * sizeof(double) + sizeof(vec3) + sizeof(arc_plane) +
-                       sizeof(vec3) + sizeof(double) + sizeof(double) + leb;
+                       sizeof(vec3) + sizeof(double) + sizeof(double) + leb + sizeof(state_words);
     if (flags & has_text) size += leb + b.text.size();
     for (const auto* s : {&b.program_begin, &b.program_end, &b.comment})
       if (*s) size += leb + (*s)->size();
@@ -227,6 +228,7 @@ class block_store {
       put_size(b.kept_words.size());
       for (const auto& w : b.kept_words) put_string(w);
     }
+    if (flags & has_state) put(b.state);  // trivially copyable (state_words.hpp)
   }
 
   /// Reads one record into `b`, every field but `where.file` replaced.
@@ -247,6 +249,7 @@ class block_store {
     b.arc.reset();
     b.feed.reset();
     b.kept_words.clear();
+    b.state = {};
     std::uint32_t flags = 0;
     p = get(p, flags);
     std::uint64_t v = 0;
@@ -291,6 +294,7 @@ class block_store {
       b.kept_words.resize(static_cast<std::size_t>(v));
       for (auto& w : b.kept_words) p = get_string(p, w);
     }
+    if (flags & has_state) p = get(p, b.state);
     b.passthrough = (flags & passthrough) != 0;
     return p;
   }

@@ -7,7 +7,10 @@
 /// need a separate circle-centre block?), and `guess_dialect` looks for the markers.
 #pragma once
 
+#include <array>
 #include <string_view>
+
+#include "work_offsets.hpp"
 
 namespace kin5::program {
 
@@ -22,6 +25,16 @@ struct capabilities {
   bool tool_axis_vectors = false;  ///< a tool-axis vector in a motion block (A3=, TX, G43.5 I J K, GOTO/…,i,j,k)
   bool arcs = false;               ///< circular moves
   bool arc_centre_block = false;   ///< an arc's centre is a modal block of its own (Heidenhain CC)
+  /// The work offsets its writer selects, each range in the dialect's own form (G54, G54.1 P n,
+  /// G505, CYCL DEF 247 Q339=n); a selection in none of them is refused (docs/dialects/*.md).
+  std::array<work_offset_names, 3> work_offsets{};
+
+  /// Whether the writer selects work offset `w`.
+  constexpr bool writes(const work_offset& w) const {
+    for (const work_offset_names& r : work_offsets)
+      if (r.holds(w)) return true;
+    return false;
+  }
 };
 
 /// Text only one dialect writes, as `guess_dialect` looks for it: an upper-case keyword matched

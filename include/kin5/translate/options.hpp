@@ -28,6 +28,7 @@
 #include "allowances.hpp"
 #include "feed.hpp"
 #include "m_codes.hpp"
+#include "work_offset_map.hpp"
 
 namespace kin5 {
 
@@ -49,6 +50,8 @@ struct common_options {
   /// are checked against the target's linear travel, and a block past it is reported like an
   /// unreachable one, with the excess in mm. Not given: the linear axes are not checked.
   std::optional<run_inputs> placement;
+  /// Work offsets mapped into another dialect's (work_offset_map.hpp).
+  work_offset_map work_offsets;
 };
 
 /// How to translate.

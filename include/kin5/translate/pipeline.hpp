@@ -119,10 +119,17 @@ class two_pass_translator final : public block_translator {
     if (!planned_) target_.finish_plan(), planned_ = true;
     source_step s = second_.next(b, nullptr, !Target::plans_with_tool_axis);
     if (Target::plans_with_tool_axis && s.what == source_step::kind::motion) s.principal = principal_[motion_++];
-    std::optional<program::block> mapped;  // with the user's M mapping (`--m-map`), when it applies
+    std::optional<program::block> mapped;  // with the user's M and work-offset mappings, when they apply
     if (!common_.m_codes.empty() && !b.m_codes.empty() && source_.language != source_.output) {
       mapped = b;
       mapped->m_codes = mapped_m_codes(b, common_.m_codes);
+    }
+    if (b.state.work_offset) {  // refused in the first pass when it cannot be written
+      const auto t = work_offset_into(*b.state.work_offset, source_.language, source_.output, common_.work_offsets);
+      if (t.written != b.state.work_offset) {
+        if (!mapped) mapped = b;
+        mapped->state.work_offset = t.written;
+      }
     }
     target_.write(
         mapped ? *mapped : b, s, result_,
@@ -165,6 +172,7 @@ class two_pass_translator final : public block_translator {
     source_.tolerance = common_.angle_tolerance.value_or(default_angle_tolerance(resolution_));
     source_.output = result_.output.language;
     source_.m_codes = &common_.m_codes;
+    source_.work_offsets = &common_.work_offsets;
     result_.angle_tolerance = source_.tolerance;
     first_.configure(source_, common_.allow);
     second_.configure(source_, common_.allow);

@@ -37,6 +37,7 @@
 #include "angle_tolerance.hpp"
 #include "m_codes.hpp"
 #include "options.hpp"
+#include "work_offset_map.hpp"
 
 namespace kin5::translate_detail {
 
@@ -49,6 +50,7 @@ struct source_context {
   std::string_view machine_option = "--from";  ///< the option that names the source machine
   program::dialect output = program::dialect::siemens;  ///< the dialect written
   const m_map* m_codes = nullptr;                        ///< the user's M mapping (`--m-map`), if any
+  const work_offset_map* work_offsets = nullptr;         ///< the user's work-offset mapping, if any
 };
 
 /// An address word of block `b` found again in its first line: where it starts and how it is
@@ -178,6 +180,25 @@ inline bool check_m_codes(const program::block& b, const source_context& ctx) {
          word, "--m-map " + std::to_string(m) + "="});
   }
   return ok;
+}
+
+/// Checks the work offset block `b` selects against the output dialect (work_offset_map.hpp):
+/// refused at its word when the target has no certain equivalent and the user maps none. False
+/// on an error, reported to `ctx.out` when given.
+inline bool check_work_offset(const program::block& b, const source_context& ctx) {
+  const program::work_offset& w = *b.state.work_offset;
+  static const work_offset_map none;
+  const work_offset_translation t = work_offset_into(w, ctx.language, ctx.output, ctx.work_offsets ? *ctx.work_offsets : none);
+  if (t.refusal.empty()) return true;
+  if (ctx.out) {
+    const double g = w.family == program::work_offset_family::g54        ? 53.0 + w.number
+                     : w.family == program::work_offset_family::extended ? 54.1
+                                                                         : (w.number == 0 ? 500.0 : w.number);
+    const auto located = w.family == program::work_offset_family::preset ? std::nullopt : locate_word(b, 'G', ctx.language, g);
+    ctx.out->errors.push_back({located ? located->where : b.where, t.refusal, program::spelling(w),
+                               "--work-offset-map " + map_key(w) + "="});
+  }
+  return false;
 }
 
 /// What a word that the reader kept without interpreting it (`block::kept_words`) does, when a

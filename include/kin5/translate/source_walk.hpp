@@ -210,8 +210,16 @@ class source_walker {
     source_context ctx = context_;
     ctx.out = out;
     const bool kept_ok = b.kept_words.empty() || check_kept_words(b, ctx);
-    if (!kept_ok || (!b.m_codes.empty() && !check_m_codes(b, ctx)) || (b.moves() && !source_.check(b, ctx))) {
+    const bool offset_ok = !b.state.work_offset || check_work_offset(b, ctx);
+    if (!kept_ok || !offset_ok || (!b.m_codes.empty() && !check_m_codes(b, ctx)) ||
+        (b.moves() && !source_.check(b, ctx))) {
       s.what = source_step::kind::failed;
+      return s;
+    }
+    if (b.machine_coordinates && b.moves()) {  // the source machine's own axes: nothing on another
+      s.what = source_step::kind::failed;
+      to.fail(at(b, "a move in machine coordinates (G53, G28, G30, SUPA, M91, M92) is not translated: the source "
+                    "machine's axis positions mean nothing on another machine"));
       return s;
     }
     if (b.machine_coordinates || b.passthrough) {

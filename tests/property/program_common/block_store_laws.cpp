@@ -70,6 +70,15 @@ block any_block(const std::string& file) {
   b.machine_coordinates = *rc::gen::arbitrary<bool>();
   b.kept_words = *rc::gen::container<std::vector<std::string>>(*rc::gen::inRange(0, 4), any_string());
   b.passthrough = *rc::gen::arbitrary<bool>();
+  if (*rc::gen::inRange(0, 2)) {  // the state words, kept as bytes
+    b.state.tool_change = *rc::gen::arbitrary<bool>();
+    if (*rc::gen::inRange(0, 2))
+      b.state.work_offset = work_offset{*rc::gen::element(work_offset_family::g54, work_offset_family::extended,
+                                                          work_offset_family::siemens, work_offset_family::preset),
+                                        *rc::gen::arbitrary<int>()};
+    b.state.dwell_s = maybe(any_double());
+    b.state.radius_register = maybe(rc::gen::arbitrary<long long>());
+  }
   return b;
 }
 

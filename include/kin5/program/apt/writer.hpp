@@ -16,6 +16,7 @@
 #include "../block.hpp"
 #include "../number.hpp"
 #include "../units.hpp"
+#include "../work_offsets.hpp"
 #include "vocabulary.hpp"
 
 namespace kin5::program::apt {
@@ -46,10 +47,12 @@ class writer {
   void write(std::string& out, const block& b) {
     if (b.passthrough) {
       if (same_) out += b.text + '\n';
-      else out += "$$ " + one_line(b, b.text) + '\n';
+      else out += "$$ " + flat(b.text) + '\n';
       if (b.comment && !same_) out += "$$ " + one_line(b, *b.comment) + '\n';
       return;
     }
+    // CL data are in the part's frame: APT has no statement that selects a work offset.
+    if (b.state.work_offset) fail(b, "work offset " + spelling(*b.state.work_offset) + " has no APT form");
     lines_.clear();
     foreign_note_ = false;
     if (b.metric) inch_ = !*b.metric;
@@ -61,12 +64,12 @@ class writer {
     feed(in_unit);
     motion(in_unit);
     if (b.program_end) lines_.push_back("FINI");
-    if (foreign_note_) lines_.insert(lines_.begin(), "$$ " + one_line(b, b.text));
+    if (foreign_note_) lines_.insert(lines_.begin(), "$$ " + flat(b.text));
     if (b.comment) {
       if (lines_.empty() || (foreign_note_ && lines_.size() == 1)) lines_.push_back("$$ " + one_line(b, *b.comment));
       else lines_.back() += " $$ " + one_line(b, *b.comment);
     }
-    if (lines_.empty() && !b.text.empty() && !same_) lines_.push_back("$$ " + one_line(b, b.text));
+    if (lines_.empty() && !b.text.empty() && !same_) lines_.push_back("$$ " + flat(b.text));
     for (const std::string& l : lines_) out += l + '\n';
   }
 
@@ -82,6 +85,14 @@ class writer {
 
   [[noreturn]] static void fail(const block& b, const std::string& why) {
     throw std::invalid_argument(b.where.file + ":" + std::to_string(b.where.line) + ": block cannot be written in APT: " + why);
+  }
+
+  /// Another dialect's source text as one comment line: a block continued over lines
+  /// (Heidenhain `~`) has its line breaks as blanks.
+  static std::string flat(std::string s) {
+    for (char& c : s)
+      if (c == '\n' || c == '\r') c = ' ';
+    return s;
   }
 
   static const std::string& one_line(const block& b, const std::string& s) {

@@ -4,8 +4,9 @@
 /// `BEGIN PGM`/`END PGM … MM`, `;` and `*` comments, `FUNCTION TCPM`/`FUNCTION RESET TCPM`.
 /// Blocks that change nothing pass through (a comment in another dialect): `BLK FORM`,
 /// `TOOL DEF`, `PLANE RESET`, `TRANS … RESET`, Q assignments (parameters.hpp) and frame cycles
-/// whose values are the identity. Every other block is refused at its keyword, naming it: the
-/// cycles kin5 does not read (`CYCL DEF 200`, 9, 32, 247, …), `CYCL CALL`, `M99`/`M89`,
+/// whose values are the identity. `CYCL DEF 247 … Q339=n` selects preset n (`state.work_offset`).
+/// Every other block is refused at its keyword, naming it: the
+/// cycles kin5 does not read (`CYCL DEF 200`, 9, 32, …), `CYCL CALL`, `M99`/`M89`,
 /// `LBL`, `CALL LBL`/`CALL PGM`, `FN` functions, `M` blocks with other words (`M140 MB MAX`),
 /// `TOOL CALL` forms it does not read, `FUNCTION TCPM` options other than `F TCP`, `AXIS POS`,
 /// `PATHCTRL AXIS`, unknown keywords; so are Q parameters that are not constants of the file,
@@ -289,6 +290,7 @@ class block_reader : public word_checks {
       part = s_.substr(e + 1, p - e - 1);
       e = p;
     }
+    if (number == "247" && part.empty()) return preset_selection(i, e);
     b_.passthrough = true;
     const bool frame = number == "7" || number == "8" || number == "10" || number == "11" || number == "19" ||
                        number == "26";
@@ -298,12 +300,47 @@ class block_reader : public word_checks {
     else if (!frame && (part.empty() || part == "0")) error(i, cycle_refusal(number));
   }
 
+  /// `CYCL DEF 247 DATUM SETTING ~ Q339=+n`: selects row n of the preset table (TNC 640 User's
+  /// Manual for Cycle Programming, Cycle 247 DATUM SETTING), `state.work_offset` {preset, n}.
+  /// Anything else in the block is refused at it.
+  void preset_selection(std::size_t i, std::size_t p) {
+    std::optional<int> row;
+    for (;;) {
+      p = scan_.skip_spaces(p);
+      if (p >= s_.size()) break;
+      if (s_[p] == ';') {
+        b_.comment = s_.substr(p + 1);
+        break;
+      }
+      const std::string key = scan_.letters(p);
+      if ((key == "DATUM" || key == "SETTING") && !row) {
+        p += key.size();
+        continue;
+      }
+      if (!row && t_.upper.compare(p, 5, "Q339=") == 0) {
+        const parsed_number n = read_number(std::string_view(s_).substr(p + 5));
+        if (n.error == number_error::none && n.length > 0 && n.value >= 0 && n.value <= 65535 &&
+            n.value == static_cast<double>(static_cast<int>(n.value))) {
+          row = static_cast<int>(n.value);
+          p += 5 + n.length;
+          continue;
+        }
+      }
+      b_.passthrough = true;
+      return error(p, "CYCL DEF 247 (datum setting): only Q339=n, a preset number from 0 to 65535, is read");
+    }
+    if (!row) {
+      b_.passthrough = true;
+      return error(i, "CYCL DEF 247 (datum setting) without Q339 in its block: the preset it selects is not known");
+    }
+    b_.state.work_offset = work_offset{work_offset_family::preset, *row};
+  }
+
   /// Why cycle `number` (not a frame cycle) is refused.
   static std::string cycle_refusal(const std::string& number) {
     const std::string head = "CYCL DEF " + (number.empty() ? std::string("without a number") : number);
     if (number == "9") return head + " (dwell time) is not supported yet: the dwell would be lost";
     if (number == "32") return head + " (tolerance) is not supported yet: the contour tolerance would be lost";
-    if (number == "247") return head + " (datum setting) is not supported yet: the preset it selects would be lost";
     return head + " is not supported: fixed cycles are refused until kin5 reads them (their holes and pockets "
                   "would be lost)";
   }

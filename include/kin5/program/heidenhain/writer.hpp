@@ -23,6 +23,7 @@
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
+#include "../work_offsets.hpp"
 #include "lexer.hpp"
 
 namespace kin5::program::heidenhain {
@@ -59,6 +60,7 @@ class writer {
       begin_name_ = program_name(b.program_begin);
       add("BEGIN PGM " + *begin_name_ + " MM");
     }
+    if (b.state.work_offset) preset_selection(b, *b.state.work_offset, bi);
     const bool dropped = carry_feed(b);
     const bool moves = is_move(b);
     std::vector<std::string> kept = b.kept_words;  // written verbatim (same dialect) or into the comment
@@ -204,6 +206,14 @@ class writer {
     if (b.feed && !moves) l += " F" + format_number(*b.feed, rate(*b.feed));
     add(l);
     if (tcp_on_ && !b.tcp) add("M128");
+  }
+
+  /// A preset table row selected by Cycle 247 (TNC 640 User's Manual for Cycle Programming,
+  /// Cycle 247 DATUM SETTING), its Q339 on a continued line; any other selection is refused.
+  void preset_selection(const block& b, const work_offset& w, std::size_t bi) {
+    if (w.family != work_offset_family::preset || w.number < 0 || w.number > 65535)
+      fail(b, bi, "work offset " + spelling(w) + " has no Heidenhain form (--work-offset-map names a preset)");
+    add("CYCL DEF 247 DATUM SETTING ~\n  Q339=+" + std::to_string(w.number));
   }
 
   void tool_call(const block& b, bool moves, std::vector<std::string>& kept, std::size_t bi, bool with_tool) {

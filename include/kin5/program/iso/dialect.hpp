@@ -31,7 +31,8 @@ struct dialect {
   static constexpr dialect_id id = dialect_id::iso;
   static constexpr std::string_view name = "iso";
   static constexpr capabilities can{.inverse_time_feed = true, .tcp_switch = true, .rotary_axis_words = true,
-                                    .tool_axis_vectors = true, .arcs = true};
+                                    .tool_axis_vectors = true, .arcs = true,
+                                    .work_offsets = {{{work_offset_family::g54, 1, 6}, {work_offset_family::extended, 1, 300}}}};
   static constexpr std::array<marker, 2> markers{{{"G43.4", marker::place::anywhere},
                                                   {"G43.5", marker::place::anywhere}}};
   using write_options = iso::write_options;

@@ -7,7 +7,8 @@
 /// homing blocks), G95, a unit change after motion, active frames (G68, G68.2, G51, G52 with
 /// offsets, G92), canned cycles, G41/G42, G10, macro and subprogram calls (G65, G66, M98, M97,
 /// M99), and any word not understood, moving or not: each at its word, naming it. Harmless modal
-/// words (G40, G54, G90, G05.1 Q1, H1, D1, …) are kept as written; `%` lines pass through.
+/// words (G40, G90, G05.1 Q1, H1, D1, …) are kept as written; `%` lines pass through. Work offsets
+/// G54 … G59 and G54.1 P n are read into `state.work_offset` (work_offsets.hpp).
 #pragma once
 
 #include <algorithm>
@@ -35,6 +36,8 @@ namespace kin5::program::iso::detail {
 struct line_words {
   bool homing = false, g43_5 = false, uses_pq = false, g52_reset = false;
   bool dwell = false;  ///< G4: its X is the dwell time (seconds), not an axis word
+  const word* extended = nullptr;  ///< G54.1: its P is the number of the extended work offset
+  const word* offset = nullptr;    ///< the work-offset word of the block
   const word* motion = nullptr;
   std::optional<double> ijk[3];
   const word* ijk_word[3] = {};
@@ -113,8 +116,9 @@ class reader {
       const int g = g_code(w.value);
       if (g == 280 || g == 300) l.homing = true;
       if (g == 435) l.g43_5 = true;
-      if (g == 40 || g == 50 || g == 51 || g == 80 || g == 541) l.uses_pq = true;
+      if (g == 40 || g == 50 || g == 51 || g == 80) l.uses_pq = true;
       if (g == 40) l.dwell = true;
+      if (g == 541 && !l.extended) l.extended = &w;  // its P may come first
       if (g == 520) g52 = true;
       if (g >= 0 && g <= 30 && g % 10 == 0) {
         if (l.motion) {
@@ -141,6 +145,8 @@ class reader {
       b.motion = g == 0 ? motion_kind::rapid : g == 1 ? motion_kind::linear : g == 2 ? motion_kind::arc_cw : motion_kind::arc_ccw;
     }
     for (const word& w : words_) take(b, w, l);
+    if (l.extended && !b.state.work_offset && !l.suppress)
+      error(l.extended->column, "G54.1 needs P n, the number of the extended work offset");
     machine_or_incremental(b);
     if (b.motion) state_.motion = b.motion;
     centre_or_vector(b, l);
@@ -204,9 +210,27 @@ class reader {
         return;
       case 'M': return m_word(b, w, l);
       case 'H': case 'D': return keep();
-      case 'P': case 'Q': case 'L': return l.uses_pq ? keep() : unknown();
+      case 'P':
+        if (l.extended && !b.state.work_offset) return extended_offset(b, w, l);
+        return l.uses_pq ? keep() : unknown();
+      case 'Q': case 'L': return l.uses_pq ? keep() : unknown();
       default: return unknown();
     }
+  }
+
+  /// G54 … G59 select work offsets 1 … 6; G54.1 P n extended offset n (ISO/Fanuc).
+  void select_offset(block& b, const word& w, work_offset selected, line_words& l) {
+    if (l.offset || l.extended) return error(w.column, "two work offsets in one block");
+    l.offset = &w;
+    b.state.work_offset = selected;
+  }
+
+  /// The P of G54.1: 1 … 300, the most a Fanuc control has (the writers' range).
+  void extended_offset(block& b, const word& w, line_words& l) {
+    if (!lexing::is_whole(w.value) || w.value < 1 || w.value > 300)
+      return error(w.column, "G54.1 P: the extended work offset's number must be a whole number from 1 to 300");
+    b.state.work_offset = work_offset{work_offset_family::extended, static_cast<int>(w.value)};
+    l.offset = &w;
   }
 
   bool whole(const word& w, const char* what) {
@@ -251,6 +275,10 @@ class reader {
     } else if (g == 900) {
       state_.incremental = false;
       keep();
+    } else if (g >= 540 && g <= 590 && g % 10 == 0) {
+      select_offset(b, w, {work_offset_family::g54, g / 10 - 53}, l);
+    } else if (g == 541) {
+      if (l.extended != &w) return error(w.column, "two work offsets in one block");
     } else if (kept_g(g) || (g == 520 && l.g52_reset)) {
       keep();
     } else if (g == 910) {

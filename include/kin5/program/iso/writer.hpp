@@ -20,6 +20,7 @@
 #include "../number.hpp"
 #include "../text.hpp"
 #include "../units.hpp"
+#include "../work_offsets.hpp"
 #include "vocabulary.hpp"
 
 namespace kin5::program::iso {
@@ -151,9 +152,24 @@ class writer {
       else machine_word = kept_g_word(k) || machine_word;
     }
     if (b.machine_coordinates && !machine_word) words_.push_back("G53");
+    if (b.state.work_offset) work_offset_words(b, *b.state.work_offset);
     if (b.arc && b.arc->plane != plane_) {
       plane_ = b.arc->plane;
       words_.push_back(plane_ == arc_plane::xy ? "G17" : plane_ == arc_plane::zx ? "G18" : "G19");
+    }
+  }
+
+  /// G54 … G59 (work offsets 1 … 6), G54.1 P n (extended offset n): ISO's only forms (Fanuc
+  /// 30i/31i/32i-B Operator's Manual, "Workpiece coordinate system" and "Adding workpiece
+  /// coordinate systems (G54.1 or G54)"); any other selection is refused.
+  void work_offset_words(const block& b, const work_offset& w) {
+    if (w.family == work_offset_family::g54 && w.number >= 1 && w.number <= 6) {
+      words_.push_back("G" + std::to_string(53 + w.number));
+    } else if (w.family == work_offset_family::extended && w.number >= 1 && w.number <= 300) {
+      words_.push_back("G54.1");
+      words_.push_back(code('P', w.number));
+    } else {
+      fail(b, "work offset " + spelling(w) + " has no ISO form (--work-offset-map names one)");
     }
   }
 

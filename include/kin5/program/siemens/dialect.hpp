@@ -31,7 +31,10 @@ struct dialect {
   static constexpr dialect_id id = dialect_id::siemens;
   static constexpr std::string_view name = "siemens";
   static constexpr capabilities can{.inverse_time_feed = true, .tcp_switch = true, .rotary_axis_words = true,
-                                    .tool_axis_vectors = true, .arcs = true};
+                                    .tool_axis_vectors = true, .arcs = true,
+                                    .work_offsets = {{{work_offset_family::g54, 1, 4},
+                                                      {work_offset_family::siemens, 505, 599},
+                                                      {work_offset_family::siemens, 0, 0}}}};
   static constexpr std::array<marker, 3> markers{{{"%_N_", marker::place::block_start},
                                                   {"TRAORI", marker::place::anywhere},
                                                   {"TRAFOOF", marker::place::anywhere}}};

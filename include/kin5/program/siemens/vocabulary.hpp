@@ -44,8 +44,7 @@ inline bool is_kept_keyword(std::string_view w) {
 
 /// G codes kept as written: they change no geometry.
 inline bool is_kept_g(long long g) {
-  return g == 9 || g == 40 || (g >= 54 && g <= 57) || g == 60 || g == 64 || (g >= 641 && g <= 645) ||
-         (g >= 601 && g <= 603) || g == 90 || g == 500 || (g >= 505 && g <= 599);
+  return g == 9 || g == 40 || g == 60 || g == 64 || (g >= 641 && g <= 645) || (g >= 601 && g <= 603) || g == 90;
 }
 
 /// Frame words that are harmless alone (they reset the programmable frame) and errors with axes.

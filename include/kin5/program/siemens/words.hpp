@@ -276,6 +276,12 @@ class word_reader {
     } else if (g >= 17 && g <= 19) {
       out_.plane = g == 17 ? arc_plane::xy : g == 18 ? arc_plane::zx : arc_plane::yz;
       b.kept_words.push_back(canonical);
+    } else if ((g >= 54 && g <= 57) || g == 500 || (g >= 505 && g <= 599)) {
+      // Settable zero offsets: G54 … G57 are the first four, G505 … G599 the others, G500 none
+      const work_offset w = g <= 57 ? work_offset{work_offset_family::g54, static_cast<int>(g) - 53}
+                                    : work_offset{work_offset_family::siemens, g == 500 ? 0 : static_cast<int>(g)};
+      if (b.state.work_offset) return error(start, "two work offsets in one block");
+      b.state.work_offset = w;
     } else if (is_kept_g(g)) {
       b.kept_words.push_back(canonical);
     } else if (g == 93 || g == 94) {

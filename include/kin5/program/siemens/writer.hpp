@@ -20,6 +20,7 @@
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
+#include "../work_offsets.hpp"
 #include "modal.hpp"
 #include "vocabulary.hpp"
 
@@ -169,7 +170,18 @@ class writer {
         if (const auto plane = detail::plane_of(w)) written_.plane = *plane;
       }
     }
+    if (b.state.work_offset) work_offset_word(line, b, file, *b.state.work_offset);
     if (b.machine_coordinates) detail::append_word(line, "SUPA");
+  }
+
+  /// G54 … G57 (settable zero offsets 1 … 4), G505 … G599, G500 (none): the 840D's only forms
+  /// (SINUMERIK 840D sl Programming Manual Fundamentals, "Settable zero offset (G54 to G57, G505
+  /// to G599, G53, G500, SUPA, G153)"); any other selection is refused.
+  void work_offset_word(std::string& line, const block& b, const std::string& file, const work_offset& w) {
+    const bool settable = w.family == work_offset_family::g54 && w.number >= 1 && w.number <= 4;
+    const bool more = w.family == work_offset_family::siemens && (w.number == 0 || (w.number >= 505 && w.number <= 599));
+    if (!settable && !more) fail(b, file, "work offset " + spelling(w) + " has no Siemens form (--work-offset-map names one)");
+    detail::append_word(line, spelling(w));
   }
 
   /// G17–G19 for an arc in another plane, and G0–G3 where the written text needs it.

@@ -103,13 +103,12 @@ TEST_CASE("heidenhain: resets and control bytes inside comments are not errors")
   }
 }
 
-TEST_CASE("heidenhain: CYCL DEF 247 is refused at its first line, the block kept whole") {
+TEST_CASE("heidenhain: CYCL DEF 247 selects the preset of its Q339, the block kept whole") {
   const read_result r = heidenhain::read("0 CYCL DEF 247 DATUM SETTING~\n  Q339=+1 ;DATUM NUMBER\n1 L Z+5\n", "t.h");
-  REQUIRE(r.errors.size() == 1);
-  CHECK(r.errors[0].to_string() ==
-        "t.h:1:3: error: CYCL DEF 247 (datum setting) is not supported yet: the preset it selects would be lost");
+  CHECK(r.errors.empty());
   REQUIRE(r.parsed.blocks.size() == 2);
-  CHECK(r.parsed.blocks[0].passthrough);
+  CHECK_FALSE(r.parsed.blocks[0].passthrough);
+  CHECK(r.parsed.blocks[0].state.work_offset == work_offset{work_offset_family::preset, 1});
   CHECK(r.parsed.blocks[0].text == "0 CYCL DEF 247 DATUM SETTING~\n  Q339=+1 ;DATUM NUMBER");
   CHECK(r.parsed.blocks[1].where.line == 3);
 }

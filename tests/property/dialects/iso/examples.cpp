@@ -51,7 +51,7 @@ TEST_CASE("iso: a Fanuc post style program with G43.4, homing and arcs") {
   CHECK((b[4].machine_coordinates && b[4].axes.b_deg == 0.0));
   CHECK((b[5].tool == 5 && b[5].m_codes == std::vector<int>{6}));
   CHECK(b[6].kept_words == strings{"G05.1", "Q1"});
-  CHECK(b[7].kept_words == strings{"G54"});
+  CHECK((b[7].kept_words.empty() && b[7].state.work_offset == work_offset{work_offset_family::g54, 1}));
   CHECK((b[8].motion == motion_kind::rapid && b[8].axes.b_deg == -30.0 && b[8].axes.c_deg == 45.0));
   CHECK((b[8].spindle_rpm == 8000.0 && b[8].m_codes == std::vector<int>{3}));
   CHECK((b[9].tcp == true && b[9].kept_words == strings{"G90", "H05"} && b[9].axes.x_mm == 10.0));

@@ -142,6 +142,15 @@ item draw_item(state& st) {
     case 6: {  // harmless modal words, plane selection
       for (const char* g : {"G17", "G18", "G19", "G40", "G54", "G64", "G90", "G80", "G54.1", "G98"}) {
         if (*rc::gen::inRange(0, 4) != 0) continue;
+        if (std::string(g).rfind("G54", 0) == 0) {  // a work offset, one per block: G54 … G59, G54.1 P n
+          if (b.state.work_offset) continue;
+          const bool extended = std::string(g) == "G54.1";
+          const int n = extended ? *rc::gen::inRange(1, 301) : *rc::gen::inRange(1, 7);
+          b.state.work_offset = work_offset{extended ? work_offset_family::extended : work_offset_family::g54, n};
+          it.words.push_back(draw_case(extended ? "G54.1" : "G" + std::to_string(53 + n)));
+          if (extended) it.words.push_back(spell_code('P', n));
+          continue;
+        }
         std::string w = draw_case(g);
         b.kept_words.push_back(w);
         it.words.push_back(w);

@@ -82,7 +82,7 @@ struct line {
   std::optional<std::string> verbatim;  ///< a passthrough line, written as is
 };
 
-const std::vector<std::string> kept_pool = {"G17", "G18", "G19", "G40", "G54", "G64", "G642", "G90", "G500", "G601",
+const std::vector<std::string> kept_pool = {"G17", "G18", "G19", "G40", "G54", "G57", "G64", "G642", "G90", "G500", "G505", "G601",
                                             "SOFT", "BRISK", "FFWON", "CUT2DF", "ORIWKS", "ORIAXES", "D1", "H2"};
 
 const std::vector<std::string> passthrough_pool = {
@@ -92,6 +92,12 @@ const std::vector<std::string> passthrough_pool = {
     "WORKPIECE(,\"\",,\"BOX\",0,0,-50,-80,0,0,100,100)"};
 
 void add_kept(line& l, state& s, const std::string& word) {
+  if (const auto w = parse_work_offset(word)) {  // G54 … G57, G500, G505 …: a work offset, one per block
+    if (l.expected.state.work_offset) return;
+    l.expected.state.work_offset = w;
+    l.words.push_back(spell_code('G', std::stoll(word.substr(1))));
+    return;
+  }
   l.expected.kept_words.push_back(word);
   const bool numbered = word[0] == 'G' || word[0] == 'D' || word[0] == 'H';
   l.words.push_back(numbered ? spell_code(word[0], std::stoll(word.substr(1))) : draw_case(word));

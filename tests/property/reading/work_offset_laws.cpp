@@ -1,0 +1,295 @@
+// Work-offset selections between every ordered pair of dialects. The table below is the one of
+// docs/dialects/*.md, written here independently of the code: which selections each dialect's
+// reader gives and its writer writes, and which mean the same across dialects (ISO G54 … G57 and
+// Siemens G54 … G57, the control's first settable zero offsets). Everything else crosses only by
+// the user's mapping (`--work-offset-map`), and without one it is refused.
+//
+// 1. writers and readers: a generated program of selections and moves, written by the target's
+//    writer and read back by its reader, selects the same offset at every move; or the writer
+//    refuses it, exactly when the table says the target has no such selection.
+// 2. translation: the program, as text of its own dialect, translated (`translate`, or `reverse`
+//    into APT) with a random mapping: the output read back selects at every move what the table
+//    and the mapping say, or the run is refused with one error per selection without an
+//    equivalent, naming it, and nothing is written.
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <rapidcheck.h>
+
+#include <kin5/kin5.hpp>
+
+using namespace kin5;
+using namespace kin5::program;
+using program_text = kin5::program::program;
+
+namespace {
+
+using family = work_offset_family;
+const std::vector<dialect> every_dialect = {dialect::siemens, dialect::heidenhain, dialect::iso, dialect::apt};
+
+/// What the reader of `d` gives and its writer writes (the documented table).
+bool selects(dialect d, const work_offset& w) {
+  switch (d) {
+    case dialect::iso:
+      return (w.family == family::g54 && w.number >= 1 && w.number <= 6) ||
+             (w.family == family::extended && w.number >= 1 && w.number <= 300);
+    case dialect::siemens:
+      return (w.family == family::g54 && w.number >= 1 && w.number <= 4) ||
+             (w.family == family::siemens && (w.number == 0 || (w.number >= 505 && w.number <= 599)));
+    case dialect::heidenhain: return w.family == family::preset && w.number >= 0 && w.number <= 65535;
+    default: return false;
+  }
+}
+
+/// A selection of any family, mostly one that some dialect has.
+work_offset any_selection() {
+  switch (*rc::gen::inRange(0, 5)) {
+    case 0: return {family::g54, *rc::gen::inRange(1, 7)};
+    case 1: return {family::extended, *rc::gen::inRange(1, 301)};
+    case 2: return {family::siemens, *rc::gen::element(0, 505, 540, 599)};
+    case 3: return {family::preset, *rc::gen::element(0, 1, 7, 65535)};
+    default: return {family::g54, *rc::gen::inRange(7, 10)};  // G59.1 … G59.3 (LinuxCNC): no dialect here
+  }
+}
+
+/// A selection the reader of `d` gives (not APT's: it has none).
+work_offset selection_of(dialect d) {
+  switch (d) {
+    case dialect::iso:
+      if (*rc::gen::inRange(0, 2)) return {family::extended, *rc::gen::inRange(1, 301)};
+      return {family::g54, *rc::gen::inRange(1, 7)};
+    case dialect::siemens:
+      switch (*rc::gen::inRange(0, 3)) {
+        case 0: return {family::siemens, 0};
+        case 1: return {family::siemens, *rc::gen::inRange(505, 600)};
+        default: return {family::g54, *rc::gen::inRange(1, 5)};
+      }
+    default: return {family::preset, *rc::gen::inRange(0, 65536)};
+  }
+}
+
+/// Selections and moves as the reader of `from` gives them; under tool-tip tracking with the
+/// rotary words of a B/C machine when `rotary` (for the translation), else plain X Y Z moves.
+std::vector<block> draw_program(dialect from, bool rotary) {
+  std::vector<block> out;
+  if (rotary) {
+    block on;
+    on.tcp = true;
+    out.push_back(on);
+  }
+  const int n = *rc::gen::inRange(1, 12);
+  double x = 0;
+  for (int k = 0; k < n; ++k) {
+    block b;
+    if (*rc::gen::inRange(0, 3) == 0) {
+      b.state.work_offset = selection_of(from);
+    } else {
+      b.motion = motion_kind::linear;
+      b.axes.x_mm = x += 1, b.axes.y_mm = 2.5, b.axes.z_mm = 10;
+      if (rotary) b.axes.b_deg = 10, b.axes.c_deg = 20;
+      b.feed = 500;
+    }
+    out.push_back(b);
+  }
+  return out;
+}
+
+/// The selection in effect at each move of `blocks`.
+std::vector<std::optional<work_offset>> trace_of(const std::vector<block>& blocks) {
+  std::vector<std::optional<work_offset>> t;
+  std::optional<work_offset> current;
+  for (const block& b : blocks) {
+    if (b.state.work_offset) current = b.state.work_offset;
+    if (b.moves()) t.push_back(current);
+  }
+  return t;
+}
+
+/// The same selection in `to` without a mapping: ISO and Siemens G54 … G57, or the same dialect.
+bool same_meaning(const work_offset& w, dialect from, dialect to) {
+  const bool g_code = (from == dialect::iso || from == dialect::siemens) && (to == dialect::iso || to == dialect::siemens);
+  return from == to || (g_code && w.family == family::g54 && w.number <= 4);
+}
+
+}  // namespace
+
+TEST_CASE("work offsets: the table of selections is each dialect's capability") {
+  for (const dialect d : every_dialect)
+    for (const family f : {family::g54, family::extended, family::siemens, family::preset})
+      for (int n = 0; n <= 1000; ++n) CHECK(capabilities_of(d).writes({f, n}) == selects(d, {f, n}));
+  CHECK(capabilities_of(dialect::heidenhain).writes({family::preset, 65535}));
+  CHECK_FALSE(capabilities_of(dialect::heidenhain).writes({family::preset, 65536}));
+}
+
+TEST_CASE("work offsets: every ordered pair of dialects writes a selection it has and refuses one it lacks") {
+  for (const dialect from : every_dialect)
+    for (const dialect to : every_dialect) {
+      if (from == dialect::apt) continue;  // CL data select no work offset
+      const std::string name = std::string(kin5::program::name(from)) + " -> " + std::string(kin5::program::name(to));
+      const bool ok = rc::check(name, [from, to] {
+        program_text p;
+        p.language = from;
+        p.file = "gen";
+        p.blocks = draw_program(from, false);
+        bool writable = true;
+        for (const block& b : p.blocks)
+          if (b.state.work_offset && !selects(to, *b.state.work_offset)) writable = false;
+        std::string text;
+        try {
+          text = write(to, p);
+        } catch (const std::invalid_argument& e) {
+          RC_ASSERT(!writable);
+          RC_ASSERT(std::string(e.what()).find("work offset") != std::string::npos);
+          return;
+        }
+        RC_ASSERT(writable);
+        const read_result back = read(to, text, "back");
+        RC_ASSERT(back.ok());
+        RC_ASSERT(trace_of(back.parsed.blocks) == trace_of(p.blocks));
+      });
+      CHECK(ok);
+    }
+}
+
+TEST_CASE("work offsets: translation writes the same selection, the mapped one, or refuses at the selection") {
+  using M = machines::dmu_80p;
+  for (const dialect from : {dialect::siemens, dialect::heidenhain, dialect::iso})
+    for (const dialect to : every_dialect) {
+      const std::string name = std::string(kin5::program::name(from)) + " -> " + std::string(kin5::program::name(to));
+      const bool ok = rc::check(name, [from, to] {
+        program_text p;
+        p.language = from;
+        p.file = "w";
+        p.blocks = draw_program(from, true);
+        const std::string text = write(from, p);
+        // A mapping of some of the program's selections: to one of the target's, to one it
+        // lacks, or dropped.
+        std::map<std::pair<int, int>, std::optional<work_offset>> chosen;
+        common_options common;
+        for (const block& b : p.blocks) {
+          if (!b.state.work_offset || *rc::gen::inRange(0, 2) == 0) continue;
+          const work_offset w = *b.state.work_offset;
+          if (chosen.count({static_cast<int>(w.family), w.number})) continue;
+          std::optional<work_offset> target;
+          const int kind = *rc::gen::inRange(0, 3);
+          if (kind == 0 && to != dialect::apt) target = selection_of(to);
+          if (kind == 1) target = any_selection();
+          chosen[{static_cast<int>(w.family), w.number}] = target;
+          const std::string entry = map_key(w) + "=" + (target ? map_key(*target) : "");
+          RC_ASSERT(common.work_offsets.add(entry));
+        }
+        // What the table and the mapping say each selection becomes; the refused ones.
+        std::vector<block> want = p.blocks;
+        std::size_t refused = 0;
+        for (block& b : want) {
+          if (!b.state.work_offset) continue;
+          const work_offset w = *b.state.work_offset;
+          const auto m = chosen.find({static_cast<int>(w.family), w.number});
+          if (m != chosen.end()) {
+            if (m->second && !selects(to, *m->second)) ++refused;
+            b.state.work_offset = m->second;
+          } else if (!same_meaning(w, from, to)) {
+            ++refused;
+          }
+        }
+        std::unique_ptr<block_translator> t;
+        if (to == dialect::apt) {
+          t = make_reverse<M>(from, "w", report_detail::exceptions_only, common);
+        } else {
+          translate_options options;
+          options.output_dialect = to;
+          options.common = common;
+          t = make_translator<M, M>(from, "w", options, report_detail::exceptions_only);
+        }
+        string_sink out;
+        const auto run = stream_text(*t, text, from, "w", to, out);
+        RC_ASSERT(run.input.ok());
+        if (refused) {
+          RC_ASSERT(t->result().errors.size() == refused);
+          for (const diagnostic& d : t->result().errors) {
+            RC_ASSERT(d.option.rfind("--work-offset-map ", 0) == 0);
+            RC_ASSERT(d.message.find(d.construct + ":") == 0);
+          }
+          RC_ASSERT(out.text.empty());
+          return;
+        }
+        RC_ASSERT(run.ok(*t));
+        const read_result back = read(to, out.text, "back");
+        RC_ASSERT(back.ok());
+        RC_ASSERT(trace_of(back.parsed.blocks) == trace_of(want));
+      });
+      CHECK(ok);
+    }
+}
+
+TEST_CASE("work offsets: each reader's spellings, and the refusals around them") {
+  struct row {
+    dialect d;
+    const char* text;
+    std::optional<work_offset> selected;
+    const char* error;  // the first error, or empty
+  };
+  const std::vector<row> rows = {
+      {dialect::iso, "G54\n", work_offset{family::g54, 1}, ""},
+      {dialect::iso, "G90 G59 G17\n", work_offset{family::g54, 6}, ""},
+      {dialect::iso, "G54.1 P48\n", work_offset{family::extended, 48}, ""},
+      {dialect::iso, "P7 G54.1\n", work_offset{family::extended, 7}, ""},
+      {dialect::iso, "G54.1\n", std::nullopt, "t:1:1: error: G54.1 needs P n, the number of the extended work offset"},
+      {dialect::iso, "G54.1 P0\n", std::nullopt,
+       "t:1:7: error: G54.1 P: the extended work offset's number must be a whole number from 1 to 300"},
+      {dialect::iso, "G54 G55\n", std::nullopt, "t:1:5: error: two work offsets in one block"},
+      {dialect::iso, "G54 G54.1 P2\n", std::nullopt, "t:1:1: error: two work offsets in one block"},
+      {dialect::siemens, "N10 G54\n", work_offset{family::g54, 1}, ""},
+      {dialect::siemens, "N10 G57\n", work_offset{family::g54, 4}, ""},
+      {dialect::siemens, "N10 G505\n", work_offset{family::siemens, 505}, ""},
+      {dialect::siemens, "N10 G599\n", work_offset{family::siemens, 599}, ""},
+      {dialect::siemens, "N10 G500\n", work_offset{family::siemens, 0}, ""},
+      {dialect::siemens, "N10 G54 G505\n", std::nullopt, "t:1:9: error: two work offsets in one block"},
+      {dialect::siemens, "N10 G58 X10\n", std::nullopt,
+       "t:1:5: error: G58 changes the working frame; kin5 does not model frame changes"},
+      {dialect::heidenhain, "1 CYCL DEF 247 DATUM SETTING ~\n  Q339=+3 ;DATUM NUMBER\n", work_offset{family::preset, 3}, ""},
+      {dialect::heidenhain, "1 CYCL DEF 247 DATUM SETTING Q339=+0\n", work_offset{family::preset, 0}, ""},
+      {dialect::heidenhain, "1 CYCL DEF 247 DATUM SETTING\n", std::nullopt,
+       "t:1:3: error: CYCL DEF 247 (datum setting) without Q339 in its block: the preset it selects is not known"},
+      {dialect::heidenhain, "1 CYCL DEF 247 DATUM SETTING ~\n  Q339=+Q5\n", std::nullopt,
+       "t:2:3: error: CYCL DEF 247 (datum setting): only Q339=n, a preset number from 0 to 65535, is read"},
+      {dialect::heidenhain, "1 CYCL DEF 247 Q339=+1.5\n", std::nullopt,
+       "t:1:16: error: CYCL DEF 247 (datum setting): only Q339=n, a preset number from 0 to 65535, is read"},
+      {dialect::heidenhain, "1 CYCL DEF 7.0 DATUM SHIFT\n2 CYCL DEF 7.1 X+10\n", std::nullopt,
+       "t:2:3: error: CYCL DEF 7 changes the working frame; kin5 does not model frame changes"},
+  };
+  for (const row& r : rows) {
+    INFO(r.text);
+    const read_result got = read(r.d, r.text, "t");
+    if (*r.error) {
+      REQUIRE_FALSE(got.errors.empty());
+      CHECK(got.errors[0].to_string() == r.error);
+      continue;
+    }
+    CHECK(got.errors.empty());
+    std::optional<work_offset> selected;
+    for (const block& b : got.parsed.blocks)
+      if (b.state.work_offset) selected = b.state.work_offset;
+    CHECK(selected == r.selected);
+  }
+}
+
+TEST_CASE("work offsets: --work-offset-map entries") {
+  work_offset_map map;
+  CHECK(map.add("G54=1,g55=2"));
+  CHECK(map.add("G54.1P7=G505"));
+  CHECK(map.add("G500="));
+  CHECK(map.target_of({family::g54, 1}) == std::optional<std::optional<work_offset>>(work_offset{family::preset, 1}));
+  CHECK(map.target_of({family::g54, 2}) == std::optional<std::optional<work_offset>>(work_offset{family::preset, 2}));
+  CHECK(map.target_of({family::extended, 7}) ==
+        std::optional<std::optional<work_offset>>(work_offset{family::siemens, 505}));
+  CHECK(map.target_of({family::siemens, 0}) == std::optional<std::optional<work_offset>>(std::optional<work_offset>{}));
+  CHECK_FALSE(map.target_of({family::g54, 3}));
+  for (const char* bad : {"G54", "G54=X", "G53=1", "G54=1", "G56=1,G56=2", "=1", "G54.1=1", "G504=1", "-1=G54", "G54=+1"})
+    CHECK_FALSE(map.add(bad));
+  CHECK_FALSE(map.target_of({family::g54, 4}));  // nothing of a refused list is kept
+}
