@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstring>
 #include <string_view>
 #include <vector>
 
@@ -18,18 +19,31 @@ struct text_line {
 };
 
 /// Calls `f(text_line)` for each line of `text`, in order, without storing them. A final line
-/// ending does not start an empty last line.
+/// ending does not start an empty last line. Line ends are found with `memchr`: the next LF,
+/// searched for once, then a CR before it; so a text whose lines end in CR alone is split in
+/// one pass too.
 template <class F>
 void for_each_line(std::string_view text, F&& f) {
-  std::size_t start = 0, number = 1;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '\n' || text[i] == '\r') {
-      f(text_line{text.substr(start, i - start), number++});
-      if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
-      start = i + 1;
+  const char* const first = text.data();
+  const char* const last = first + text.size();
+  const char* lf = first;  // the next LF at or after `start` (`last`: none), found once
+  std::size_t number = 1;
+  for (const char* start = first; start < last;) {
+    if (lf < start) lf = start;
+    if (lf < last && *lf != '\n') {
+      const void* found = std::memchr(lf, '\n', static_cast<std::size_t>(last - lf));
+      lf = found ? static_cast<const char*>(found) : last;
     }
+    const void* cr = std::memchr(start, '\r', static_cast<std::size_t>(lf - start));
+    const char* end = cr ? static_cast<const char*>(cr) : lf;
+    if (end == last) {
+      f(text_line{std::string_view(start, static_cast<std::size_t>(last - start)), number});
+      return;
+    }
+    f(text_line{std::string_view(start, static_cast<std::size_t>(end - start)), number++});
+    start = end + 1;
+    if (*end == '\r' && start < last && *start == '\n') ++start;
   }
-  if (start < text.size()) f(text_line{text.substr(start), number});
 }
 
 /// The lines of `text`. A final line ending does not start an empty last line.
