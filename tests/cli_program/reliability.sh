@@ -141,8 +141,10 @@ case "$name" in
     # name. KIN5_OUTPUT_NAMED_TEMP=1 makes the tool use the named temporary file it falls back
     # to where the file system has no O_TMPFILE; SIGKILL cannot be caught, so it is not tried
     # there. The signal is sent once the write has begun: a kin5 temporary file in the
-    # directory, or an open deleted file in the process.
-    big big.mpf 100000
+    # directory, or an open deleted file in the process. The program is long enough for the
+    # write to outlast that polling on a loaded machine (100,000 blocks were written in about
+    # 0.1 s of CPU, less than one poll at a load of 14).
+    big big.mpf 250000
     for mode in unnamed named; do
       for sig in TERM INT HUP KILL; do
         [ "$mode.$sig" = named.KILL ] && continue
