@@ -91,7 +91,7 @@ int with_program(const machine_model& from, const machine_model& to, const match
   const prog::read_result in = prog::read(d, *bytes, name);
   if (!in.ok()) {
     for (const auto& e : in.errors) std::fprintf(stderr, "%s\n", e.to_string().c_str());
-    std::fprintf(stderr, "kin5 match: %zu errors in %s; no report\n", in.errors.size(), name.c_str());
+    std::fprintf(stderr, "kin5 match: %zu errors in %s; no report\n", in.error_count(), name.c_str());
     return exit_codes::input_error;
   }
   const rigid_transform setup = default_setup(from.geometry.id, to.geometry.id);

@@ -20,6 +20,7 @@
 // non-zero exit OUT is neither created nor changed (output_file.hpp: a temporary file linked or
 // renamed into place when complete; FIFOs, devices and stdout get the text only then).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cerrno>
 #include <cstdio>
@@ -114,14 +115,16 @@ constexpr std::size_t max_shown = 100;
 /// as `FILE:LINE:COL: severity: text`, the format compilers use (`FILE: severity: text` for a
 /// message about the whole file): the first `max_shown` of each severity, then one line with
 /// the count of those not shown.
-void print_in_source_order(std::vector<message> messages, const std::string& prefix) {
+/// `not_kept`: errors and warnings the reader only counted (`read_result`), among those not shown.
+void print_in_source_order(std::vector<message> messages, const std::string& prefix,
+                           std::array<std::size_t, 2> not_kept = {}) {
   std::stable_sort(messages.begin(), messages.end(), [](const message& a, const message& b) {
     const auto& l = a.diagnostic.where;
     const auto& r = b.diagnostic.where;
     return l.line != r.line ? l.line < r.line : l.column < r.column;
   });
   constexpr std::string_view severities[] = {"error", "warning", "note"};
-  std::size_t shown[3] = {}, hidden[3] = {};
+  std::size_t shown[3] = {}, hidden[3] = {not_kept[0], not_kept[1], 0};
   for (const auto& m : messages) {
     const auto k = static_cast<std::size_t>(std::find(severities, severities + 2, m.severity) - severities);
     if (shown[k] == max_shown) {
@@ -201,10 +204,11 @@ int execute(const job& j) {
     std::vector<message> messages;
     collect(messages, run.input.errors, "error");
     collect(messages, run.input.warnings, "warning");
-    print_in_source_order(std::move(messages), prefix);
+    print_in_source_order(std::move(messages), prefix, {run.input.errors_not_kept, run.input.warnings_not_kept});
   }
   if (!run.input.ok()) {
-    std::cerr << prefix << run.input.errors.size() << (run.input.errors.size() == 1 ? " error" : " errors") << " in "
+    const std::size_t n = run.input.error_count();
+    std::cerr << prefix << n << (n == 1 ? " error" : " errors") << " in "
               << file << " (read as " << prog::name(dialect) << "); nothing written\n";
     return exit_codes::input_error;
   }

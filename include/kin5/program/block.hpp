@@ -181,12 +181,29 @@ struct diagnostic {
   }
 };
 
-/// A reader's result: the program, and every error found. A program with errors must not be
-/// translated; readers keep going after an error so that one run lists them all.
+/// Diagnostics of one severity a reader keeps. Readers keep going after an error so that one
+/// run lists them all, but only the first `max_kept_diagnostics` are kept and the others
+/// counted, so that reading takes bounded memory whatever the input (4 MiB of NUL bytes are
+/// 4,194,304 errors). The tool prints the first 100 of each severity in source order and the
+/// count of the rest.
+inline constexpr std::size_t max_kept_diagnostics = 1000;
+
+/// Appends `d` to `kept` while it holds fewer than `max_kept_diagnostics`; else counts it in `more`.
+inline void keep_or_count(std::vector<diagnostic>& kept, std::size_t& more, diagnostic&& d) {
+  if (kept.size() < max_kept_diagnostics) kept.push_back(std::move(d));
+  else ++more;
+}
+/// A reader's result: the program and its diagnostics; one with errors must not be translated.
 struct read_result {
   program parsed;
-  std::vector<diagnostic> errors;
+  std::vector<diagnostic> errors;    ///< the first `max_kept_diagnostics` found (`add_error`)
   std::vector<diagnostic> warnings;  ///< accepted, but worth a look (printed as "warning:")
+  std::size_t errors_not_kept = 0;   ///< errors found after the first `max_kept_diagnostics`
+  std::size_t warnings_not_kept = 0;
+  void add_error(diagnostic d) { keep_or_count(errors, errors_not_kept, std::move(d)); }
+  void add_warning(diagnostic d) { keep_or_count(warnings, warnings_not_kept, std::move(d)); }
+  std::size_t error_count() const { return errors.size() + errors_not_kept; }
+  std::size_t warning_count() const { return warnings.size() + warnings_not_kept; }
   /// How finely the text writes its numbers. The streaming driver fills it from the text
   /// (`scan_resolution`) where the reader leaves it empty.
   number_resolution resolution{};

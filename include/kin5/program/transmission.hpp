@@ -65,13 +65,13 @@ void read_transmitted(std::string_view text, const std::string& file_path, read_
   const transmitted_text t = strip_transmission(text);
   if (const std::size_t bom = t.body.find("\xEF\xBB\xBF"); bom != std::string_view::npos) {
     const auto [line, column] = line_and_column(t.body, bom);
-    diagnostics.errors.push_back({{file_name(file_path), line, column},
+    diagnostics.add_error({{file_name(file_path), line, column},
                                   "byte-order mark inside the program (one is allowed only at the start of the file)"});
     return;
   }
   if (const std::size_t etx = t.body.find('\x03'); etx != std::string_view::npos) {
     const auto [line, column] = line_and_column(t.body, etx);
-    diagnostics.errors.push_back({{file_name(file_path), line, column},
+    diagnostics.add_error({{file_name(file_path), line, column},
                                   "end-of-transmission byte 0x03 inside the program (one is allowed only after its end)"});
     return;
   }
@@ -85,7 +85,7 @@ void read_transmitted(std::string_view text, const std::string& file_path, read_
          on_block(std::move(b));
        }));
   if (!ended)
-    diagnostics.errors.push_back({{file_name(file_path), t.etx_line, t.etx_column},
+    diagnostics.add_error({{file_name(file_path), t.etx_line, t.etx_column},
                                   "end-of-transmission byte 0x03 before the end of the program"});
 }
 

@@ -33,8 +33,8 @@ namespace kin5::program::apt::detail {
 /// Reads one statement into a block; remembers whether a RAPID is pending.
 class statement_reader {
  public:
-  statement_reader(const file_name& file, bool& rapid_pending, std::vector<diagnostic>& errors)
-      : file_(file), rapid_pending_(rapid_pending), errors_(errors) {}
+  statement_reader(const file_name& file, bool& rapid_pending, read_result& diagnostics)
+      : file_(file), rapid_pending_(rapid_pending), diagnostics_(diagnostics) {}
 
   block read(const statement& st) {
     st_ = &st;
@@ -67,14 +67,14 @@ class statement_reader {
  private:
   const file_name& file_;
   bool& rapid_pending_;
-  std::vector<diagnostic>& errors_;
+  read_result& diagnostics_;
   const statement* st_ = nullptr;
   bool inch_ = false;  // UNITS/INCHES: GOTO points (and FEDRAT without a unit) in inches
   code c_;
   std::vector<argument> args_;
 
   void error(std::size_t offset, std::string message, std::string construct = {}) {
-    errors_.push_back({st_->at(file_, offset), std::move(message), std::move(construct)});
+    diagnostics_.add_error({st_->at(file_, offset), std::move(message), std::move(construct)});
   }
 
   /// Reports the first control byte before `end`; true if there is one.
@@ -274,7 +274,7 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
                         const block_sink& on_block) {
   const file_name file(file_path);  // one string for every location in the file
   bool rapid_pending = false;
-  detail::statement_reader reader(file, rapid_pending, diagnostics.errors);
+  detail::statement_reader reader(file, rapid_pending, diagnostics);
   read_transmitted(text, file_path, diagnostics, on_block, [&](std::string_view body, const block_sink& sink) {
     for_each_statement(body, [&](statement&& st) { sink(reader.read(st)); });
   });

@@ -41,8 +41,8 @@ class word_checks {
   scanner scan_;
   read_result& out_;
 
-  void error(std::size_t pos, std::string message) { out_.errors.push_back({t_.where(pos), std::move(message)}); }
-  void warning(std::size_t pos, std::string message) { out_.warnings.push_back({t_.where(pos), std::move(message)}); }
+  void error(std::size_t pos, std::string message) { out_.add_error({t_.where(pos), std::move(message)}); }
+  void warning(std::size_t pos, std::string message) { out_.add_warning({t_.where(pos), std::move(message)}); }
 
   /// Reports a word's number problem; true when the word is usable.
   bool value_ok(word& w) {

@@ -82,7 +82,7 @@ class reader {
   std::vector<word> words_;  // reused from line to line
 
   void error(std::size_t column, std::string message) {
-    result_.errors.push_back({{file_, line_, column}, std::move(message)});
+    result_.add_error({{file_, line_, column}, std::move(message)});
     failed_ = true;
   }
 
@@ -340,7 +340,7 @@ class reader {
       if (b.axes.z_mm) state_.last[2].reset();
     } else if (state_.incremental && b.moves()) {
       // Posts write `G91 G28 Z0` to home and mean the following moves as absolute; say so once.
-      result_.warnings.push_back({b.where, "G91 of line " + std::to_string(state_.incremental_line) +
+      result_.add_warning({b.where, "G91 of line " + std::to_string(state_.incremental_line) +
                                                " not cancelled by G90: axis words read as absolute"});
       state_.incremental = false;
     }

@@ -35,7 +35,7 @@ namespace kin5::program::siemens::detail {
 inline void frame_words(line_parse& p) {
   for (const auto& [word, column] : p.frame_words) {
     if (p.has_geometry || p.frame_arguments)
-      p.errors.push_back({{p.b.where.file, p.b.where.line, column + 1}, frame_message(word)});
+      keep_or_count(p.errors, p.errors_not_kept, {{p.b.where.file, p.b.where.line, column + 1}, frame_message(word)});
     else
       p.b.kept_words.push_back(word);
   }
@@ -99,7 +99,7 @@ inline void program_end(block& b, const modal_state& state) {
 /// diagnostics to `result` in column order.
 inline void finish(line_parse& p, modal_state& state, read_result& result) {
   block& b = p.b;
-  if (p.control) p.unknown.clear();  // the arguments of a refused jump or call
+  if (p.control) p.unknown.clear(), p.unknown_not_kept = 0;  // the arguments of a refused jump or call
   frame_words(p);
   if (is_passthrough(p)) {
     block kept;
@@ -109,7 +109,8 @@ inline void finish(line_parse& p, modal_state& state, read_result& result) {
     kept.passthrough = true;
     b = std::move(kept);
   } else {
-    for (auto& d : p.unknown) p.errors.push_back(std::move(d));
+    for (auto& d : p.unknown) keep_or_count(p.errors, p.errors_not_kept, std::move(d));
+    p.errors_not_kept += p.unknown_not_kept;
     std::stable_partition(b.kept_words.begin(), b.kept_words.end(), [](const std::string& w) { return !is_late_kept(w); });
     if (b.motion) state.motion = b.motion;
     if (p.plane) state.plane = *p.plane;
@@ -119,15 +120,17 @@ inline void finish(line_parse& p, modal_state& state, read_result& result) {
       std::vector<diagnostic> found;
       tool_axis_vector(p, found);
       arc(p, state, found);
-      for (auto& d : found) p.errors.push_back(std::move(d));
+      for (auto& d : found) keep_or_count(p.errors, p.errors_not_kept, std::move(d));
     }
     state.move(b);
     program_end(b, state);
   }
   std::stable_sort(p.errors.begin(), p.errors.end(),
                    [](const diagnostic& a, const diagnostic& c) { return a.where.column < c.where.column; });
-  for (auto& d : p.errors) result.errors.push_back(std::move(d));
-  for (auto& d : p.warnings) result.warnings.push_back(std::move(d));
+  for (auto& d : p.errors) result.add_error(std::move(d));
+  for (auto& d : p.warnings) result.add_warning(std::move(d));
+  result.errors_not_kept += p.errors_not_kept;
+  result.warnings_not_kept += p.warnings_not_kept;
 }
 
 /// `%_N_NAME_MPF`, `%_N_NAME_SPF`, `%NAME`: the program name, or nothing if `line` is not a header.

@@ -40,7 +40,8 @@ struct line_parse {
   bool control = false;          ///< a jump or call refused: the line's other words are its arguments
   std::vector<std::pair<std::string, std::size_t>> frame_words;  ///< TRANS, ROT, G58, … (column)
   std::vector<diagnostic> unknown;  ///< errors if the block has geometry, else it is passthrough
-  std::vector<diagnostic> errors, warnings;
+  std::vector<diagnostic> errors, warnings;  ///< the first `max_kept_diagnostics` of each
+  std::size_t errors_not_kept = 0, warnings_not_kept = 0, unknown_not_kept = 0;  ///< found after them
   bool named_tool = false;                          ///< T="name" seen
   std::string motion_word, feed_word, tcp_word;     ///< as written, for "conflicting words"
 };
@@ -63,8 +64,8 @@ class word_reader {
   line_parse& out_;
 
   source_location at(std::size_t pos) const { return {file_, line_, pos + 1}; }
-  void error(std::size_t pos, std::string m) { out_.errors.push_back({at(pos), std::move(m)}); }
-  void unknown(std::size_t pos, std::string m) { out_.unknown.push_back({at(pos), std::move(m)}); }
+  void error(std::size_t pos, std::string m) { keep_or_count(out_.errors, out_.errors_not_kept, {at(pos), std::move(m)}); }
+  void unknown(std::size_t pos, std::string m) { keep_or_count(out_.unknown, out_.unknown_not_kept, {at(pos), std::move(m)}); }
   void mark_geometry(std::size_t pos) {
     if (!out_.has_geometry) out_.geometry_column = pos;
     out_.has_geometry = true;
@@ -351,7 +352,7 @@ class word_reader {
       out_.has_content = true;
       const std::string_view a = lexing::trim(args);
       if (!a.empty() && a != "1")
-        out_.warnings.push_back({at(start), "arguments of TRAORI(" + std::string(a) + ") are not kept; written as TRAORI"});
+        keep_or_count(out_.warnings, out_.warnings_not_kept, {at(start), "arguments of TRAORI(" + std::string(a) + ") are not kept; written as TRAORI"});
       set_tcp(true, name, start);
     } else if (name == "MSG") {
       out_.has_msg = true;

@@ -1,0 +1,50 @@
+// Reading keeps at most `max_kept_diagnostics` errors and counts the rest, whatever the input:
+// memory per read is bounded (4 MiB of NUL bytes were 4,194,304 kept errors, 1.8 GB). The
+// count stays exact, and the kept errors are the first found, so the tool prints the same first
+// 100 and the same totals.
+#include <algorithm>
+#include <string>
+#include <type_traits>
+
+#include <catch2/catch.hpp>
+
+#include <kin5/program/io.hpp>
+
+using namespace kin5::program;
+
+namespace {
+std::string repeated(std::string_view piece, std::size_t k) {
+  std::string s;
+  for (std::size_t i = 0; i < k; ++i) s += piece;
+  return s;
+}
+}  // namespace
+
+TEST_CASE("reading: k lines of a bad byte keep the first errors and count all k") {
+  for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t) {
+    INFO(D::name);
+    const std::size_t per_line = read(D::id, "\x01\n", "t").error_count();
+    REQUIRE(per_line >= 1);
+    for (std::size_t k : {std::size_t{0}, std::size_t{1}, std::size_t{999}, std::size_t{1000}, std::size_t{1001},
+                          std::size_t{2600}}) {
+      INFO("k = " << k);
+      const read_result r = read(D::id, repeated("\x01\n", k), "t");
+      CHECK(r.error_count() == k * per_line);
+      CHECK(r.errors.size() == std::min(k * per_line, max_kept_diagnostics));
+      CHECK(r.errors_not_kept == k * per_line - r.errors.size());
+      if (!r.errors.empty())  // the first found are kept: the last kept is on the line it was found on
+        CHECK(r.errors.back().where.line == (r.errors.size() + per_line - 1) / per_line);
+    }
+  });
+}
+
+TEST_CASE("reading: one line of 5000 NUL bytes keeps at most the cap") {
+  for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t) {
+    INFO(D::name);
+    const read_result r = read(D::id, std::string(5000, '\0') + "\n", "t");
+    CHECK(r.errors.size() <= max_kept_diagnostics);
+    CHECK(r.errors.size() == std::min(r.error_count(), max_kept_diagnostics));
+    CHECK(r.warnings.size() <= max_kept_diagnostics);
+    if (D::id == dialect::siemens || D::id == dialect::heidenhain) CHECK(r.error_count() >= 5000);  // one per byte
+  });
+}
