@@ -66,6 +66,7 @@ struct stream_result {
   /// hold), at that block.
   std::optional<program::diagnostic> writer_error;
   bool sink_failed = false;                ///< `flush_if_full` failed
+  std::size_t record_chunks = 0;           ///< chunks the block store took for the first pass
   /// Whether the whole output reached the sink: no error anywhere.
   bool ok(block_translator& t) const {
     return input.ok() && t.result().ok() && !writer_error && !sink_failed;
@@ -108,6 +109,7 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
     t.plan(b);
     records.push(b, second_pass_reads_text(b));
   });
+  run.record_chunks = records.chunks();
   if (run.input.ok() && !says_something)
     run.input.errors.push_back(translate_detail::file_error(file, "empty program: no block to translate"));
   if (run.input.ok() && source_language == program::dialect::apt && moving == 0 && not_understood > 0)
