@@ -31,11 +31,19 @@ namespace detail {
 /// A passthrough block's text without a leading block number (Heidenhain's `12 `): its content
 /// once a writer has renumbered the blocks.
 inline std::string_view without_block_number(std::string_view text) {
-  std::size_t k = 0;
+  std::size_t k = 0;  // lines of blanks and `~` before the number go with it (`  ~\n14 Q1=2`)
+  for (std::size_t e = 0;; k = ++e) {
+    while (e < text.size() && (program::is_space(text[e]) || text[e] == '~')) ++e;
+    if (e >= text.size() || text[e] != '\n') break;
+  }
   while (k < text.size() && program::is_space(text[k])) ++k;
   std::size_t d = k;
   while (d < text.size() && program::is_digit(text[d])) ++d;
-  if (d == k) return text.substr(k);
+  if (d == k) {
+    k = 0;
+    while (k < text.size() && program::is_space(text[k])) ++k;
+    return text.substr(k);
+  }
   while (d < text.size() && program::is_space(text[d])) ++d;
   return text.substr(d);
 }

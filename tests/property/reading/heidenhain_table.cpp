@@ -67,6 +67,16 @@ TEST_CASE("heidenhain: a block whose number follows a `~` line is written as one
   CHECK(written.find("14") == std::string::npos);
 }
 
+TEST_CASE("heidenhain: `~` lines before a passthrough's text stay when no number follows them") {
+  // Dropped, the text read back would lack them (seed-1 fuzzing).
+  const read_result r = heidenhain::read("~\n~\nBLK FORM 0.1 Z X+0 Y+0 Z-40\n", "t.h");
+  REQUIRE(r.errors.empty());
+  const std::string written = heidenhain::write(r.parsed);
+  INFO(written);
+  CHECK(errors_of(written).empty());
+  CHECK(written.find("0 ~\n~\nBLK FORM 0.1 Z X+0 Y+0 Z-40\n") != std::string::npos);
+}
+
 TEST_CASE("heidenhain: cycle parameters after `;comment~` stay in their cycle's block") {
   // The cycle itself is refused (refusal_table.cpp), once, at its first line: its parameter
   // lines are part of its block, not blocks of their own.

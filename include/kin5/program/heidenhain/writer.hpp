@@ -142,7 +142,8 @@ class writer {
     std::string body = b.text;
     if (same_) {
       // Lines of blanks and `~` before the block number (`  ~\n14 Q1=2`) are dropped with it:
-      // kept, they would continue the new number's line onto the old number.
+      // kept, they would continue the new number's line onto the old number. Without a number
+      // after them they stay (`0 ~` then the text reads back as the same text).
       std::size_t k = 0;
       for (std::size_t e = 0;; k = ++e) {
         while (e < body.size() && (is_space(body[e]) || body[e] == '~')) ++e;
@@ -151,8 +152,7 @@ class writer {
       k = lexing::skip_blanks(body, k);
       std::size_t d = k;
       while (d < body.size() && is_digit(body[d])) ++d;
-      if (d > k) k = lexing::skip_blanks(body, d);
-      body.erase(0, k);
+      body.erase(0, d > k ? lexing::skip_blanks(body, d) : lexing::skip_blanks(body, 0));
     } else {
       std::replace(body.begin(), body.end(), '\n', ' ');
       std::replace(body.begin(), body.end(), '\r', ' ');
