@@ -27,11 +27,11 @@ long blocks = 20000;
 /// anything in it failed (the benchmark must time a clean run).
 bool translate_once(const std::string& text, kin5::string_sink& out) {
   kin5::translate_options options;
-  options.output_dialect = kin5::program::dialect::heidenhain;
-  const auto t = kin5::make_translator("sajo-12000p", "dmu-80p", kin5::program::dialect::siemens, "spiral.mpf",
+  options.output_dialect = kin5::program::id_of<kin5::program::heidenhain::dialect>();
+  const auto t = kin5::make_translator("sajo-12000p", "dmu-80p", kin5::program::id_of<kin5::program::siemens::dialect>(), "spiral.mpf",
                                        options, kin5::report_detail::exceptions_only);
-  const auto run = kin5::stream_text(*t, text, kin5::program::dialect::siemens, "spiral.mpf",
-                                     kin5::program::dialect::heidenhain, out);
+  const auto run = kin5::stream_text(*t, text, kin5::program::id_of<kin5::program::siemens::dialect>(), "spiral.mpf",
+                                     kin5::program::id_of<kin5::program::heidenhain::dialect>(), out);
   if (run.ok(*t) && t->result().blocks_written > static_cast<std::size_t>(blocks)) return true;
   std::fprintf(stderr, "translation failed: %zu input errors, %zu errors, %zu blocks written\n",
                run.input.errors.size(), t->result().errors.size(), t->result().blocks_written);

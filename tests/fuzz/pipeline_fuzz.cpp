@@ -32,7 +32,8 @@ namespace {
 
 using kin5::program::dialect;
 
-constexpr dialect nc_dialects[] = {dialect::siemens, dialect::heidenhain, dialect::iso};
+constexpr dialect nc_dialects[] = {kin5::program::id_of<kin5::program::siemens::dialect>(), kin5::program::id_of<kin5::program::heidenhain::dialect>(),
+                                   kin5::program::id_of<kin5::program::iso::dialect>()};
 constexpr kin5::feed_policy feeds[] = {kin5::feed_policy::tcp, kin5::feed_policy::block_time,
                                        kin5::feed_policy::inverse_time};
 constexpr std::size_t max_text = std::size_t{5} << 18;  // 1.25 MiB: past the first 1 MiB chunk

@@ -17,7 +17,7 @@ namespace {
 
 // SAJO, tool at A = a_deg (−90°: along +Y_s), G17 arc from (10, 0, 5) to (0, 10, 5) about (0, 0, 5).
 kin5::program::program sajo_arc(motion_kind direction, double a_deg = -90.0) {
-  auto p = kin5::test::tcp_program(kin5::program::dialect::siemens, "arc.mpf");
+  auto p = kin5::test::tcp_program(kin5::program::id_of<kin5::program::siemens::dialect>(), "arc.mpf");
   kin5::test::add_motion(p, {10, 0, 5, a_deg, 0.0, std::nullopt, 800.0});
   auto& arc = kin5::test::add_motion(p, {0, 10, 5, std::nullopt, std::nullopt, std::nullopt, std::nullopt}, direction);
   arc.arc = kin5::program::arc_words{arc_plane::xy, kin5::vec3{0, 0, 5}, std::nullopt};
@@ -52,7 +52,7 @@ TEST_CASE("an arc whose normal maps to a negative axis changes direction") {
   // Setup: half turn about X, so Z → −Z: G17 stays G17 but clockwise and counter-clockwise swap.
   // The tool (A = 0: +Z) becomes −Z, which the SAJO reaches at B = 180°.
   const kin5::rigid_transform flip{kin5::rotation(kin5::unit_x, kin5::radians{kin5::pi}), {}};
-  const auto t = kin5::translate<sajo_12000p, sajo_12000p>(sajo_arc(motion_kind::arc_ccw, 0.0), kin5::test::options(kin5::feed_policy::tcp, kin5::program::dialect::heidenhain, flip));
+  const auto t = kin5::translate<sajo_12000p, sajo_12000p>(sajo_arc(motion_kind::arc_ccw, 0.0), kin5::test::options(kin5::feed_policy::tcp, kin5::program::id_of<kin5::program::heidenhain::dialect>(), flip));
   REQUIRE(t.ok());
   const auto& b = t.output.blocks[2];
   CHECK(b.motion == motion_kind::arc_cw);
@@ -64,7 +64,7 @@ TEST_CASE("an arc whose normal maps to a negative axis changes direction") {
 
 TEST_CASE("an arc plane without a principal image is an error, never linearised") {
   const kin5::rigid_transform tilt{kin5::rotation(kin5::unit_x, kin5::radians{0.5}), {}};
-  const auto t = kin5::translate<sajo_12000p, sajo_12000p>(sajo_arc(motion_kind::arc_ccw, 0.0), kin5::test::options(kin5::feed_policy::tcp, kin5::program::dialect::heidenhain, tilt));
+  const auto t = kin5::translate<sajo_12000p, sajo_12000p>(sajo_arc(motion_kind::arc_ccw, 0.0), kin5::test::options(kin5::feed_policy::tcp, kin5::program::id_of<kin5::program::heidenhain::dialect>(), tilt));
   REQUIRE_FALSE(t.ok());
   REQUIRE(t.errors.size() == 1);
   CHECK(t.errors[0].where.line == 3);

@@ -18,7 +18,7 @@ TEST_CASE("a path through the SAJO pole switches branch instead of a half turn o
     return kin5::tool_axis<sajo_12000p>({kin5::to_radians(kin5::degrees{b}), kin5::to_radians(kin5::degrees{a})});
   };
   kin5::program::program cl;
-  cl.language = kin5::program::dialect::apt;
+  cl.language = kin5::program::id_of<kin5::program::apt::dialect>();
   cl.file = "pole.cl";
   const double a_values[] = {-80.0, -100.0};
   for (double a : a_values) {
@@ -27,7 +27,7 @@ TEST_CASE("a path through the SAJO pole switches branch instead of a half turn o
     b.axes.x_mm = 0.0, b.axes.y_mm = 0.0, b.axes.z_mm = 0.0;
     b.axes.tool_axis = u(a, 40.0);
   }
-  const auto t = kin5::post<sajo_12000p>(cl, kin5::program::dialect::siemens);
+  const auto t = kin5::post<sajo_12000p>(cl, kin5::program::id_of<kin5::program::siemens::dialect>());
   REQUIRE(t.ok());
   REQUIRE(t.output.blocks.size() == 2);
   // Two optimal paths tie (K3 mirrors A about −90° and turns B by 180°): (−80°, 40°) → (−100°, 40°)
@@ -51,7 +51,7 @@ TEST_CASE("a run of pole blocks takes the free angle of its non-pole neighbour")
   // The vertical blocks take C = 70° from the block after them: the only travel is 30° of B.
   using kin5::machines::dmu_80p;
   kin5::program::program cl;
-  cl.language = kin5::program::dialect::apt;
+  cl.language = kin5::program::id_of<kin5::program::apt::dialect>();
   cl.file = "vertical.cl";
   for (int k = 0; k < 6; ++k) {
     auto& b = kin5::test::add_block(cl);
@@ -61,7 +61,7 @@ TEST_CASE("a run of pole blocks takes the free angle of its non-pole neighbour")
                              : kin5::tool_axis<dmu_80p>({kin5::to_radians(kin5::degrees{70.0}),
                                                          kin5::to_radians(kin5::degrees{30.0})});
   }
-  const auto t = kin5::post<dmu_80p>(cl, kin5::program::dialect::heidenhain);
+  const auto t = kin5::post<dmu_80p>(cl, kin5::program::id_of<kin5::program::heidenhain::dialect>());
   REQUIRE(t.ok());
   REQUIRE(t.output.blocks.size() == 6);
   for (std::size_t k = 0; k < 6; ++k) {

@@ -18,7 +18,7 @@ using kin5::machines::sajo_12000p;
 TEST_CASE("matchability scan: classes and gaps of SAJO poses on the DMU 80P") {
   std::mt19937 random(20100612);
   std::uniform_real_distribution<double> b_deg(-180.0, 180.0);
-  auto p = kin5::test::tcp_program(kin5::program::dialect::siemens, "scan.mpf");
+  auto p = kin5::test::tcp_program(kin5::program::id_of<kin5::program::siemens::dialect>(), "scan.mpf");
   std::vector<double> a_values, b_values;
   for (int k = -1200; k <= 300; ++k) {
     const double a = k / 10.0, b = b_deg(random);
@@ -67,7 +67,7 @@ TEST_CASE("matchability scan: reachable blocks reproduce the tool axis exactly (
   std::uniform_real_distribution<double> b_deg(-180.0, 180.0);
   for (int k = -1200; k <= 0; k += 7) {
     const double a = k / 10.0, b = b_deg(random);
-    auto p = kin5::test::tcp_program(kin5::program::dialect::siemens);
+    auto p = kin5::test::tcp_program(kin5::program::id_of<kin5::program::siemens::dialect>());
     kin5::test::add_motion(p, {0, 0, 0, a, b, std::nullopt, 500.0});
     const auto t = kin5::translate<sajo_12000p, dmu_80p>(p, {});
     REQUIRE(t.ok());

@@ -46,7 +46,7 @@ inline program::program tcp_program(program::dialect language, std::string file 
 
 /// Translation options, spelled positionally (keeps -Wextra quiet about the others).
 inline translate_options options(feed_policy feed = feed_policy::tcp,
-                                 program::dialect out = program::dialect::heidenhain,
+                                 program::dialect out = program::id_of<program::heidenhain::dialect>(),
                                  std::optional<rigid_transform> setup = std::nullopt) {
   translate_options o;
   o.feed = feed;

@@ -31,14 +31,14 @@ constexpr std::array<row, 4> table1{{
 }};
 
 kin5::program::program sajo_program() {
-  auto p = kin5::test::tcp_program(dialect::siemens, "table1.mpf");
+  auto p = kin5::test::tcp_program(kin5::program::id_of<kin5::program::siemens::dialect>(), "table1.mpf");
   for (const row& r : table1) kin5::test::add_motion(p, {r.xs, r.ys, r.zs, r.as, r.bs, std::nullopt, r.fs});
   kin5::test::add_block(p).spindle_rpm = 4000;
   return p;
 }
 
 kin5::program::program dmu_program() {
-  auto p = kin5::test::tcp_program(dialect::heidenhain, "table1.h");
+  auto p = kin5::test::tcp_program(kin5::program::id_of<kin5::program::heidenhain::dialect>(), "table1.h");
   for (const row& r : table1) kin5::test::add_motion(p, {r.xd, r.yd, r.zd, std::nullopt, r.bd, r.cd, 1000.0});
   return p;
 }
@@ -57,7 +57,7 @@ TEST_CASE("Table 1, SAJO 12000P -> DMU 80P: positions exact, angles as printed a
   REQUIRE(t.ok());
   CHECK(t.blocks_read == 6);
   CHECK(t.blocks_written == 6);
-  CHECK(t.output.language == dialect::heidenhain);
+  CHECK(t.output.language == kin5::program::id_of<kin5::program::heidenhain::dialect>());
   const auto m = motions(t.output);
   REQUIRE(m.size() == 4);
   for (std::size_t i = 0; i < 4; ++i) {
@@ -84,7 +84,7 @@ TEST_CASE("Table 1, SAJO 12000P -> DMU 80P: positions exact, angles as printed a
 }
 
 TEST_CASE("Table 1, DMU 80P -> SAJO 12000P: positions exact, A and B within 0.001 deg (P18)") {
-  const auto t = kin5::translate<dmu_80p, sajo_12000p>(dmu_program(), kin5::test::options(kin5::feed_policy::tcp, dialect::siemens));
+  const auto t = kin5::translate<dmu_80p, sajo_12000p>(dmu_program(), kin5::test::options(kin5::feed_policy::tcp, kin5::program::id_of<kin5::program::siemens::dialect>()));
   REQUIRE(t.ok());
   const auto m = motions(t.output);
   REQUIRE(m.size() == 4);
@@ -103,7 +103,7 @@ TEST_CASE("Table 1, DMU 80P -> SAJO 12000P: positions exact, A and B within 0.00
 
 TEST_CASE("Table 1 round trip SAJO -> DMU -> SAJO gives the SAJO program back") {
   const auto there = kin5::translate<sajo_12000p, dmu_80p>(sajo_program(), {});
-  const auto back = kin5::translate<dmu_80p, sajo_12000p>(there.output, kin5::test::options(kin5::feed_policy::tcp, dialect::siemens));
+  const auto back = kin5::translate<dmu_80p, sajo_12000p>(there.output, kin5::test::options(kin5::feed_policy::tcp, kin5::program::id_of<kin5::program::siemens::dialect>()));
   REQUIRE(back.ok());
   const auto m = motions(back.output);
   REQUIRE(m.size() == 4);
@@ -149,7 +149,7 @@ TEST_CASE("block-time feed is (K17) with (K16) lengths and gives the Table 1 fee
 
 TEST_CASE("inverse-time feed is G93 with F = 1 over the block time and is refused where the dialect has no G93") {
   const auto t = kin5::translate<sajo_12000p, dmu_80p>(
-      sajo_program(), kin5::test::options(kin5::feed_policy::inverse_time, dialect::siemens));
+      sajo_program(), kin5::test::options(kin5::feed_policy::inverse_time, kin5::program::id_of<kin5::program::siemens::dialect>()));
   REQUIRE(t.ok());
   const auto m = motions(t.output);
   CHECK(m[0]->feed_mode == kin5::program::feed_unit::inverse_time);  // G93 from the first feed block
@@ -174,7 +174,7 @@ TEST_CASE("golden values of SAJO poses through translate, one block each") {
                                      {-100, 20, 14.160202, 284.980852},
                                      {-135, 0, 65.530199, 245.530199}}};
   for (const value& v : values) {
-    auto p = kin5::test::tcp_program(dialect::siemens);
+    auto p = kin5::test::tcp_program(kin5::program::id_of<kin5::program::siemens::dialect>());
     kin5::test::add_motion(p, {1, 2, 3, v.a, v.b, std::nullopt, 100.0});
     const auto t = kin5::translate<sajo_12000p, dmu_80p>(p, {});
     CAPTURE(v.a, v.b);
@@ -198,7 +198,7 @@ TEST_CASE("a source program in inverse time (G93) keeps its F, and needs a diale
   p.blocks[1].feed_mode = kin5::program::feed_unit::inverse_time;
   for (std::size_t k = 1; k <= 4; ++k) p.blocks[k].feed = 10.0 * static_cast<double>(k);
   for (auto policy : {kin5::feed_policy::tcp, kin5::feed_policy::block_time, kin5::feed_policy::inverse_time}) {
-    const auto t = kin5::translate<sajo_12000p, dmu_80p>(p, kin5::test::options(policy, dialect::iso));
+    const auto t = kin5::translate<sajo_12000p, dmu_80p>(p, kin5::test::options(policy, kin5::program::id_of<kin5::program::iso::dialect>()));
     REQUIRE(t.ok());
     const auto m = motions(t.output);
     REQUIRE(m.size() == 4);

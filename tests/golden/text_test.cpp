@@ -80,7 +80,7 @@ TEST_CASE("machine-coordinate moves are refused at their block; the rest is stil
   const auto in = siemens::read(
       "; start\nG0 SUPA Z0\nTRAORI\nG0 X0 Y0 Z50 A-45 B30\nM8\nG1 Z10 F200\nSUPA Z0\nM30\n", "mc.mpf");
   REQUIRE(in.ok());
-  const auto t = kin5::translate<sajo_12000p, dmu_80p>(in.parsed, kin5::test::options(kin5::feed_policy::tcp, kin5::program::dialect::siemens));
+  const auto t = kin5::translate<sajo_12000p, dmu_80p>(in.parsed, kin5::test::options(kin5::feed_policy::tcp, kin5::program::id_of<kin5::program::siemens::dialect>()));
   REQUIRE(t.errors.size() == 2);
   CHECK(t.errors[0].where.line == 2);
   CHECK(t.errors[1].where.line == 7);
@@ -102,7 +102,7 @@ TEST_CASE("Heidenhain CC and C on the DMU 80P become a G18 arc on the SAJO") {
   const auto in = heidenhain::read(h, "arc.h");
   REQUIRE(in.ok());
   const auto t = kin5::translate<dmu_80p, sajo_12000p>(
-      in.parsed, kin5::test::options(kin5::feed_policy::tcp, kin5::program::dialect::siemens));
+      in.parsed, kin5::test::options(kin5::feed_policy::tcp, kin5::program::id_of<kin5::program::siemens::dialect>()));
   REQUIRE(t.ok());
   CHECK(t.blocks_written == t.blocks_read);
   const kin5::program::block* line = nullptr;
@@ -130,7 +130,7 @@ TEST_CASE("Heidenhain CC and C on the DMU 80P become a G18 arc on the SAJO") {
 
 TEST_CASE("post switches TCP on in the first motion block and off at the program end") {
   kin5::program::program cl;
-  cl.language = kin5::program::dialect::apt;
+  cl.language = kin5::program::id_of<kin5::program::apt::dialect>();
   cl.file = "p.cl";
   for (int k = 0; k < 3; ++k) {
     kin5::program::block b;
@@ -145,7 +145,7 @@ TEST_CASE("post switches TCP on in the first motion block and off at the program
     }
     cl.blocks.push_back(b);
   }
-  const auto t = kin5::post<dmu_80p>(cl, kin5::program::dialect::heidenhain);
+  const auto t = kin5::post<dmu_80p>(cl, kin5::program::id_of<kin5::program::heidenhain::dialect>());
   REQUIRE(t.ok());
   REQUIRE(t.output.blocks.size() == 3);
   CHECK(t.output.blocks[0].tcp == true);
@@ -171,7 +171,7 @@ TEST_CASE("run-time dispatch by catalog id matches the template, unknown ids are
   CHECK(unknown.errors[0].message.find("unknown machine 'no-such-machine'") != std::string::npos);
   CHECK(unknown.errors[0].message.find("dmu-80p") != std::string::npos);  // lists the known ids
   CHECK_FALSE(kin5::reverse("nope", in.parsed).ok());
-  CHECK_FALSE(kin5::post("nope", in.parsed, kin5::program::dialect::iso).ok());
+  CHECK_FALSE(kin5::post("nope", in.parsed, kin5::program::id_of<kin5::program::iso::dialect>()).ok());
   CHECK(kin5::reverse("sajo-12000p", in.parsed).ok());
 }
 
@@ -268,7 +268,7 @@ TEST_CASE("APT feed-only, rapid-only and units blocks in the G-code and Heidenha
 
   // A Siemens block with nothing Siemens-writable left is a comment, not a dropped line.
   kin5::program::program p;
-  p.language = kin5::program::dialect::apt;
+  p.language = kin5::program::id_of<kin5::program::apt::dialect>();
   kin5::program::block empty;
   empty.text = "UNITS/XYZ";
   p.blocks = {empty};
@@ -280,7 +280,7 @@ TEST_CASE("kin5 post of APT CL data to Heidenhain: no coordinate-less L, no empt
   const auto a = kin5::program::apt::read("UNITS/MM\nRAPID\nGOTO/0,-20,60,0,0,1\nFEDRAT/MMPM,800\n"
                                           "GOTO/0,-20,10,0,0,1\nGOTO/10,-20,10,0,0,1\nFINI\n", "cl.apt");
   REQUIRE(a.ok());
-  const auto t = kin5::post("dmu-80p", a.parsed, kin5::program::dialect::heidenhain);
+  const auto t = kin5::post("dmu-80p", a.parsed, kin5::program::id_of<kin5::program::heidenhain::dialect>());
   REQUIRE(t.ok());
   const std::string text = heidenhain::write(t.output);
   CAPTURE(text);

@@ -86,7 +86,7 @@ int with_program(const machine_model& from, const machine_model& to, const match
     std::fprintf(stderr, "kin5 match: cannot read %s: %s\n", name.c_str(), std::strerror(errno));
     return exit_codes::input_error;
   }
-  const prog::dialect d = a.from_dialect.empty() ? prog::default_dialect(from.geometry.id).value_or(prog::dialect::siemens)
+  const prog::dialect d = a.from_dialect.empty() ? prog::default_dialect(from.geometry.id).value_or(prog::dialect{})
                                                  : *prog::parse_dialect(a.from_dialect);
   const prog::read_result in = prog::read(d, *bytes, name);
   if (!in.ok()) {

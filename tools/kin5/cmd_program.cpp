@@ -159,9 +159,9 @@ struct job {
   std::string command;      ///< "translate", "reverse", "post": the prefix of its messages
   std::string input_path;   ///< '-' for stdin
   std::string output_path;  ///< '-' for stdout
-  prog::dialect input_dialect = prog::dialect::siemens;
+  prog::dialect input_dialect{};
   bool input_dialect_given = false;  ///< false: a dialect recognised by guess_dialect wins
-  prog::dialect output_dialect = prog::dialect::heidenhain;
+  prog::dialect output_dialect{};
   std::string target;       ///< what the output is for, named when blocks are unreachable
   bool verbose = false;
   /// The translator for a program read in this dialect from this file.
@@ -272,7 +272,7 @@ int execute(const job& j) {
 /// The dialect named `given`, or else the machine's default.
 prog::dialect dialect_or_default(const std::string& given, std::string_view machine_id) {
   if (!given.empty()) return *prog::parse_dialect(given);
-  return prog::default_dialect(machine_id).value_or(prog::dialect::siemens);
+  return prog::default_dialect(machine_id).value_or(prog::dialect{});
 }
 
 /// The names of `feed_policies`, in its order.
@@ -519,7 +519,7 @@ int run_reverse(const machine_arguments& a) {
   j.output_path = a.output;
   j.input_dialect = dialect_or_default(a.dialect, model.geometry.id);
   j.input_dialect_given = !a.dialect.empty();
-  j.output_dialect = prog::dialect::apt;
+  j.output_dialect = prog::cl_data_dialect();
   j.target = "APT CL data";
   j.verbose = a.verbose;
   const auto common = parse_common("reverse", a.common);
@@ -539,7 +539,7 @@ int run_post(const machine_arguments& a) {
   j.command = "post";
   j.input_path = a.input;
   j.output_path = a.output;
-  j.input_dialect = prog::dialect::apt;
+  j.input_dialect = prog::cl_data_dialect();
   j.input_dialect_given = true;
   j.output_dialect = dialect_or_default(a.dialect, model.geometry.id);
   j.target = std::string(model.geometry.id);
@@ -564,7 +564,7 @@ std::string default_dialect_table() {
     const auto d = prog::default_dialect(id);
     std::string line(id);
     line.resize(width + 2, ' ');
-    out += "\n  " + line + std::string(d ? prog::name(*d) : "siemens");
+    out += "\n  " + line + std::string(prog::name(d.value_or(prog::dialect{})));
   }
   return out;
 }

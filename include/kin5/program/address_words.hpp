@@ -8,13 +8,15 @@
 /// A word is a letter not preceded by a letter, digit-free identifier or `#`/`_`, then an
 /// optional `=`, an optional sign and a decimal number not followed by `=` (so `A3=0.5`, a
 /// Siemens vector component, and `R1=5`, a parameter, are not words). Comments: `;` to the end
-/// of the line, `( … )` in ISO, strings `"…"` skipped. APT CL data is scanned by its records
-/// (`GOTO/x,y,z,i,j,k`, `FEDRAT/f`, `SPINDL/s`). `for_each_address_word_in_text` finds the
-/// same words in a whole text in one pass over its bytes (the scan of a long program).
+/// of the line, `( … )` where the dialect's controller reads them as comments
+/// (`controller::paren_comments`), strings `"…"` skipped. CL data (`capabilities::cl_data`) is
+/// scanned by its records (`GOTO/x,y,z,i,j,k`, `FEDRAT/f`, `SPINDL/s`). `for_each_address_word_in_text`
+/// finds the same words in a whole text in one pass over its bytes (the scan of a long program).
 /// @code
-///   kin5::program::for_each_address_word("N10 G1 X10.25 A-30", kin5::program::dialect::iso,
-///                                        [](const kin5::program::address_word& w) { /* X 2, A 0 */ });
-///   const auto r = kin5::program::scan_resolution(text, kin5::program::dialect::siemens);
+///   namespace kp = kin5::program;
+///   kp::for_each_address_word("N10 G1 X10.25 A-30", *kp::parse_dialect("iso"),
+///                             [](const kp::address_word& w) { /* X 2, A 0 */ });
+///   const auto r = kp::scan_resolution(text, *kp::parse_dialect("siemens"));
 /// @endcode
 #pragma once
 
@@ -23,6 +25,7 @@
 #include <string_view>
 
 #include "block.hpp"
+#include "dialect.hpp"
 #include "resolution.hpp"
 #include "text.hpp"
 
@@ -61,6 +64,7 @@ constexpr bool word_boundary(char c) { return !is_letter(c) && c != '_' && c != 
 /// Heidenhain, ISO), in order; comments and strings are skipped (see the file comment).
 template <class F>
 constexpr void for_each_address_word(std::string_view line, dialect d, F&& f) {
+  const bool paren_comments = controller_of(d).paren_comments;
   int depth = 0;  // ISO comment nesting
   for (std::size_t i = 0; i < line.size(); ++i) {
     const char c = line[i];
@@ -69,7 +73,7 @@ constexpr void for_each_address_word(std::string_view line, dialect d, F&& f) {
       continue;
     }
     if (c == ';') return;
-    if (c == '(' && d == dialect::iso) {
+    if (c == '(' && paren_comments) {
       depth = 1;
       continue;
     }
@@ -106,8 +110,8 @@ constexpr void count_word(number_resolution& r, char letter, int decimals) {
   }
 }
 
-/// The resolution of one APT statement: GOTO/x,y,z[,i,j,k], FEDRAT/[MMPM,]f, SPINDL/[RPM,]s.
-constexpr void count_apt_statement(number_resolution& r, std::string_view s) {
+/// The resolution of one CL-data (APT) statement: GOTO/x,y,z[,i,j,k], FEDRAT/[MMPM,]f, SPINDL/[RPM,]s.
+constexpr void count_cl_statement(number_resolution& r, std::string_view s) {
   std::size_t k = 0;
   while (k < s.size() && is_space(s[k])) ++k;
   s.remove_prefix(k);
@@ -160,6 +164,7 @@ constexpr std::size_t line_end(std::string_view text, std::size_t i) {
 template <class F>
 constexpr void for_each_address_word_in_text(std::string_view text, dialect d, F&& f) {
   const std::size_t n = text.size();
+  const bool paren_comments = controller_of(d).paren_comments;
   std::size_t i = 0;
   while (i < n) {
     const char c = text[i];
@@ -168,11 +173,11 @@ constexpr void for_each_address_word_in_text(std::string_view text, dialect d, F
     } else if (c == ';') {
       i = detail::line_end(text, i);
     } else if (c == '(') {
-      if (d != dialect::iso) {
+      if (!paren_comments) {
         ++i;
         continue;
       }
-      int depth = 1;  // nested ISO comments, to the line end at most
+      int depth = 1;  // nested ( … ) comments, to the line end at most
       for (++i; i < n && depth > 0 && !detail::is_line_end(text[i]); ++i)
         depth += text[i] == '(' ? 1 : (text[i] == ')' ? -1 : 0);
     } else if (c == '"') {
@@ -200,13 +205,13 @@ constexpr void for_each_address_word_in_text(std::string_view text, dialect d, F
 /// pass over the bytes, no reading.
 inline number_resolution scan_resolution(std::string_view text, dialect d) {
   number_resolution r;
-  if (d != dialect::apt) {
+  if (!capabilities_of(d).cl_data) {
     for_each_address_word_in_text(text, d, [&r](char letter, std::size_t, int decimals) {
       detail::count_word(r, letter, decimals);
     });
     return r;
   }
-  for_each_line(text, [&](const text_line& line) { detail::count_apt_statement(r, line.text); });
+  for_each_line(text, [&](const text_line& line) { detail::count_cl_statement(r, line.text); });
   return r;
 }
 

@@ -24,18 +24,6 @@
 
 namespace kin5::program {
 
-/// The NC languages kin5 reads and writes.
-enum class dialect {
-  siemens,     ///< Siemens 840D (G-code with TRAORI)
-  heidenhain,  ///< Heidenhain conversational (L, M128, FUNCTION TCPM)
-  iso,         ///< ISO / Fanuc (G43.4, G43.5, G93)
-  apt,         ///< APT cutter-location data (GOTO/, FEDRAT/)
-};
-
-/// The value that names a dialect at run time: `siemens::dialect::id`, … (program/dialect.hpp,
-/// which also gives its `name`).
-using dialect_id = dialect;
-
 /// The name of a program's file, shared by every location in it: copying one copies a pointer,
 /// so the blocks of a long program hold one string, not one each. Reads as a `const std::string&`.
 class file_name {
@@ -156,7 +144,7 @@ struct block {
 
 /// A program as read: its blocks in file order.
 struct program {
-  dialect language = dialect::siemens;
+  dialect language{};  ///< the first entry of `program::dialects` unless a reader sets it
   std::string file;
   std::vector<block> blocks;
 };

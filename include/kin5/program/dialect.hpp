@@ -7,13 +7,17 @@
 /// A dialect is one type with static members:
 /// | member | what |
 /// |---|---|
-/// | `id` | the value that names it at run time (`program::dialect`) |
 /// | `name` | its name on the command line and in messages ("siemens") |
 /// | `can` | its `capabilities` (program/dialect_id.hpp) |
+/// | `reads` | its `controller`: input resolution, comment forms, M functions of its own |
+/// | `default_for` | the catalog machines (by id) whose controller reads it |
 /// | `markers` | an array of `marker`s only it writes, for `guess_dialect` |
 /// | `read_blocks(text, file, diagnostics, on_block)` | its streaming reader |
 /// | `write_options`, `write(program, options)` | its writer's settings, and the whole-program writer |
 /// | `writer` | its block-by-block writer: `writer(source, file, options)`, `write(out, block)` |
+///
+/// An entry carries no id: at run time a dialect is its place in the list (`program::dialect`,
+/// `id_of<D>()`), so nothing outside the folder and this list names it.
 #pragma once
 
 #include <concepts>
@@ -24,6 +28,7 @@
 #include <tuple>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "apt/dialect.hpp"
 #include "block.hpp"
@@ -39,11 +44,12 @@ template <class D>
 concept nc_dialect = requires(std::string_view text, const std::string& file, read_result& diagnostics,
                               const block_sink& on_block, const program& p, std::string& out, const block& b,
                               typename D::writer& w) {
-  { D::id } -> std::convertible_to<dialect_id>;
   { D::name } -> std::convertible_to<std::string_view>;
   { D::can } -> std::convertible_to<capabilities>;
   { D::markers.size() } -> std::convertible_to<std::size_t>;
   { D::markers[0] } -> std::convertible_to<marker>;
+  { D::reads } -> std::convertible_to<controller>;
+  { D::default_for.size() } -> std::convertible_to<std::size_t>;
   D::read_blocks(text, file, diagnostics, on_block);
   { D::write(p, typename D::write_options{}) } -> std::same_as<std::string>;
   requires std::constructible_from<typename D::writer, dialect_id, std::string, const typename D::write_options&>;
@@ -55,6 +61,31 @@ using dialects = std::tuple<siemens::dialect, heidenhain::dialect, iso::dialect,
 
 /// How many dialects there are.
 inline constexpr std::size_t dialect_count = std::tuple_size_v<dialects>;
+
+namespace detail {
+template <class D, class List>
+struct index_in;
+template <class D, class... E>
+struct index_in<D, std::tuple<E...>> {
+  static constexpr std::size_t value = [] {
+    constexpr bool is[] = {std::is_same_v<D, E>...};
+    std::size_t i = 0;
+    while (i < sizeof...(E) && !is[i]) ++i;
+    return i;
+  }();
+  static_assert(value < sizeof...(E), "the dialect is an entry of the list");
+};
+}  // namespace detail
+
+/// Entry D of `List` as a run-time value: its index there.
+template <class D, class List>
+inline constexpr dialect id_in{detail::index_in<D, List>::value};
+
+/// Entry D of `program::dialects` as a run-time value.
+template <class D>
+constexpr dialect id_of() {
+  return id_in<D, dialects>;
+}
 
 /// Calls `f(std::type_identity<D>{}, index)` for every dialect D of the list, in order. Every
 /// fold below takes the list as a template argument, `dialects` by default, so a test can run
@@ -70,8 +101,8 @@ constexpr void for_each_dialect(F&& f) {
 template <class List = dialects, class F, class Otherwise>
 constexpr auto visit_dialect(dialect d, F&& f, Otherwise&& otherwise) -> decltype(otherwise()) {
   std::optional<decltype(otherwise())> result;
-  for_each_dialect<List>([&]<class D>(std::type_identity<D> type, std::size_t) {
-    if (!result && D::id == d) result.emplace(f(type));
+  for_each_dialect<List>([&]<class D>(std::type_identity<D> type, std::size_t i) {
+    if (!result && dialect(i) == d) result.emplace(f(type));
   });
   return result ? std::move(*result) : otherwise();
 }
@@ -88,12 +119,12 @@ struct all_dialects;
 template <class... D>
 struct all_dialects<std::tuple<D...>> : std::bool_constant<(nc_dialect<D> && ...)> {};
 
-/// Whether no two entries share an id or a name.
-constexpr bool distinct_ids() {
+/// Whether no two entries share a name.
+constexpr bool distinct_names() {
   bool distinct = true;
   for_each_dialect([&]<class A>(std::type_identity<A>, std::size_t i) {
     for_each_dialect([&]<class B>(std::type_identity<B>, std::size_t j) {
-      if (i != j && (A::id == B::id || A::name == B::name)) distinct = false;
+      if (i != j && A::name == B::name) distinct = false;
     });
   });
   return distinct;
@@ -101,7 +132,8 @@ constexpr bool distinct_ids() {
 }  // namespace detail
 
 static_assert(detail::all_dialects<dialects>::value, "every entry of program::dialects is an nc_dialect");
-static_assert(detail::distinct_ids(), "every dialect has its own id and name");
+static_assert(detail::distinct_names(), "every dialect has its own name");
+static_assert(dialect_count < 256, "a dialect's index fits its byte");
 
 /// The capabilities of dialect `d` (all false for a value that names no dialect).
 template <class List = dialects>
@@ -113,8 +145,50 @@ constexpr capabilities capabilities_of(dialect d) {
 template <class List = dialects>
 constexpr std::optional<dialect> parse_dialect(std::string_view s) {
   std::optional<dialect> found;
+  for_each_dialect<List>([&]<class D>(std::type_identity<D>, std::size_t i) {
+    if (D::name == s) found = dialect(i);
+  });
+  return found;
+}
+
+/// The names of the dialects whose `capabilities` satisfy `keep`, in list order (e.g. every NC
+/// dialect: `dialect_names([](const capabilities& can) { return !can.cl_data; })`).
+template <class List = dialects, class Keep>
+std::vector<std::string_view> dialect_names(Keep keep) {
+  std::vector<std::string_view> names;
   for_each_dialect<List>([&]<class D>(std::type_identity<D>, std::size_t) {
-    if (D::name == s) found = D::id;
+    if (keep(D::can)) names.push_back(D::name);
+  });
+  return names;
+}
+
+/// What the controller of dialect `d` reads (the first entry's for a value that names no dialect).
+template <class List = dialects>
+constexpr controller controller_of(dialect d) {
+  return visit_dialect<List>(d, []<class D>(std::type_identity<D>) { return D::reads; },
+                             [] { return std::tuple_element_t<0, List>::reads; });
+}
+
+/// The dialect of cutter-location data (the one entry whose `can.cl_data` is set): what
+/// `reverse` writes and `post` reads.
+template <class List = dialects>
+constexpr dialect cl_data_dialect() {
+  std::size_t found = std::tuple_size_v<List>, count = 0;
+  for_each_dialect<List>([&]<class D>(std::type_identity<D>, std::size_t i) {
+    if (D::can.cl_data) found = i, ++count;
+  });
+  return count == 1 ? dialect(found) : dialect(std::tuple_size_v<List>);
+}
+static_assert(cl_data_dialect().index() < dialect_count, "exactly one dialect of the list is CL data");
+
+/// The dialect the controller of catalog machine `machine_id` reads (the entry whose
+/// `default_for` names it), or nothing for an id no entry names.
+template <class List = dialects>
+constexpr std::optional<dialect> default_dialect(std::string_view machine_id) {
+  std::optional<dialect> found;
+  for_each_dialect<List>([&]<class D>(std::type_identity<D>, std::size_t i) {
+    for (std::string_view id : D::default_for)
+      if (id == machine_id) found = dialect(i);
   });
   return found;
 }

@@ -1,18 +1,46 @@
 /// @file program/dialect_id.hpp
-/// What every dialect declares of itself, as data: what its writer can express
-/// (`capabilities`) and the text that gives a file away as written in it (`marker`).
+/// What names a dialect at run time and what every dialect declares of itself, as data:
+/// `dialect` (its place in `program::dialects`, so a new entry needs no enum), what its writer can
+/// express (`capabilities`), what its controller reads (`controller`), and the text that gives a
+/// file away as written in it (`marker`).
 ///
-/// Each entry of `program::dialects` (program/dialect.hpp) carries one `capabilities` value and
-/// an array of `marker`s; the translation asks the capabilities (can the target write G93? does it
-/// need a separate circle-centre block?), and `guess_dialect` looks for the markers.
+/// Each entry of `program::dialects` (program/dialect.hpp) carries one `capabilities`, one
+/// `controller` and an array of `marker`s; the translation asks them (can the target write G93?
+/// how many decimals does its controller read?), and `guess_dialect` looks for the markers.
+/// `id_of<D>()` is entry D's `dialect`; program/dialect.hpp defines it after the list, so a
+/// dialect's own folder can name itself before the list is complete.
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <cstdint>
 #include <string_view>
 
+#include "resolution.hpp"
 #include "work_offsets.hpp"
 
 namespace kin5::program {
+
+/// A dialect at run time: its index in `program::dialects` (or in the list a fold is given).
+/// The default is the first entry of the list.
+class dialect {
+ public:
+  constexpr dialect() = default;
+  constexpr explicit dialect(std::size_t index) : index_(static_cast<std::uint8_t>(index)) {}
+  /// Its place in the list.
+  constexpr std::size_t index() const { return index_; }
+  friend constexpr bool operator==(dialect, dialect) = default;
+
+ private:
+  std::uint8_t index_ = 0;
+};
+
+/// The name the dialect folders use for `program::dialect` (each folder has a `dialect` of its own).
+using dialect_id = dialect;
+
+/// Entry D of `program::dialects` as a run-time value (defined in program/dialect.hpp).
+template <class D>
+constexpr dialect id_of();
 
 /// What a dialect's writer can express. Each flag is checked against the writer by the dialect
 /// law suite: a capability that is false makes the writer refuse (or, for TCP switches, note) the
@@ -35,6 +63,17 @@ struct capabilities {
       if (r.holds(w)) return true;
     return false;
   }
+};
+
+/// What a dialect's controller reads, beyond its words: how finely it takes numbers, which
+/// comments its text has, and the M functions whose meaning is not the common one. Each
+/// dialect's folder cites the manual for its values (docs/dialects/<name>.md).
+struct controller {
+  word_decimals usual;   ///< decimals written when the source is no finer
+  word_decimals finest;  ///< the controller's input resolution
+  bool paren_comments = false;  ///< `( … )` is a comment (ISO), not text to read
+  bool m7_mist_coolant = true;  ///< M7 is mist coolant (false: no standard M7, as on a TNC)
+  bool m91_m92_machine_coordinates = false;  ///< M91/M92 in a block: it moves in machine coordinates
 };
 
 /// Text only one dialect writes, as `guess_dialect` looks for it: an upper-case keyword matched

@@ -1,14 +1,14 @@
 /// @file program/io.hpp
 /// One entry point for every NC dialect: `read` and `write` take the dialect as a value and call
 /// the reader or writer of that entry of `program::dialects` (program/dialect.hpp);
-/// `default_dialect` names the language a catalog machine's controller speaks, and
 /// `guess_dialect` recognises a program by markers only one language uses.
 ///
 /// Example:
 /// @code
-///   auto in = kin5::program::read(kin5::program::dialect::siemens, text, "part.mpf");
+///   namespace kp = kin5::program;
+///   auto in = kp::read(*kp::parse_dialect("siemens"), text, "part.mpf");
 ///   if (!in.ok()) { for (auto& e : in.errors) std::cerr << e.to_string() << '\n'; return; }
-///   std::string nc = kin5::program::write(kin5::program::dialect::heidenhain, in.parsed);
+///   std::string nc = kp::write(*kp::default_dialect("dmu-80p"), in.parsed);
 /// @endcode
 #pragma once
 
@@ -34,7 +34,7 @@ namespace kin5::program {
 template <class List = dialects>
 read_result read(dialect d, std::string_view text, std::string file_name) {
   return visit_dialect<List>(
-      d, [&]<class D>(std::type_identity<D>) { return read_whole(D::id, text, std::move(file_name), &D::read_blocks); },
+      d, [&]<class D>(std::type_identity<D>) { return read_whole(d, text, std::move(file_name), &D::read_blocks); },
       [] { return read_result{}; });
 }
 
@@ -117,35 +117,6 @@ class block_writer {
   }
 };
 
-/// The dialect the controller of catalog machine `machine_id` reads, or nothing for an id
-/// that is not in the catalog. The table (the controllers the source papers name, or the usual
-/// one for the structure):
-///
-/// | machine id              | controller                           | dialect      |
-/// |-------------------------|--------------------------------------|--------------|
-/// | `sajo-12000p`           | Siemens 840D (TRAORI), Tian 2010     | `siemens`    |
-/// | `dmu-80p`               | Heidenhain iTNC (M128), Tian 2010    | `heidenhain` |
-/// | `dmu-50v`               | Heidenhain (DMG's usual), Liu 2010   | `heidenhain` |
-/// | `ac-trunnion`           | Siemens 840D                         | `siemens`    |
-/// | `ac-head`               | Siemens 840D                         | `siemens`    |
-/// | `b-head-a-tilted-table` | Siemens 840D                         | `siemens`    |
-/// | `a-rotary-4axis`        | ISO / Fanuc-style, CN1624613         | `iso`        |
-constexpr std::optional<dialect> default_dialect(std::string_view machine_id) {
-  struct entry {
-    std::string_view id;
-    dialect language;
-  };
-  constexpr entry table[] = {
-      {"sajo-12000p", dialect::siemens},           {"dmu-80p", dialect::heidenhain},
-      {"dmu-50v", dialect::heidenhain},            {"ac-trunnion", dialect::siemens},
-      {"ac-head", dialect::siemens},               {"b-head-a-tilted-table", dialect::siemens},
-      {"a-rotary-4axis", dialect::iso},
-  };
-  for (const entry& e : table)
-    if (e.id == machine_id) return e.language;
-  return std::nullopt;
-}
-
 namespace detail {
 
 /// Whether the upper-case keyword `keyword` occurs in `line`, case-insensitively, as a word of
@@ -180,11 +151,9 @@ constexpr std::string_view skip_block_number(std::string_view line) {
 
 /// The dialect of `text` when it carries a marker that only one dialect uses, else nothing.
 ///
-/// Markers (each dialect's `markers`), at the start of a block (after an optional block number):
-/// `BEGIN PGM` (heidenhain), `%_N_` (siemens), `PARTNO`, `GOTO/`, `FEDRAT/` (apt); and anywhere
-/// in a line: `TRAORI`, `TRAFOOF` (siemens), `M128`, `FUNCTION TCPM` (heidenhain), `G43.4`,
-/// `G43.5` (iso). Text with markers of two dialects, or none, gives nothing: the caller then
-/// decides (for example with `default_dialect`). Cost: one pass over the first 200 lines.
+/// Markers are each entry's `markers` (a keyword at the start of a block, after an optional block
+/// number, or anywhere in a line). Text with markers of two dialects, or none, gives nothing: the
+/// caller then decides (for example with `default_dialect`). Cost: one pass over the first 200 lines.
 template <class List = dialects>
 constexpr std::optional<dialect> guess_dialect(std::string_view text) {
   std::array<bool, std::tuple_size_v<List>> seen{};
@@ -206,7 +175,7 @@ constexpr std::optional<dialect> guess_dialect(std::string_view text) {
   std::optional<dialect> found;
   std::size_t count = 0;
   for_each_dialect<List>([&]<class D>(std::type_identity<D>, std::size_t i) {
-    if (seen[i]) found = D::id, ++count;
+    if (seen[i]) found = dialect(i), ++count;
   });
   return count == 1 ? found : std::nullopt;
 }

@@ -50,7 +50,7 @@ inline std::unique_ptr<block_translator> make_translator(std::string_view from_i
   const machine_model* from = machines::find_machine(from_id);
   const machine_model* to = machines::find_machine(to_id);
   if (from && to) return make_translator(*from, *to, source_language, file, options, detail);
-  return translate_detail::unknown_machine(file, options.output_dialect, from ? to_id : from_id);
+  return translate_detail::unknown_machine(file, output_dialect_of(options, to_id), from ? to_id : from_id);
 }
 
 /// `make_reverse(m, …)` for a catalog id; for an unknown id, a translator whose result holds that error.
@@ -60,7 +60,7 @@ inline std::unique_ptr<block_translator> make_reverse(std::string_view machine_i
                                                       const common_options& common = {}) {
   if (const machine_model* m = machines::find_machine(machine_id))
     return make_reverse(*m, source_language, file, detail, common);
-  return translate_detail::unknown_machine(file, program::dialect::apt, machine_id);
+  return translate_detail::unknown_machine(file, program::cl_data_dialect(), machine_id);
 }
 
 /// `make_post(m, …)` for a catalog id; for an unknown id, a translator whose result holds that error.

@@ -8,7 +8,7 @@
 /// @code
 ///   program::block o = b;
 ///   if (auto error = map_plane_words(o, target_R_source)) fail(*error);
-///   carry_over(o, program::dialect::siemens, program::dialect::heidenhain);
+///   carry_over(o, source_language, output_language);
 ///   // o.kept_words is empty; o.comment ends with "siemens: G40 G54"
 /// @endcode
 #pragma once

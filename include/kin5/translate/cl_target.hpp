@@ -7,7 +7,7 @@
 /// become comments (CL data is tool-tip data); arcs are errors, since GOTO points cannot say them. Blocks that are
 /// not motion are copied, their dialect text carried over (`carry_over.hpp`).
 /// @code
-///   kin5::translate_detail::cl_target target(kin5::program::dialect::siemens);
+///   kin5::translate_detail::cl_target target(source_language);
 ///   target.write(block, step, result, emit, on_report);  // GOTO/tip_source_mm, u_source
 /// @endcode
 #pragma once
@@ -39,12 +39,12 @@ class cl_target {
   void write(const program::block& b, const source_step& s, translation& out, Emit&& emit, Report&& on_report) {
     if (s.what == source_step::kind::failed) return;
     if (s.what == source_step::kind::passthrough) {
-      emit(carried_over(b, source_language_, program::dialect::apt));
+      emit(carried_over(b, source_language_, program::cl_data_dialect()));
       ++out.passed_through;
       return;
     }
     program::block o = b;
-    carry_over(o, source_language_, program::dialect::apt);
+    carry_over(o, source_language_, program::cl_data_dialect());
     if (o.tcp) {  // CL data is tool-tip data: tracking is implied
       if (!o.comment) o.comment = *o.tcp ? "tool-tip tracking on" : "tool-tip tracking off";
       o.tcp.reset();

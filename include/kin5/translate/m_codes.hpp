@@ -14,13 +14,13 @@
 /// | 3, 4, 5 | spindle clockwise, counter-clockwise, stop | every dialect |
 /// | 6 | tool change | every dialect (the Heidenhain writer makes it part of TOOL CALL) |
 /// | 8, 9 | coolant on, off | every dialect |
-/// | 7 | mist coolant | Siemens, ISO, APT (`COOLNT/MIST`); a TNC has no standard M7 |
-/// | 91, 92 | machine coordinates (Heidenhain) | written as the target's machine-coordinate word |
+/// | 7 | mist coolant | dialects whose controller reads M7 so (`controller::m7_mist_coolant`; a TNC has no standard M7) |
+/// | 91, 92 | machine coordinates (`controller::m91_m92_machine_coordinates`: Heidenhain) | written as the target's machine-coordinate word |
 /// @code
 ///   kin5::m_map map;
 ///   if (!map.add("126=")) usage_error();       // drop M126
 ///   const auto m = map.target_of(126);          // std::optional<std::optional<int>>: {nullopt}
-///   if (!kin5::shared_m_code(13, program::dialect::heidenhain, program::dialect::iso, false)) refuse();
+///   if (!kin5::shared_m_code(13, source_dialect, output_dialect, false)) refuse();
 /// @endcode
 #pragma once
 
@@ -31,7 +31,7 @@
 #include <string>
 #include <string_view>
 
-#include "../program/block.hpp"
+#include "../program/dialect.hpp"
 
 namespace kin5 {
 
@@ -41,8 +41,8 @@ constexpr bool shared_m_code(int m, program::dialect from, program::dialect to, 
   if (from == to) return true;
   switch (m) {
     case 0: case 1: case 2: case 3: case 4: case 5: case 6: case 8: case 9: case 30: return true;
-    case 7: return to != program::dialect::heidenhain && from != program::dialect::heidenhain;
-    case 91: case 92: return from == program::dialect::heidenhain && machine_coordinates;
+    case 7: return program::controller_of(from).m7_mist_coolant && program::controller_of(to).m7_mist_coolant;
+    case 91: case 92: return program::controller_of(from).m91_m92_machine_coordinates && machine_coordinates;
     default: return false;
   }
 }

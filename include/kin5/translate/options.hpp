@@ -7,7 +7,7 @@
 /// @code
 ///   kin5::translate_options options;
 ///   options.feed = kin5::feed_policy::tcp;
-///   options.output_dialect = kin5::program::dialect::siemens;
+///   options.output_dialect = kin5::program::parse_dialect("siemens");
 ///   const kin5::translation t = kin5::translate<From, To>(nc, options);
 ///   if (!t.ok()) for (const auto& e : t.errors) std::cerr << e.to_string() << '\n';
 ///   // t.per_class[direct], [other_branch], [unreachable]: motion blocks of each class
@@ -25,6 +25,7 @@
 #include "../kinematics/forward.hpp"
 #include "../kinematics/matchability.hpp"
 #include "../program/block.hpp"
+#include "../program/dialect.hpp"
 #include "allowances.hpp"
 #include "feed.hpp"
 #include "m_codes.hpp"
@@ -59,9 +60,16 @@ struct translate_options {
   feed_policy feed = feed_policy::tcp;
   /// target_T_source; default: `default_setup<From, To>()`.
   std::optional<rigid_transform> setup;
-  program::dialect output_dialect = program::dialect::heidenhain;
+  /// Empty: the dialect of the target machine's controller (`program::default_dialect`).
+  std::optional<program::dialect> output_dialect;
   common_options common{};
 };
+
+/// The dialect a translation with `options` to machine `to_id` writes: the options', else the
+/// one `to_id`'s controller reads, else the first of `program::dialects`.
+constexpr program::dialect output_dialect_of(const translate_options& options, std::string_view to_id) {
+  return options.output_dialect ? *options.output_dialect : program::default_dialect(to_id).value_or(program::dialect{});
+}
 
 /// What happened to one motion block.
 struct block_report {

@@ -162,7 +162,7 @@ class two_pass_translator final : public block_translator {
   void configure() {
     precision_notes notes;
     result_.output_decimals = output_decimals(resolution_, result_.output.language, common_.digits, &notes,
-                                              source_.language == program::dialect::apt);
+                                              program::capabilities_of(source_.language).cl_data);
     if (!notes.rounded.empty()) result_.warnings.push_back(file_error(result_.output.file, notes.rounded));
     if (!notes.refused.empty()) {
       program::diagnostic d = file_error(result_.output.file, notes.refused);
@@ -184,11 +184,13 @@ class two_pass_translator final : public block_translator {
 /// Whether `d` is cutter-location data (tool tip and axis, no machine axes), not an NC dialect.
 constexpr bool is_cl_data(program::dialect d) { return program::capabilities_of(d).cl_data; }
 
-/// Why `translate` cannot run on a program in `source_language`, if it cannot.
-inline std::optional<std::string> translate_refusal(program::dialect source_language, const translate_options& options) {
+/// Why `translate` cannot run on a program in `source_language` written in `output_dialect`
+/// with feed policy `feed`, if it cannot.
+inline std::optional<std::string> translate_refusal(program::dialect source_language, feed_policy feed,
+                                                    program::dialect output_dialect) {
   if (is_cl_data(source_language)) return "APT CL data names no machine axes: use post, not translate";
-  if (is_cl_data(options.output_dialect)) return "translate writes NC; for APT CL data use reverse";
-  return feed_refusal(options.feed, options.output_dialect);
+  if (is_cl_data(output_dialect)) return "translate writes NC; for APT CL data use reverse";
+  return feed_refusal(feed, output_dialect);
 }
 
 /// Both passes of `t` over a whole program; the output program collects the emitted blocks.
@@ -208,16 +210,7 @@ inline translation run(block_translator& t, const program::program& in) {
 
 }  // namespace translate_detail
 
-/// The names of the dialects whose `capabilities` satisfy `keep`, in list order (e.g. every NC
-/// dialect: `dialect_names([](const program::capabilities& can) { return !can.cl_data; })`).
-template <class Keep>
-std::vector<std::string_view> dialect_names(Keep keep) {
-  std::vector<std::string_view> names;
-  program::for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t) {
-    if (keep(D::can)) names.push_back(D::name);
-  });
-  return names;
-}
+using program::dialect_names;
 
 /// "a, b or c" from a list of names.
 inline std::string one_of(const std::vector<std::string_view>& names) {
@@ -235,11 +228,12 @@ inline std::unique_ptr<block_translator> make_translator(const machine_model& fr
                                                          const translate_options& options = {},
                                                          report_detail detail = report_detail::every_block) {
   using namespace translate_detail;
+  const program::dialect out = output_dialect_of(options, to.geometry.id);
   return std::make_unique<two_pass_translator<nc_source, nc_target>>(
       nc_source{from},
       nc_target(to, options.setup.value_or(default_setup(from.geometry.id, to.geometry.id)), options.feed,
-                source_language, options.output_dialect, false),
-      file, options.output_dialect, detail, translate_refusal(source_language, options),
+                source_language, out, false),
+      file, out, detail, translate_refusal(source_language, options.feed, out),
       source_context{source_language, {}, nullptr, "--from"}, options.common);
 }
 
@@ -250,7 +244,7 @@ inline std::unique_ptr<block_translator> make_reverse(const machine_model& m, pr
                                                       const common_options& common = {}) {
   using namespace translate_detail;
   return std::make_unique<two_pass_translator<nc_source, cl_target>>(
-      nc_source{m}, cl_target(source_language), file, program::dialect::apt, detail,
+      nc_source{m}, cl_target(source_language), file, program::cl_data_dialect(), detail,
       translate_detail::is_cl_data(source_language) ? std::optional<std::string>("the input is already APT CL data")
                                                     : std::nullopt,
       source_context{source_language, {}, nullptr, "--machine"}, common);

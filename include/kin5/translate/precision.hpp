@@ -14,18 +14,12 @@
 /// and the output the other: a vector component's last place 10⁻ᵛ rad needs v − 1 decimals of a
 /// degree; an angle's 10⁻ᵃ° (1.75·10⁻⁽ᵃ⁺²⁾ rad) needs a + 2 decimals of a vector.
 ///
-/// The controllers' resolutions (`dialect_resolutions`; docs/dialects/*.md cite them):
-/// | dialect | usual (linear, angle, feed, vector) | finest | source |
-/// |---|---|---|---|
-/// | heidenhain | 3, 3, 1, 7 | 4, 4, 3, 7 | TNC 640 User's Manual DIN/ISO 1/2015, §19.3 p. 631 |
-/// | siemens | 3, 3, 1, 7 | 6, 6, 3, 9 | 840Di Manual (HBI) 06/2003 §10.3.1: input rounded to MD10200/MD10210 |
-/// | iso | 3, 3, 1, 7 | 4, 4, 3, 7 | increment system IS-C (Mitsubishi M700V §2.1); IS-B rounds the 4th |
-/// | apt | 3, 3, 1, 7 | 6, 6, 6, 9 | CL data: no controller |
+/// The controllers' resolutions are data of each dialect (`reads`, a `program::controller`, in
+/// `program/<dialect>/dialect.hpp`, which cites the manual; docs/dialects/*.md too).
 /// @code
 ///   kin5::precision_notes notes;
-///   const auto d = kin5::output_decimals(read.resolution, program::dialect::heidenhain, std::nullopt, &notes);
-///   program::block_writer writer(program::dialect::heidenhain, source, file,
-///                                kin5::write_settings_for(program::dialect::heidenhain, d));
+///   const auto d = kin5::output_decimals(read.resolution, out, std::nullopt, &notes);
+///   program::block_writer writer(out, source, file, kin5::write_settings_for(out, d));
 /// @endcode
 #pragma once
 
@@ -40,28 +34,6 @@
 #include "../program/resolution.hpp"
 
 namespace kin5 {
-
-/// What a dialect's controller reads: the decimals written by default and the finest it takes.
-struct dialect_resolution {
-  program::dialect language;
-  program::word_decimals usual;   ///< written when the source is no finer
-  program::word_decimals finest;  ///< the controller's input resolution
-};
-
-/// Per dialect (see the file comment; to move into each entry of the dialect list).
-inline constexpr std::array<dialect_resolution, 4> dialect_resolutions{{
-    {program::dialect::heidenhain, {3, 3, 1, 7}, {4, 4, 3, 7}},
-    {program::dialect::siemens, {3, 3, 1, 7}, {6, 6, 3, 9}},
-    {program::dialect::iso, {3, 3, 1, 7}, {4, 4, 3, 7}},
-    {program::dialect::apt, {3, 3, 1, 7}, {6, 6, 6, 9}},
-}};
-
-/// The entry of `dialect_resolutions` for `d`.
-constexpr const dialect_resolution& resolution_of(program::dialect d) {
-  for (const auto& r : dialect_resolutions)
-    if (r.language == d) return r;
-  return dialect_resolutions[0];
-}
 
 /// The source's decimals per class, angles and vectors standing in for each other where one is
 /// missing (see the file comment); empty where the source writes neither.
@@ -91,7 +63,7 @@ struct precision_notes {
 inline program::word_decimals output_decimals(const program::number_resolution& source, program::dialect out,
                                               std::optional<int> digits, precision_notes* notes = nullptr,
                                               bool source_is_cl = false) {
-  const dialect_resolution& limits = resolution_of(out);
+  const program::controller limits = program::controller_of(out);
   const program::number_resolution s = source_decimals(source);
   precision_notes said;
   auto pick = [&](const std::optional<int>& wanted, int usual, int finest, std::string_view what, bool written) {
@@ -124,13 +96,13 @@ inline program::word_decimals output_decimals(const program::number_resolution& 
 /// Writer settings for dialect `out` with decimals `d` (the other dialects' stay at their defaults).
 inline program::write_settings write_settings_for(program::dialect out, const program::word_decimals& d) {
   program::write_settings settings;
-  program::for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t) {
-    if (D::id != out) return;
+  program::for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t i) {
+    if (program::dialect(i) != out) return;
     auto& o = settings.of<D>();
     o.linear_decimals = d.linear;
     o.angle_decimals = d.angle;
     o.feed_decimals = d.feed;
-    o.finest_feed_decimals = std::max(d.feed, resolution_of(out).finest.feed);
+    o.finest_feed_decimals = std::max(d.feed, program::controller_of(out).finest.feed);
     o.vector_decimals = d.vector;
   });
   return settings;

@@ -15,7 +15,7 @@
 /// reader keeps no column per word, so the word is found again in the block's first line
 /// (`program::for_each_address_word`); where it is not found there, the block's start is named.
 /// @code
-///   kin5::translate_detail::source_context ctx{program::dialect::siemens, 0.0005_deg, &result};
+///   kin5::translate_detail::source_context ctx{source_language, 0.0005_deg, &result};
 ///   if (!kin5::translate_detail::check_source_axes(kin5::machines::sajo_12000p::model, block, ctx)) fail();
 /// @endcode
 #pragma once
@@ -44,11 +44,11 @@ namespace kin5::translate_detail {
 /// What the source checks of one program need: its dialect, the angle tolerance, and where
 /// diagnostics go (nowhere in the second pass, which sees the same blocks again).
 struct source_context {
-  program::dialect language = program::dialect::siemens;
+  program::dialect language{};
   degrees tolerance = widest_default_angle_tolerance;
   translation* out = nullptr;
   std::string_view machine_option = "--from";  ///< the option that names the source machine
-  program::dialect output = program::dialect::siemens;  ///< the dialect written
+  program::dialect output{};  ///< the dialect written
   const m_map* m_codes = nullptr;                        ///< the user's M mapping (`--m-map`), if any
   const work_offset_map* work_offsets = nullptr;         ///< the user's work-offset mapping, if any
 };
@@ -209,15 +209,15 @@ inline std::string lost_kept_word(std::string_view word, program::dialect from) 
   std::string w;
   for (char c : word)
     if (!program::is_space(c)) w.push_back(program::to_upper(c));
-  if (from == program::dialect::iso && w.size() > 1 && w[0] == 'G') {
+  if (from == program::id_of<program::iso::dialect>() && w.size() > 1 && w[0] == 'G') {
     char* end = nullptr;
     const double g = std::strtod(w.c_str() + 1, &end);
     if (end && *end == '\0' && g == 4) return "a dwell";
     if (end && *end == '\0' && g == 43) return "tool length compensation (G43, without tool-tip tracking)";
   }
-  if (from == program::dialect::siemens && w.rfind("T=", 0) == 0) return "a tool named in T=";
-  if (from == program::dialect::siemens && w == "D0") return "tool length compensation off (D0)";
-  if (from == program::dialect::heidenhain && (w == "X" || w == "Y")) return "a tool axis other than Z in TOOL CALL";
+  if (from == program::id_of<program::siemens::dialect>() && w.rfind("T=", 0) == 0) return "a tool named in T=";
+  if (from == program::id_of<program::siemens::dialect>() && w == "D0") return "tool length compensation off (D0)";
+  if (from == program::id_of<program::heidenhain::dialect>() && (w == "X" || w == "Y")) return "a tool axis other than Z in TOOL CALL";
   return "";
 }
 

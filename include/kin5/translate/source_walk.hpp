@@ -15,7 +15,7 @@
 /// diagnostics go to the result in the first only.
 /// @code
 ///   kin5::translate_detail::source_walker walk(kin5::translate_detail::nc_source{kin5::machines::sajo_12000p::model});
-///   walk.configure({program::dialect::siemens, 0.0005_deg}, {});
+///   walk.configure({source_language, 0.0005_deg}, {});
 ///   for (const auto& b : nc.blocks) {
 ///     const auto s = walk.next(b, &result, true);
 ///     if (s.what == source_step::kind::motion) use(s.tip_source_mm, s.u_source);

@@ -17,10 +17,10 @@
 /// the output's decimals (precision.hpp); a caller of `stream_blocks` gives it to the translator
 /// (`block_translator::source_resolution`). The `kin5` tool and the laws run this same code.
 /// @code
-///   auto t = kin5::make_translator<From, To>(program::dialect::siemens, "part.mpf", options);
+///   auto t = kin5::make_translator<From, To>(source_language, "part.mpf", options);
 ///   kin5::string_sink out;  // or the tool's output file: any `text_sink`
-///   const auto run = kin5::stream_text(*t, std::move(text), program::dialect::siemens, "part.mpf",
-///                                      program::dialect::heidenhain, out);
+///   const auto run = kin5::stream_text(*t, std::move(text), source_language, "part.mpf",
+///                                      kin5::output_dialect_of(options, To::id), out);
 ///   if (!run.ok(*t)) { /* run.input.errors, t->result().errors, run.writer_error */ }
 /// @endcode
 #pragma once
@@ -112,7 +112,7 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
   run.record_chunks = records.chunks();
   if (run.input.ok() && !says_something)
     run.input.errors.push_back(translate_detail::file_error(file, "empty program: no block to translate"));
-  if (run.input.ok() && source_language == program::dialect::apt && moving == 0 && not_understood > 0)
+  if (run.input.ok() && program::capabilities_of(source_language).cl_data && moving == 0 && not_understood > 0)
     run.input.errors.push_back(translate_detail::file_error(file, not_cl_data(not_understood)));
   if (!run.input.ok()) return run;
 
@@ -143,8 +143,8 @@ stream_result stream_text(block_translator& t, std::string text, program::dialec
   const program::number_resolution resolution = program::scan_resolution(text, source_language);
   t.source_resolution(resolution);
   const block_source read = [&](program::read_result& diagnostics, const program::block_sink& on_block) {
-    const auto guessed = source_language == program::dialect::apt ? program::guess_dialect(text) : std::nullopt;
-    if (guessed && *guessed != program::dialect::apt) {  // NC given as CL data: refused before reading
+    const auto guessed = program::capabilities_of(source_language).cl_data ? program::guess_dialect(text) : std::nullopt;
+    if (guessed && *guessed != source_language) {  // NC given as CL data: refused before reading
       diagnostics.errors.push_back(translate_detail::file_error(file, not_cl_data(0, guessed)));
       return;
     }

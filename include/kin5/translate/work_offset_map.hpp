@@ -8,8 +8,8 @@
 /// @code
 ///   kin5::work_offset_map map;
 ///   if (!map.add("G54=1,G505=G54.1P3")) usage_error();
-///   const auto t = kin5::work_offset_into({program::work_offset_family::g54, 1}, program::dialect::siemens,
-///                                         program::dialect::heidenhain, map);   // t.written: preset 1
+///   const auto t = kin5::work_offset_into({program::work_offset_family::g54, 1}, source_language,
+///                                         output_language, map);   // t.written: preset 1
 /// @endcode
 #pragma once
 

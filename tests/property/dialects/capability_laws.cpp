@@ -33,7 +33,7 @@ block move(double x_mm, double y_mm, double z_mm, std::size_t line) {
 
 program of(std::vector<block> blocks) {
   program p;
-  p.language = dialect::iso;
+  p.language = id_of<iso::dialect>();
   p.file = "in.nc";
   p.blocks = std::move(blocks);
   return p;

@@ -52,7 +52,7 @@ concept has_contract = requires { sizeof(contract<D>); };
 /// `text` read by dialect D's reader, as from a file named `file` (by default the contract's).
 template <class D>
 program::read_result read_as(std::string_view text, std::string file = std::string(contract<D>::file)) {
-  return program::read_whole(D::id, text, std::move(file), &D::read_blocks);
+  return program::read_whole(program::id_of<D>(), text, std::move(file), &D::read_blocks);
 }
 
 /// `p` written by dialect D's writer with its default options.

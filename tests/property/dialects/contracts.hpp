@@ -1,10 +1,8 @@
 /// @file contracts.hpp
-/// Every dialect's contract (contract.hpp), one include per folder: the dialect laws and the fuzz
-/// targets see them all. laws.cpp fails to compile for a dialect of `program::dialects` whose
-/// folder is missing here.
+/// Every dialect's contract (contract.hpp), one per folder: the dialect laws and the fuzz targets
+/// see them all. The build generates the includes from the folders
+/// (cmake/kin5_dialect_contracts.cmake), so a new dialect's folder needs no line here; laws.cpp
+/// fails to compile for a dialect of `program::dialects` that has no folder.
 #pragma once
 
-#include "apt/contract.hpp"
-#include "heidenhain/contract.hpp"
-#include "iso/contract.hpp"
-#include "siemens/contract.hpp"
+#include "kin5_dialect_contracts.hpp"

@@ -127,9 +127,9 @@ struct markers_name_the_dialect {
     for (const marker& m : D::markers) {
       const std::string keyword(m.keyword);
       INFO("marker: " << keyword);
-      CHECK(guess_dialect(keyword + "\n") == D::id);
-      CHECK(guess_dialect("N10 " + lower_case(keyword) + "\n") == D::id);
-      if (m.where == marker::place::anywhere) CHECK(guess_dialect("(x) " + keyword + "\n") == D::id);
+      CHECK(guess_dialect(keyword + "\n") == id_of<D>());
+      CHECK(guess_dialect("N10 " + lower_case(keyword) + "\n") == id_of<D>());
+      if (m.where == marker::place::anywhere) CHECK(guess_dialect("(x) " + keyword + "\n") == id_of<D>());
       if (m.where == marker::place::anywhere) CHECK(guess_dialect("X" + keyword + "\n") == std::nullopt);
       if (m.where == marker::place::block_start) CHECK(guess_dialect("X " + keyword + "\n") == std::nullopt);
     }

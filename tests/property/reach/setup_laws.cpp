@@ -120,7 +120,7 @@ TEST_CASE("Program report: classes, unreachable runs with their gap, planned tra
   const std::string text =
       "N10 G90 G17 G54\nN20 TRAORI\nN30 G1 X0 Y0 Z50 A-45 B30 F1000\nN40 G1 X1 A5\nN50 G1 X2 A6\n"
       "N60 G1 X3 A-30\nN70 G1 X4 A-100\nN80 G1 X5 A20\nN90 TRAFOOF\nN100 M30\n";
-  const auto in = program::read(program::dialect::siemens, text, "wall.mpf");
+  const auto in = program::read(program::id_of<program::siemens::dialect>(), text, "wall.mpf");
   REQUIRE(in.ok());
   const auto r = reach::make_program_report(sajo_12000p::model, dmu_80p::model, in.parsed, default_setup<sajo_12000p, dmu_80p>(), true);
   CHECK(r.per_class == std::array<std::size_t, 3>{2, 1, 3});
@@ -146,7 +146,7 @@ TEST_CASE("Program report: the slides of each reachable block put the tool back 
   const std::string text =
       "N10 G90 G17 G54\nN20 TRAORI\nN30 G1 X0 Y0 Z50 A-45 B30 F1000\nN40 G1 X1 A5\nN50 G1 X2 A6\n"
       "N60 G1 X3 A-30\nN70 G1 X4 A-100\nN80 G1 X5 A20\nN90 TRAFOOF\nN100 M30\n";
-  const auto in = program::read(program::dialect::siemens, text, "wall.mpf");
+  const auto in = program::read(program::id_of<program::siemens::dialect>(), text, "wall.mpf");
   REQUIRE(in.ok());
   const rigid_transform setup = default_setup<sajo_12000p, dmu_80p>();
   run_inputs inputs{.tool_length_mm = 120.0};

@@ -19,16 +19,16 @@ TEST_CASE("inverse time: G93 blocks are written as FEDRAT/INVERS by reverse") {
       "G1 X20. F30.\n"
       "G94 G1 X30. F1000.\n"
       "M30\n";
-  const program::read_result nc = program::read(program::dialect::iso, text, "t.nc");
+  const program::read_result nc = program::read(program::id_of<program::iso::dialect>(), text, "t.nc");
   REQUIRE(nc.ok());
   const translation cl = reverse<machines::ac_trunnion>(nc.parsed);
   REQUIRE(cl.errors.empty());
-  const std::string apt = program::write(program::dialect::apt, cl.output);
+  const std::string apt = program::write(program::id_of<program::apt::dialect>(), cl.output);
   INFO(apt);
   CHECK(apt.find("FEDRAT/MMPM,1000\n") != std::string::npos);
   CHECK(apt.find("FEDRAT/INVERS,20\n") != std::string::npos);
   CHECK(apt.find("FEDRAT/INVERS,30\n") != std::string::npos);
   CHECK(apt.find("FEDRAT/MMPM,1000\n", apt.find("FEDRAT/INVERS,30")) != std::string::npos);
-  const program::read_result back = program::read(program::dialect::apt, apt, "t.cls");
+  const program::read_result back = program::read(program::id_of<program::apt::dialect>(), apt, "t.cls");
   REQUIRE(back.ok());
 }

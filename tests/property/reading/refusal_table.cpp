@@ -242,30 +242,30 @@ TEST_CASE("across dialects, a kept word whose effect a comment would lose is ref
     std::string text, error;  // error empty: carried as a comment, harmless
   };
   const std::vector<case_row> rows{
-      {dialect::iso, "G4 P1500\n",
+      {id_of<iso::dialect>(), "G4 P1500\n",
        "t:1:1: error: G4: a dwell of iso is not translated into heidenhain yet (it would become a comment)"},
-      {dialect::iso, "G04 X1.5\n",  // X of a G4 is its time, not a position
+      {id_of<iso::dialect>(), "G04 X1.5\n",  // X of a G4 is its time, not a position
        "t:1:1: error: G04: a dwell of iso is not translated into heidenhain yet (it would become a comment)"},
-      {dialect::iso, "G43 H1\n",
+      {id_of<iso::dialect>(), "G43 H1\n",
        "t:1:1: error: G43: tool length compensation (G43, without tool-tip tracking) of iso is not translated into "
        "heidenhain yet (it would become a comment)"},
-      {dialect::siemens, "T=\"BALL\"\n",
+      {id_of<siemens::dialect>(), "T=\"BALL\"\n",
        "t:1:1: error: T=\"BALL\": a tool named in T= of siemens is not translated into heidenhain yet (it would "
        "become a comment)"},
-      {dialect::siemens, "D0\n",
+      {id_of<siemens::dialect>(), "D0\n",
        "t:1:1: error: D0: tool length compensation off (D0) of siemens is not translated into heidenhain yet (it "
        "would become a comment)"},
-      {dialect::iso, "G17 G40 G80 G90 G05.1 Q1\n", ""},
-      {dialect::siemens, "G17 G40 G90 SOFT D1\n", ""},
+      {id_of<iso::dialect>(), "G17 G40 G80 G90 G05.1 Q1\n", ""},
+      {id_of<siemens::dialect>(), "G17 G40 G90 SOFT D1\n", ""},
   };
   for (const case_row& r : rows) {
     INFO(r.text);
-    const read_result read = r.from == dialect::iso ? iso::read(r.text, "t") : siemens::read(r.text, "t");
+    const read_result read = r.from == id_of<iso::dialect>() ? iso::read(r.text, "t") : siemens::read(r.text, "t");
     REQUIRE(read.ok());
     kin5::translation out;
     source_context ctx;
     ctx.language = r.from;
-    ctx.output = dialect::heidenhain;
+    ctx.output = id_of<heidenhain::dialect>();
     ctx.out = &out;
     const bool ok = check_kept_words(read.parsed.blocks.at(0), ctx);
     CHECK(ok == r.error.empty());
@@ -279,7 +279,7 @@ TEST_CASE("across dialects, a kept word whose effect a comment would lose is ref
   const read_result h = heidenhain::read("TOOL CALL 5 Y S1000\n", "t");
   REQUIRE(h.ok());
   source_context ctx;
-  ctx.language = dialect::heidenhain;
-  ctx.output = dialect::iso;
+  ctx.language = id_of<heidenhain::dialect>();
+  ctx.output = id_of<iso::dialect>();
   CHECK_FALSE(check_kept_words(h.parsed.blocks.at(0), ctx));
 }

@@ -56,8 +56,8 @@ trace trace_of(const std::vector<block>& blocks) {
 /// A program as the reader of `from` gives it: changes, selections, tracking, moves.
 std::vector<block> draw_program(dialect from) {
   std::vector<block> out;
-  const bool tracking = from != dialect::apt;                              // APT has no TCP word
-  const bool selects = from == dialect::iso || from == dialect::siemens;  // T alone, M6 later
+  const bool tracking = from != id_of<apt::dialect>();                              // APT has no TCP word
+  const bool selects = from == id_of<iso::dialect>() || from == id_of<siemens::dialect>();  // T alone, M6 later
   const int n = *rc::gen::inRange(1, 25);
   double x = 0;
   for (int k = 0; k < n; ++k) {
@@ -91,8 +91,8 @@ std::vector<block> draw_program(dialect from) {
 }  // namespace
 
 TEST_CASE("tool changes: every ordered pair of dialects keeps the tool and tracking at every move") {
-  for (const dialect from : {dialect::siemens, dialect::heidenhain, dialect::iso, dialect::apt})
-    for (const dialect to : {dialect::siemens, dialect::heidenhain, dialect::iso, dialect::apt}) {
+  for (const dialect from : {id_of<siemens::dialect>(), id_of<heidenhain::dialect>(), id_of<iso::dialect>(), id_of<apt::dialect>()})
+    for (const dialect to : {id_of<siemens::dialect>(), id_of<heidenhain::dialect>(), id_of<iso::dialect>(), id_of<apt::dialect>()}) {
       if (from == to) continue;
       const std::string name = std::string(kin5::program::name(from)) + " -> " + std::string(kin5::program::name(to));
       const bool ok = rc::check(name, [from, to] {
@@ -113,7 +113,7 @@ TEST_CASE("tool changes: every ordered pair of dialects keeps the tool and track
         RC_ASSERT(got.moves.size() == want.moves.size());
         for (std::size_t k = 0; k < want.moves.size(); ++k) {
           RC_ASSERT(got.moves[k].tool == want.moves[k].tool);
-          if (to != dialect::apt) RC_ASSERT(got.moves[k].tcp == want.moves[k].tcp);
+          if (to != id_of<apt::dialect>()) RC_ASSERT(got.moves[k].tcp == want.moves[k].tcp);
         }
         RC_ASSERT(!got.change_under_tcp);
       });

@@ -37,7 +37,7 @@ void each_dialect(F&& f) {
     INFO(D::name);
     REQUIRE(ending_program.count(D::name) == 1);  // every dialect has its row
     REQUIRE(open_program.count(D::name) == 1);
-    f(D::id, ending_program.at(D::name), open_program.at(D::name));
+    f(kin5::program::id_of<D>(), ending_program.at(D::name), open_program.at(D::name));
   });
 }
 }  // namespace
@@ -101,7 +101,7 @@ TEST_CASE("transmission: an ETX inside a comment is refused at its place") {
     const std::string& text = ending_program.at(D::name);
     const std::size_t first_line_end = text.find('\n') + 1;
     const std::string program = text.substr(0, first_line_end) + etx_in_comment.at(D::name) + text.substr(first_line_end);
-    const read_result r = read(D::id, program, "p");
+    const read_result r = read(id_of<D>(), program, "p");
     REQUIRE(r.errors.size() == 1);
     const std::size_t column = etx_in_comment.at(D::name).find('\x03') + 1;
     CHECK(r.errors[0].to_string() == "p:2:" + std::to_string(column) +

@@ -36,7 +36,7 @@ void round_trip(dialect from, const std::string& text, dialect to, const std::st
 TEST_CASE("units: ISO G20 programs are read in millimetres and written back in inches") {
   const std::string text =
       "%\nO1000\nG20 G17\nG0 X1.2345 Y-.5 Z2.\nG1 X2. F9.8\nG2 X3. Y-.5 I.5 J0. F10.\nG93 G1 X4. F2.5\nM30\n%\n";
-  const read_result r = read(dialect::iso, text, "t");
+  const read_result r = read(id_of<iso::dialect>(), text, "t");
   REQUIRE(r.ok());
   const auto& b = r.parsed.blocks;
   REQUIRE(b.size() == 9);
@@ -50,7 +50,7 @@ TEST_CASE("units: ISO G20 programs are read in millimetres and written back in i
   CHECK(near(b[5].feed, 254.0));
   CHECK(near(b[6].feed, 2.5));  // inverse time: 1/min, not a length
   CHECK(near(b[6].axes.x_mm, 101.6));
-  round_trip(dialect::iso, text, dialect::iso,
+  round_trip(id_of<iso::dialect>(), text, id_of<iso::dialect>(),
              "%\nO1000\nG17 G20\nG0 X1.2345 Y-0.5 Z2\nG1 X2 F9.8\nG2 X3 Y-0.5 I0.5 J0 F10\nG1 G93 X4 F2.5\nM30\n%\n");
 }
 
@@ -58,7 +58,7 @@ TEST_CASE("units: APT UNITS/INCHES and FEDRAT/IPM are read in millimetres and wr
   const std::string text =
       "PARTNO P\nUNITS/INCHES\nFEDRAT/9.8\nGOTO/1.2345,-.5,2.\nFEDRAT/IPM,10\nFEDRAT/MMPM,254\nGOTO/2,0,0\n"
       "FEDRAT/INVERS,2.5\nGOTO/3,0,0\nFINI\n";
-  const read_result r = read(dialect::apt, text, "t");
+  const read_result r = read(id_of<apt::dialect>(), text, "t");
   REQUIRE(r.ok());
   const auto& b = r.parsed.blocks;
   REQUIRE(b.size() == 10);
@@ -68,21 +68,21 @@ TEST_CASE("units: APT UNITS/INCHES and FEDRAT/IPM are read in millimetres and wr
   CHECK(near(b[4].feed, 254.0));
   CHECK(near(b[5].feed, 254.0));
   CHECK(near(b[7].feed, 2.5));
-  round_trip(dialect::apt, text, dialect::apt,
+  round_trip(id_of<apt::dialect>(), text, id_of<apt::dialect>(),
              "PARTNO P\nUNITS/INCHES\nFEDRAT/IPM,9.8\nGOTO/1.2345,-0.5,2\nFEDRAT/IPM,10\nFEDRAT/IPM,10\nGOTO/2,0,0\n"
              "FEDRAT/INVERS,2.5\nGOTO/3,0,0\nFINI\n");
-  const read_result mm = read(dialect::apt, "UNITS/MM\nFEDRAT/IPM,10\n", "t");
+  const read_result mm = read(id_of<apt::dialect>(), "UNITS/MM\nFEDRAT/IPM,10\n", "t");
   REQUIRE(mm.ok());
   CHECK(near(mm.parsed.blocks[1].feed, 254.0));
 }
 
 TEST_CASE("units: an inch ISO program written as APT stays in inches") {
-  round_trip(dialect::iso, "G20\nG1 X1. Y2. Z3. F10.\n", dialect::apt,
+  round_trip(id_of<iso::dialect>(), "G20\nG1 X1. Y2. Z3. F10.\n", id_of<apt::dialect>(),
              "UNITS/INCHES\nFEDRAT/IPM,10\nGOTO/1,2,3\n");
 }
 
 TEST_CASE("units: a unit change after motion is refused at the unit word") {
-  CHECK(errors_of(dialect::iso, "G21\nG1 X1. F100.\nG20\n") ==
+  CHECK(errors_of(id_of<iso::dialect>(), "G21\nG1 X1. F100.\nG20\n") ==
         std::vector<std::string>{"t:3:1: error: G20 after motion: a unit change inside a program is not supported"});
-  CHECK(errors_of(dialect::iso, "G20\nG1 X1. F10.\nG20 X2.\n").empty());
+  CHECK(errors_of(id_of<iso::dialect>(), "G20\nG1 X1. F10.\nG20 X2.\n").empty());
 }

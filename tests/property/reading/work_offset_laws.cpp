@@ -29,20 +29,18 @@ using program_text = kin5::program::program;
 namespace {
 
 using family = work_offset_family;
-const std::vector<dialect> every_dialect = {dialect::siemens, dialect::heidenhain, dialect::iso, dialect::apt};
+const std::vector<dialect> every_dialect = {id_of<siemens::dialect>(), id_of<heidenhain::dialect>(), id_of<iso::dialect>(), id_of<apt::dialect>()};
 
 /// What the reader of `d` gives and its writer writes (the documented table).
 bool selects(dialect d, const work_offset& w) {
-  switch (d) {
-    case dialect::iso:
-      return (w.family == family::g54 && w.number >= 1 && w.number <= 6) ||
-             (w.family == family::extended && w.number >= 1 && w.number <= 300);
-    case dialect::siemens:
-      return (w.family == family::g54 && w.number >= 1 && w.number <= 4) ||
-             (w.family == family::siemens && (w.number == 0 || (w.number >= 505 && w.number <= 599)));
-    case dialect::heidenhain: return w.family == family::preset && w.number >= 0 && w.number <= 65535;
-    default: return false;
-  }
+  if (d == id_of<iso::dialect>())
+    return (w.family == family::g54 && w.number >= 1 && w.number <= 6) ||
+           (w.family == family::extended && w.number >= 1 && w.number <= 300);
+  if (d == id_of<siemens::dialect>())
+    return (w.family == family::g54 && w.number >= 1 && w.number <= 4) ||
+           (w.family == family::siemens && (w.number == 0 || (w.number >= 505 && w.number <= 599)));
+  if (d == id_of<heidenhain::dialect>()) return w.family == family::preset && w.number >= 0 && w.number <= 65535;
+  return false;
 }
 
 /// A selection of any family, mostly one that some dialect has.
@@ -58,18 +56,18 @@ work_offset any_selection() {
 
 /// A selection the reader of `d` gives (not APT's: it has none).
 work_offset selection_of(dialect d) {
-  switch (d) {
-    case dialect::iso:
-      if (*rc::gen::inRange(0, 2)) return {family::extended, *rc::gen::inRange(1, 301)};
-      return {family::g54, *rc::gen::inRange(1, 7)};
-    case dialect::siemens:
-      switch (*rc::gen::inRange(0, 3)) {
-        case 0: return {family::siemens, 0};
-        case 1: return {family::siemens, *rc::gen::inRange(505, 600)};
-        default: return {family::g54, *rc::gen::inRange(1, 5)};
-      }
-    default: return {family::preset, *rc::gen::inRange(0, 65536)};
+  if (d == id_of<iso::dialect>()) {
+    if (*rc::gen::inRange(0, 2)) return {family::extended, *rc::gen::inRange(1, 301)};
+    return {family::g54, *rc::gen::inRange(1, 7)};
   }
+  if (d == id_of<siemens::dialect>()) {
+    switch (*rc::gen::inRange(0, 3)) {
+      case 0: return {family::siemens, 0};
+      case 1: return {family::siemens, *rc::gen::inRange(505, 600)};
+      default: return {family::g54, *rc::gen::inRange(1, 5)};
+    }
+  }
+  return {family::preset, *rc::gen::inRange(0, 65536)};
 }
 
 /// Selections and moves as the reader of `from` gives them; under tool-tip tracking with the
@@ -111,7 +109,7 @@ std::vector<std::optional<work_offset>> trace_of(const std::vector<block>& block
 
 /// The same selection in `to` without a mapping: ISO and Siemens G54 … G57, or the same dialect.
 bool same_meaning(const work_offset& w, dialect from, dialect to) {
-  const bool g_code = (from == dialect::iso || from == dialect::siemens) && (to == dialect::iso || to == dialect::siemens);
+  const bool g_code = (from == id_of<iso::dialect>() || from == id_of<siemens::dialect>()) && (to == id_of<iso::dialect>() || to == id_of<siemens::dialect>());
   return from == to || (g_code && w.family == family::g54 && w.number <= 4);
 }
 
@@ -121,14 +119,14 @@ TEST_CASE("work offsets: the table of selections is each dialect's capability") 
   for (const dialect d : every_dialect)
     for (const family f : {family::g54, family::extended, family::siemens, family::preset})
       for (int n = 0; n <= 1000; ++n) CHECK(capabilities_of(d).writes({f, n}) == selects(d, {f, n}));
-  CHECK(capabilities_of(dialect::heidenhain).writes({family::preset, 65535}));
-  CHECK_FALSE(capabilities_of(dialect::heidenhain).writes({family::preset, 65536}));
+  CHECK(capabilities_of(id_of<heidenhain::dialect>()).writes({family::preset, 65535}));
+  CHECK_FALSE(capabilities_of(id_of<heidenhain::dialect>()).writes({family::preset, 65536}));
 }
 
 TEST_CASE("work offsets: every ordered pair of dialects writes a selection it has and refuses one it lacks") {
   for (const dialect from : every_dialect)
     for (const dialect to : every_dialect) {
-      if (from == dialect::apt) continue;  // CL data select no work offset
+      if (from == id_of<apt::dialect>()) continue;  // CL data select no work offset
       const std::string name = std::string(kin5::program::name(from)) + " -> " + std::string(kin5::program::name(to));
       const bool ok = rc::check(name, [from, to] {
         program_text p;
@@ -157,7 +155,7 @@ TEST_CASE("work offsets: every ordered pair of dialects writes a selection it ha
 
 TEST_CASE("work offsets: translation writes the same selection, the mapped one, or refuses at the selection") {
   using M = machines::dmu_80p;
-  for (const dialect from : {dialect::siemens, dialect::heidenhain, dialect::iso})
+  for (const dialect from : {id_of<siemens::dialect>(), id_of<heidenhain::dialect>(), id_of<iso::dialect>()})
     for (const dialect to : every_dialect) {
       const std::string name = std::string(kin5::program::name(from)) + " -> " + std::string(kin5::program::name(to));
       const bool ok = rc::check(name, [from, to] {
@@ -176,7 +174,7 @@ TEST_CASE("work offsets: translation writes the same selection, the mapped one, 
           if (chosen.count({static_cast<int>(w.family), w.number})) continue;
           std::optional<work_offset> target;
           const int kind = *rc::gen::inRange(0, 3);
-          if (kind == 0 && to != dialect::apt) target = selection_of(to);
+          if (kind == 0 && to != id_of<apt::dialect>()) target = selection_of(to);
           if (kind == 1) target = any_selection();
           chosen[{static_cast<int>(w.family), w.number}] = target;
           const std::string entry = map_key(w) + "=" + (target ? map_key(*target) : "");
@@ -197,7 +195,7 @@ TEST_CASE("work offsets: translation writes the same selection, the mapped one, 
           }
         }
         std::unique_ptr<block_translator> t;
-        if (to == dialect::apt) {
+        if (to == id_of<apt::dialect>()) {
           t = make_reverse<M>(from, "w", report_detail::exceptions_only, common);
         } else {
           translate_options options;
@@ -234,32 +232,32 @@ TEST_CASE("work offsets: each reader's spellings, and the refusals around them")
     const char* error;  // the first error, or empty
   };
   const std::vector<row> rows = {
-      {dialect::iso, "G54\n", work_offset{family::g54, 1}, ""},
-      {dialect::iso, "G90 G59 G17\n", work_offset{family::g54, 6}, ""},
-      {dialect::iso, "G54.1 P48\n", work_offset{family::extended, 48}, ""},
-      {dialect::iso, "P7 G54.1\n", work_offset{family::extended, 7}, ""},
-      {dialect::iso, "G54.1\n", std::nullopt, "t:1:1: error: G54.1 needs P n, the number of the extended work offset"},
-      {dialect::iso, "G54.1 P0\n", std::nullopt,
+      {id_of<iso::dialect>(), "G54\n", work_offset{family::g54, 1}, ""},
+      {id_of<iso::dialect>(), "G90 G59 G17\n", work_offset{family::g54, 6}, ""},
+      {id_of<iso::dialect>(), "G54.1 P48\n", work_offset{family::extended, 48}, ""},
+      {id_of<iso::dialect>(), "P7 G54.1\n", work_offset{family::extended, 7}, ""},
+      {id_of<iso::dialect>(), "G54.1\n", std::nullopt, "t:1:1: error: G54.1 needs P n, the number of the extended work offset"},
+      {id_of<iso::dialect>(), "G54.1 P0\n", std::nullopt,
        "t:1:7: error: G54.1 P: the extended work offset's number must be a whole number from 1 to 300"},
-      {dialect::iso, "G54 G55\n", std::nullopt, "t:1:5: error: two work offsets in one block"},
-      {dialect::iso, "G54 G54.1 P2\n", std::nullopt, "t:1:1: error: two work offsets in one block"},
-      {dialect::siemens, "N10 G54\n", work_offset{family::g54, 1}, ""},
-      {dialect::siemens, "N10 G57\n", work_offset{family::g54, 4}, ""},
-      {dialect::siemens, "N10 G505\n", work_offset{family::siemens, 505}, ""},
-      {dialect::siemens, "N10 G599\n", work_offset{family::siemens, 599}, ""},
-      {dialect::siemens, "N10 G500\n", work_offset{family::siemens, 0}, ""},
-      {dialect::siemens, "N10 G54 G505\n", std::nullopt, "t:1:9: error: two work offsets in one block"},
-      {dialect::siemens, "N10 G58 X10\n", std::nullopt,
+      {id_of<iso::dialect>(), "G54 G55\n", std::nullopt, "t:1:5: error: two work offsets in one block"},
+      {id_of<iso::dialect>(), "G54 G54.1 P2\n", std::nullopt, "t:1:1: error: two work offsets in one block"},
+      {id_of<siemens::dialect>(), "N10 G54\n", work_offset{family::g54, 1}, ""},
+      {id_of<siemens::dialect>(), "N10 G57\n", work_offset{family::g54, 4}, ""},
+      {id_of<siemens::dialect>(), "N10 G505\n", work_offset{family::siemens, 505}, ""},
+      {id_of<siemens::dialect>(), "N10 G599\n", work_offset{family::siemens, 599}, ""},
+      {id_of<siemens::dialect>(), "N10 G500\n", work_offset{family::siemens, 0}, ""},
+      {id_of<siemens::dialect>(), "N10 G54 G505\n", std::nullopt, "t:1:9: error: two work offsets in one block"},
+      {id_of<siemens::dialect>(), "N10 G58 X10\n", std::nullopt,
        "t:1:5: error: G58 changes the working frame; kin5 does not model frame changes"},
-      {dialect::heidenhain, "1 CYCL DEF 247 DATUM SETTING ~\n  Q339=+3 ;DATUM NUMBER\n", work_offset{family::preset, 3}, ""},
-      {dialect::heidenhain, "1 CYCL DEF 247 DATUM SETTING Q339=+0\n", work_offset{family::preset, 0}, ""},
-      {dialect::heidenhain, "1 CYCL DEF 247 DATUM SETTING\n", std::nullopt,
+      {id_of<heidenhain::dialect>(), "1 CYCL DEF 247 DATUM SETTING ~\n  Q339=+3 ;DATUM NUMBER\n", work_offset{family::preset, 3}, ""},
+      {id_of<heidenhain::dialect>(), "1 CYCL DEF 247 DATUM SETTING Q339=+0\n", work_offset{family::preset, 0}, ""},
+      {id_of<heidenhain::dialect>(), "1 CYCL DEF 247 DATUM SETTING\n", std::nullopt,
        "t:1:3: error: CYCL DEF 247 (datum setting) without Q339 in its block: the preset it selects is not known"},
-      {dialect::heidenhain, "1 CYCL DEF 247 DATUM SETTING ~\n  Q339=+Q5\n", std::nullopt,
+      {id_of<heidenhain::dialect>(), "1 CYCL DEF 247 DATUM SETTING ~\n  Q339=+Q5\n", std::nullopt,
        "t:2:3: error: CYCL DEF 247 (datum setting): only Q339=n, a preset number from 0 to 65535, is read"},
-      {dialect::heidenhain, "1 CYCL DEF 247 Q339=+1.5\n", std::nullopt,
+      {id_of<heidenhain::dialect>(), "1 CYCL DEF 247 Q339=+1.5\n", std::nullopt,
        "t:1:16: error: CYCL DEF 247 (datum setting): only Q339=n, a preset number from 0 to 65535, is read"},
-      {dialect::heidenhain, "1 CYCL DEF 7.0 DATUM SHIFT\n2 CYCL DEF 7.1 X+10\n", std::nullopt,
+      {id_of<heidenhain::dialect>(), "1 CYCL DEF 7.0 DATUM SHIFT\n2 CYCL DEF 7.1 X+10\n", std::nullopt,
        "t:2:3: error: CYCL DEF 7 changes the working frame; kin5 does not model frame changes"},
   };
   for (const row& r : rows) {

@@ -48,10 +48,10 @@ written translate_text(const std::string& text, dialect out, std::optional<int> 
   translate_options options;
   options.output_dialect = out;
   options.common.digits = digits;
-  const auto t = make_translator<machines::sajo_12000p, machines::sajo_12000p>(dialect::siemens, "p.mpf", options);
+  const auto t = make_translator<machines::sajo_12000p, machines::sajo_12000p>(program::id_of<program::siemens::dialect>(), "p.mpf", options);
   written w;
   string_sink sink;
-  const auto run = stream_text(*t, text, dialect::siemens, "p.mpf", out, sink);
+  const auto run = stream_text(*t, text, program::id_of<program::siemens::dialect>(), "p.mpf", out, sink);
   if (!run.ok(*t)) throw std::runtime_error("translation failed");
   w.text = sink.text;
   w.result = t->result();
@@ -59,7 +59,7 @@ written translate_text(const std::string& text, dialect out, std::optional<int> 
   return w;
 }
 
-constexpr dialect nc_dialects[] = {dialect::siemens, dialect::heidenhain, dialect::iso};
+constexpr dialect nc_dialects[] = {program::id_of<program::siemens::dialect>(), program::id_of<program::heidenhain::dialect>(), program::id_of<program::iso::dialect>()};
 
 }  // namespace
 
@@ -68,16 +68,16 @@ TEST_CASE("the output keeps the source's decimals; finer than the output control
     const int decimals = *rc::gen::inRange(0, 8);
     const dialect out = *rc::gen::elementOf(std::vector<dialect>(std::begin(nc_dialects), std::end(nc_dialects)));
     const auto tips = *rc::gen::container<std::vector<vec3>>(*rc::gen::inRange<std::size_t>(1, 6), test::tip());
-    const int finest = resolution_of(out).finest.linear;
+    const int finest = program::controller_of(out).finest.linear;
     if (decimals > finest) {  // rounding would move the machine: refused, naming --digits, nothing written
-      const auto t = make_translator<machines::sajo_12000p, machines::sajo_12000p>(dialect::siemens, "p.mpf",
+      const auto t = make_translator<machines::sajo_12000p, machines::sajo_12000p>(program::id_of<program::siemens::dialect>(), "p.mpf",
                                                                                   [out] {
                                                                                     translate_options o;
                                                                                     o.output_dialect = out;
                                                                                     return o;
                                                                                   }());
       string_sink sink;
-      const auto run = stream_text(*t, siemens_text(tips, decimals), dialect::siemens, "p.mpf", out, sink);
+      const auto run = stream_text(*t, siemens_text(tips, decimals), program::id_of<program::siemens::dialect>(), "p.mpf", out, sink);
       RC_ASSERT(!run.ok(*t));
       RC_ASSERT(sink.text.empty());
       RC_ASSERT(t->result().errors.size() == 1u);
@@ -105,7 +105,7 @@ TEST_CASE("the output keeps the source's decimals; finer than the output control
     // Never finer than the controller reads.
     const auto written_resolution = program::scan_resolution(w.text, out);
     RC_ASSERT(written_resolution.linear_decimals.value_or(0) <= finest);
-    RC_ASSERT(written_resolution.angle_decimals.value_or(0) <= resolution_of(out).finest.angle);
+    RC_ASSERT(written_resolution.angle_decimals.value_or(0) <= program::controller_of(out).finest.angle);
   });
 }
 
@@ -136,10 +136,10 @@ TEST_CASE("CL data posted: the vectors' resolution sets the angles', to the cont
   // reads 4 (and the run says so), Siemens 6.
   const std::string cl = "PARTNO P\nUNITS/MM\nFEDRAT/MMPM,500.0\nGOTO/0.0,0.0,10.0,0.1234567,0.0,0.9923567\n"
                          "GOTO/10.0,0.0,10.0,0.2345678,0.0,0.9720996\nFINI\n";
-  for (const auto& [out, angle] : {std::pair{dialect::heidenhain, 4}, std::pair{dialect::siemens, 6}}) {
-    const auto t = make_post<machines::dmu_80p>(dialect::apt, out, "p.cl");
+  for (const auto& [out, angle] : {std::pair{program::id_of<program::heidenhain::dialect>(), 4}, std::pair{program::id_of<program::siemens::dialect>(), 6}}) {
+    const auto t = make_post<machines::dmu_80p>(program::id_of<program::apt::dialect>(), out, "p.cl");
     string_sink sink;
-    const auto run = stream_text(*t, cl, dialect::apt, "p.cl", out, sink);
+    const auto run = stream_text(*t, cl, program::id_of<program::apt::dialect>(), "p.cl", out, sink);
     const std::string& text = sink.text;
     REQUIRE(run.ok(*t));
     CHECK(t->result().output_decimals.angle == angle);

@@ -39,7 +39,7 @@ std::vector<mat3> signed_permutations() {
 TEST_CASE("every block is accounted for, and unreachable blocks are all listed with their gap") {
   rc::prop("SAJO programs with A over its whole travel on the DMU 80P", [] {
     const auto n = *rc::gen::inRange<std::size_t>(1, 30);
-    auto p = test::tcp_program(program::dialect::siemens, "random.mpf");
+    auto p = test::tcp_program(program::id_of<program::siemens::dialect>(), "random.mpf");
     std::set<std::size_t> unreachable_lines;
     std::vector<double> a_values;
     for (std::size_t k = 0; k < n; ++k) {
@@ -96,13 +96,13 @@ TEST_CASE("arcs map exactly under every axis-permuting setup and come back uncha
     const vec3 u_s = R.transposed() * tool_axis<sajo_12000p>(target);
     const auto source = inverse<sajo_12000p>(u_s).first_within_travel();
     RC_PRE(source.has_value());
-    auto p = test::tcp_program(program::dialect::siemens, "arc.mpf");
+    auto p = test::tcp_program(program::id_of<program::siemens::dialect>(), "arc.mpf");
     auto& first = test::add_motion(p, {start.x, start.y, start.z, std::nullopt, std::nullopt, std::nullopt, 300.0});
     test::set_rotary_words<sajo_12000p>(first.axes, *source);
     auto& arc = test::add_motion(p, {end.x, end.y, end.z, std::nullopt, std::nullopt, std::nullopt, std::nullopt},
                                  direction);
     arc.arc = program::arc_words{plane, centre, std::nullopt};
-    const auto there = translate<sajo_12000p, sajo_12000p>(p, test::options(feed_policy::tcp, program::dialect::iso, d_T_s));
+    const auto there = translate<sajo_12000p, sajo_12000p>(p, test::options(feed_policy::tcp, program::id_of<program::iso::dialect>(), d_T_s));
     RC_ASSERT(there.ok());
     const auto& mapped = there.output.blocks.back();
     // The plane's normal maps onto the target plane's normal, the direction flips with its sign.
@@ -114,7 +114,7 @@ TEST_CASE("arcs map exactly under every axis-permuting setup and come back uncha
     RC_ASSERT(std::abs(std::abs(dot(n_d, target_normal)) - 1.0) <= 1e-12);
     RC_ASSERT((mapped.motion == direction) == (dot(n_d, target_normal) > 0));
     const auto back = translate<sajo_12000p, sajo_12000p>(
-        there.output, test::options(feed_policy::tcp, program::dialect::siemens, d_T_s.inverse()));
+        there.output, test::options(feed_policy::tcp, program::id_of<program::siemens::dialect>(), d_T_s.inverse()));
     RC_ASSERT(back.ok());
     const auto& again = back.output.blocks.back();
     RC_ASSERT(again.motion == direction);

@@ -13,7 +13,7 @@ using namespace kin5;
 
 program::program cl_program(const std::vector<vec3>& tips, const std::vector<vec3>& axes) {
   program::program p;
-  p.language = program::dialect::apt;
+  p.language = program::id_of<program::apt::dialect>();
   p.file = "path.cl";
   for (std::size_t k = 0; k < tips.size(); ++k) {
     program::block b;
@@ -34,7 +34,7 @@ program::program cl_program(const std::vector<vec3>& tips, const std::vector<vec
 template <machine M>
 program::program nc_program(const std::vector<test::pose<M>>& path) {
   program::program p;
-  p.language = program::dialect::siemens;
+  p.language = program::id_of<program::siemens::dialect>();
   p.file = "path.mpf";
   program::block on;
   on.where = {p.file, 1, 1};
@@ -68,13 +68,13 @@ TEST_CASE("reverse after post is the identity on reachable CL paths, every catal
       std::vector<vec3> tips, axes;
       for (const auto& q : path) tips.push_back(q.tip_mm), axes.push_back(tool_axis<M>(q.angles));
       const auto cl = cl_program(tips, axes);
-      const auto nc = post<M>(cl, program::dialect::siemens);
+      const auto nc = post<M>(cl, program::id_of<program::siemens::dialect>());
       RC_ASSERT(nc.ok());
       RC_ASSERT(nc.blocks_written == nc.blocks_read);
       for (const auto& r : nc.reports) RC_ASSERT(r.match == matchability::direct);
       const auto back = reverse<M>(nc.output);
       RC_ASSERT(back.ok());
-      RC_ASSERT(back.output.language == program::dialect::apt);
+      RC_ASSERT(back.output.language == program::id_of<program::apt::dialect>());
       const auto m = motions(back.output);
       RC_ASSERT(m.size() == tips.size());
       for (std::size_t k = 0; k < m.size(); ++k) {
@@ -117,13 +117,13 @@ void check_round_trip() {
     const auto path = reachable_path<From, To>(d_T_s);
     const auto source = nc_program<From>(path);
     translate_options there;
-    there.output_dialect = program::dialect::iso;
+    there.output_dialect = program::id_of<program::iso::dialect>();
     const auto t = translate<From, To>(source, there);
     RC_ASSERT(t.ok());
     RC_ASSERT(t.blocks_written == t.blocks_read);
     RC_ASSERT(t.reports.size() == path.size());
     translate_options back_options;
-    back_options.output_dialect = program::dialect::siemens;
+    back_options.output_dialect = program::id_of<program::siemens::dialect>();
     const auto back = translate<To, From>(t.output, back_options);
     RC_ASSERT(back.ok());
     RC_ASSERT(back.blocks_written == source.blocks.size());

@@ -25,7 +25,7 @@ using program::dialect;
 /// "X+1.500" (Heidenhain) or "X1.500" (Siemens, ISO): a word with `decimals` decimals.
 std::string word(dialect d, char letter, double v, int decimals = 3) {
   std::string number = translate_detail::fixed(v, decimals);
-  if (d == dialect::heidenhain && number.front() != '-') number = "+" + number;
+  if (d == program::id_of<program::heidenhain::dialect>() && number.front() != '-') number = "+" + number;
   return std::string(1, letter) + number;
 }
 
@@ -39,21 +39,21 @@ program_text nc_text(dialect d, const std::vector<std::vector<std::string>>& mot
   program_text p;
   std::size_t line = 0;
   auto add = [&](const std::string& l) { p.text += l + "\n", ++line; };
-  const std::string motion_word = d == dialect::heidenhain ? "L" : "G1";
-  if (d == dialect::heidenhain) add("0 BEGIN PGM T MM"), add("1 M128");
-  if (d == dialect::siemens) add("N10 TRAORI");
-  if (d == dialect::iso) add("%"), add("O1000"), add("G43.4 H1");
+  const std::string motion_word = d == program::id_of<program::heidenhain::dialect>() ? "L" : "G1";
+  if (d == program::id_of<program::heidenhain::dialect>()) add("0 BEGIN PGM T MM"), add("1 M128");
+  if (d == program::id_of<program::siemens::dialect>()) add("N10 TRAORI");
+  if (d == program::id_of<program::iso::dialect>()) add("%"), add("O1000"), add("G43.4 H1");
   p.first_motion_line = line + 1;
   for (std::size_t k = 0; k < motions.size(); ++k) {
-    std::string l = d == dialect::heidenhain ? std::to_string(line) + " " : (d == dialect::siemens ? "N" + std::to_string(10 * (line + 1)) + " " : "");
+    std::string l = d == program::id_of<program::heidenhain::dialect>() ? std::to_string(line) + " " : (d == program::id_of<program::siemens::dialect>() ? "N" + std::to_string(10 * (line + 1)) + " " : "");
     l += motion_word;
     for (const auto& w : motions[k]) l += " " + w;
     if (k == 0) l += " F500";
     add(l);
   }
-  if (d == dialect::heidenhain) add(std::to_string(line) + " END PGM T MM");
-  if (d == dialect::siemens) add("N" + std::to_string(10 * (line + 1)) + " M30");
-  if (d == dialect::iso) add("M30"), add("%");
+  if (d == program::id_of<program::heidenhain::dialect>()) add(std::to_string(line) + " END PGM T MM");
+  if (d == program::id_of<program::siemens::dialect>()) add("N" + std::to_string(10 * (line + 1)) + " M30");
+  if (d == program::id_of<program::iso::dialect>()) add("M30"), add("%");
   return p;
 }
 
@@ -74,7 +74,7 @@ std::vector<std::string> rotary_text(dialect d, const rotary_angles<M>& a, int d
   return words;
 }
 
-constexpr dialect nc_dialects[] = {dialect::siemens, dialect::heidenhain, dialect::iso};
+constexpr dialect nc_dialects[] = {program::id_of<program::siemens::dialect>(), program::id_of<program::heidenhain::dialect>(), program::id_of<program::iso::dialect>()};
 
 /// Translates `text` (dialect `d`) from M to itself.
 template <machine From, machine To = From>
@@ -171,7 +171,7 @@ TEST_CASE("the angle tolerance counts a tool axis as on the target's reach withi
   rc::prop("A = d on the SAJO, tolerance t", [] {
     const double t = *test::uniform(1e-5, 0.01);
     const double ratio = *rc::gen::suchThat(test::uniform(0.01, 4.0), [](double r) { return std::abs(r - 2.0) > 0.05; });
-    auto p = test::tcp_program(dialect::siemens, "reach.mpf");
+    auto p = test::tcp_program(program::id_of<program::siemens::dialect>(), "reach.mpf");
     test::add_motion(p, {0.0, 0.0, 50.0, -30.0, 10.0, std::nullopt, 500.0});
     test::add_motion(p, {1.0, 0.0, 50.0, ratio * t, *test::uniform(-180.0, 180.0), std::nullopt, std::nullopt});
     auto options = test::options();
@@ -188,10 +188,10 @@ TEST_CASE("a value rounded past a travel limit within the tolerance is written o
   rc::prop("A = 120 + e on the ac-trunnion", [] {
     const double t = *test::uniform(1e-4, 0.01);
     const double e = *rc::gen::suchThat(test::uniform(0.0, 2.0 * t), [t](double x) { return std::abs(x - t) > 1e-6; });
-    auto p = test::tcp_program(dialect::siemens, "edge.mpf");
+    auto p = test::tcp_program(program::id_of<program::siemens::dialect>(), "edge.mpf");
     const double c = *test::uniform(-180.0, 180.0);
     test::add_motion(p, {0.0, 0.0, 50.0, 120.0 + e, std::nullopt, c, 500.0});
-    auto options = test::options(feed_policy::tcp, dialect::siemens);
+    auto options = test::options(feed_policy::tcp, program::id_of<program::siemens::dialect>());
     options.common.angle_tolerance = degrees{t};
     const auto r = translate<machines::ac_trunnion, machines::ac_trunnion>(p, options);
     RC_ASSERT(r.ok() == (e <= t));
@@ -212,15 +212,15 @@ TEST_CASE("a 4-axis program through a 5-axis machine's 3-decimal text comes back
     for (std::size_t k = 0; k < n; ++k) {
       const double a = std::round(*test::uniform(-85.0, 85.0) * 1000.0) / 1000.0;
       const vec3 tip = *test::tip();
-      motions.push_back({word(dialect::iso, 'X', tip.x), word(dialect::iso, 'Y', tip.y), word(dialect::iso, 'Z', tip.z),
-                         word(dialect::iso, 'A', a)});
+      motions.push_back({word(program::id_of<program::iso::dialect>(), 'X', tip.x), word(program::id_of<program::iso::dialect>(), 'Y', tip.y), word(program::id_of<program::iso::dialect>(), 'Z', tip.z),
+                         word(program::id_of<program::iso::dialect>(), 'A', a)});
       a_deg.push_back(a);
     }
-    const auto there = translate_text<machines::a_rotary_4axis, machines::dmu_80p>(dialect::iso, nc_text(dialect::iso, motions).text);
+    const auto there = translate_text<machines::a_rotary_4axis, machines::dmu_80p>(program::id_of<program::iso::dialect>(), nc_text(program::id_of<program::iso::dialect>(), motions).text);
     RC_ASSERT(there.ok());
-    const std::string h = program::write(dialect::heidenhain, there.output);
-    auto options = test::options(feed_policy::tcp, dialect::iso);
-    const auto back = translate_text<machines::dmu_80p, machines::a_rotary_4axis>(dialect::heidenhain, h, options);
+    const std::string h = program::write(program::id_of<program::heidenhain::dialect>(), there.output);
+    auto options = test::options(feed_policy::tcp, program::id_of<program::iso::dialect>());
+    const auto back = translate_text<machines::dmu_80p, machines::a_rotary_4axis>(program::id_of<program::heidenhain::dialect>(), h, options);
     RC_ASSERT(back.ok());
     RC_ASSERT(back.angle_tolerance.value == 0.0005);
     std::size_t k = 0;
@@ -231,7 +231,7 @@ TEST_CASE("a 4-axis program through a 5-axis machine's 3-decimal text comes back
 }
 
 TEST_CASE("a rotary axis with no value yet is refused, or taken as 0 when allowed") {
-  auto p = test::tcp_program(dialect::siemens, "unset.mpf");
+  auto p = test::tcp_program(program::id_of<program::siemens::dialect>(), "unset.mpf");
   test::add_motion(p, {0.0, 0.0, 50.0, -30.0, std::nullopt, std::nullopt, 500.0});  // no B
   test::add_motion(p, {1.0, 0.0, 50.0, -30.0, 10.0, std::nullopt, std::nullopt});
   auto explicit_zero = p;
@@ -262,21 +262,21 @@ TEST_CASE("a rotary axis with no value yet is refused, or taken as 0 when allowe
 TEST_CASE("resolution: decimals per word class, scanned from the text of each dialect") {
   using program::scan_resolution;
   const auto s = scan_resolution("N10 G1 X10.1234 Y=2.5 A30.05 F1200.5 S8000 ; X1.1234567\nN20 A3=0.12345 R1=2.123456\n",
-                                 dialect::siemens);
+                                 program::id_of<program::siemens::dialect>());
   CHECK(s.linear_decimals == 4);
   CHECK(s.angle_decimals == 2);
   CHECK(s.feed_decimals == 1);
   CHECK(s.speed_decimals == 0);
-  const auto h = scan_resolution("5 L X+1.5 Y-2 Z+3.25 B+12.3456 C-0.1 FMAX\n6 L IX+1.123456 R0 F MAX\n", dialect::heidenhain);
+  const auto h = scan_resolution("5 L X+1.5 Y-2 Z+3.25 B+12.3456 C-0.1 FMAX\n6 L IX+1.123456 R0 F MAX\n", program::id_of<program::heidenhain::dialect>());
   CHECK(h.linear_decimals == 2);
   CHECK(h.angle_decimals == 4);
   CHECK_FALSE(h.feed_decimals.has_value());
-  const auto i = scan_resolution("G1X10.123Y20.A-5.1234(A1.1234567)F100.\n", dialect::iso);
+  const auto i = scan_resolution("G1X10.123Y20.A-5.1234(A1.1234567)F100.\n", program::id_of<program::iso::dialect>());
   CHECK(i.linear_decimals == 3);
   CHECK(i.angle_decimals == 4);
   CHECK(i.feed_decimals == 0);
   const auto a = scan_resolution("GOTO/1.5,2.25,3.125,0.1234567,0.0,0.9923\nFEDRAT/MMPM,1200.75\nSPINDL/RPM,6000\n",
-                                 dialect::apt);
+                                 program::id_of<program::apt::dialect>());
   CHECK(a.linear_decimals == 3);
   CHECK(a.vector_decimals == 7);
   CHECK(a.feed_decimals == 2);
@@ -308,7 +308,9 @@ TEST_CASE("resolution: the one-pass scan finds the words of the word rule, line 
       "X1.5", "y=-2.25", "A3", "b+.125", "C7.", "F100.5", "S1.25", "I12.125", "r7.75", "G1", "N10", "A3=0.5", "LN",
       "X", "c", "_", "#", "$", "=", "+", "-", ".", "0", "7", "12.5", " ", "\t", "\n", "\r", "\r\n", ";", "(", ")",
       "\"", "\xc3\xa4"};
-  for (dialect d : {dialect::siemens, dialect::heidenhain, dialect::iso}) {
+  for (std::size_t i = 0; i < program::dialect_count; ++i) {  // every letter-address (NC) dialect
+    const dialect d{i};
+    if (program::capabilities_of(d).cl_data) continue;
     rc::prop(std::string("dialect ") + std::string(program::name(d)), [d] {
       // Every piece as likely at any size (inRange alone favours the first ones on small sizes).
       const auto piece = rc::gen::resize(100, rc::gen::inRange<std::size_t>(0, pieces.size()));
@@ -329,26 +331,26 @@ TEST_CASE("resolution: the one-pass scan finds the words of the word rule, line 
 
 TEST_CASE("an empty program is an input error, and nothing reaches the sink") {
   for (const char* text : {"", "\n\n  \n"}) {
-    const auto t = make_translator<machines::sajo_12000p, machines::dmu_80p>(dialect::siemens, "empty.mpf");
+    const auto t = make_translator<machines::sajo_12000p, machines::dmu_80p>(program::id_of<program::siemens::dialect>(), "empty.mpf");
     string_sink out;
-    const auto run = stream_text(*t, text, dialect::siemens, "empty.mpf", dialect::heidenhain, out);
+    const auto run = stream_text(*t, text, program::id_of<program::siemens::dialect>(), "empty.mpf", program::id_of<program::heidenhain::dialect>(), out);
     REQUIRE(run.input.errors.size() == 1);
     CHECK(run.input.errors[0].message.find("empty program") != std::string::npos);
     CHECK(run.input.errors[0].where.line == 0);
     CHECK_FALSE(run.ok(*t));
     CHECK(out.text.empty());
   }
-  const auto t = make_translator<machines::sajo_12000p, machines::dmu_80p>(dialect::siemens, "comment.mpf");
+  const auto t = make_translator<machines::sajo_12000p, machines::dmu_80p>(program::id_of<program::siemens::dialect>(), "comment.mpf");
   string_sink out;
-  const auto run = stream_text(*t, "; only a comment\n", dialect::siemens, "comment.mpf", dialect::heidenhain, out);
+  const auto run = stream_text(*t, "; only a comment\n", program::id_of<program::siemens::dialect>(), "comment.mpf", program::id_of<program::heidenhain::dialect>(), out);
   CHECK(run.input.ok());
 }
 
 TEST_CASE("post refuses an NC program given as CL data, and nothing reaches the sink") {
   const auto post_text = [](const std::string& text) {
-    const auto t = make_post<machines::dmu_80p>(dialect::apt, dialect::heidenhain, "p.cl");
+    const auto t = make_post<machines::dmu_80p>(program::id_of<program::apt::dialect>(), program::id_of<program::heidenhain::dialect>(), "p.cl");
     string_sink out;
-    auto run = stream_text(*t, text, dialect::apt, "p.cl", dialect::heidenhain, out);
+    auto run = stream_text(*t, text, program::id_of<program::apt::dialect>(), "p.cl", program::id_of<program::heidenhain::dialect>(), out);
     CHECK(out.text.empty() == !run.ok(*t));
     return run.input;
   };
@@ -372,13 +374,13 @@ TEST_CASE("M functions whose meaning is the machine maker's are refused across d
   const auto run = [&](dialect out, const std::vector<std::string>& map) {
     auto options = test::options(feed_policy::tcp, out);
     for (const auto& m : map) REQUIRE(options.common.m_codes.add(m));
-    const auto t = make_translator<M, M>(dialect::heidenhain, "m.h", options);
+    const auto t = make_translator<M, M>(program::id_of<program::heidenhain::dialect>(), "m.h", options);
     string_sink written;
-    const auto r = stream_text(*t, text, dialect::heidenhain, "m.h", out, written);
+    const auto r = stream_text(*t, text, program::id_of<program::heidenhain::dialect>(), "m.h", out, written);
     REQUIRE(r.input.ok());
     return std::pair{t->result(), r.ok(*t) ? written.text : std::string()};
   };
-  for (dialect out : {dialect::siemens, dialect::iso}) {
+  for (dialect out : {program::id_of<program::siemens::dialect>(), program::id_of<program::iso::dialect>()}) {
     const auto [refused, nothing] = run(out, {});
     REQUIRE(refused.errors.size() == 1);
     CHECK(refused.errors[0].where.line == 4);
@@ -395,16 +397,16 @@ TEST_CASE("M functions whose meaning is the machine maker's are refused across d
     CHECK(renamed.ok());
     CHECK(with.find("M86") != std::string::npos);
   }
-  const auto [same, copied] = run(dialect::heidenhain, {});  // within one dialect: copied
+  const auto [same, copied] = run(program::id_of<program::heidenhain::dialect>(), {});  // within one dialect: copied
   CHECK(same.ok());
   CHECK(copied.find("M126") != std::string::npos);
 
   // The shared table: mist (M7) has no TNC standard function; M7 between G-code dialects passes.
-  CHECK_FALSE(shared_m_code(7, dialect::siemens, dialect::heidenhain, false));
-  CHECK(shared_m_code(7, dialect::siemens, dialect::iso, false));
-  CHECK_FALSE(shared_m_code(99, dialect::heidenhain, dialect::iso, false));  // cycle call vs subprogram return
-  CHECK(shared_m_code(91, dialect::heidenhain, dialect::iso, true));
-  CHECK_FALSE(shared_m_code(91, dialect::heidenhain, dialect::iso, false));
+  CHECK_FALSE(shared_m_code(7, program::id_of<program::siemens::dialect>(), program::id_of<program::heidenhain::dialect>(), false));
+  CHECK(shared_m_code(7, program::id_of<program::siemens::dialect>(), program::id_of<program::iso::dialect>(), false));
+  CHECK_FALSE(shared_m_code(99, program::id_of<program::heidenhain::dialect>(), program::id_of<program::iso::dialect>(), false));  // cycle call vs subprogram return
+  CHECK(shared_m_code(91, program::id_of<program::heidenhain::dialect>(), program::id_of<program::iso::dialect>(), true));
+  CHECK_FALSE(shared_m_code(91, program::id_of<program::heidenhain::dialect>(), program::id_of<program::iso::dialect>(), false));
   m_map bad;
   CHECK_FALSE(bad.add("126"));
   CHECK_FALSE(bad.add("x=1"));

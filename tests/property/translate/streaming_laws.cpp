@@ -25,7 +25,7 @@ TEST_CASE("two passes block by block write what translate + write produce, and c
   using To = machines::dmu_80p;
   rc::prop("SAJO programs with A over its whole travel, on the DMU 80P in every NC dialect", [] {
     const auto n = *rc::gen::inRange<std::size_t>(1, 30);
-    auto p = test::tcp_program(program::dialect::siemens, "random.mpf");
+    auto p = test::tcp_program(program::id_of<program::siemens::dialect>(), "random.mpf");
     for (std::size_t k = 0; k < n; ++k) {
       const int kind = *rc::gen::inRange(0, 4);
       if (kind == 0) {
@@ -41,8 +41,8 @@ TEST_CASE("two passes block by block write what translate + write produce, and c
                        kind == 1 ? program::motion_kind::rapid : program::motion_kind::linear);
     }
     auto options = test::options();
-    options.output_dialect = *rc::gen::element(program::dialect::siemens, program::dialect::heidenhain,
-                                                program::dialect::iso);
+    options.output_dialect = *rc::gen::element(program::id_of<program::siemens::dialect>(), program::id_of<program::heidenhain::dialect>(),
+                                                program::id_of<program::iso::dialect>());
     const translation whole = translate<From, To>(p, options);
 
     // As the tool runs it (stream.hpp): pass 2 over compact records without the text of moved
@@ -52,7 +52,7 @@ TEST_CASE("two passes block by block write what translate + write produce, and c
     const block_source read = [&](program::read_result&, const program::block_sink& on_block) {
       for (program::block b : p.blocks) on_block(std::move(b));
     };
-    const auto run = stream_blocks(*t, read, p.file, p.language, options.output_dialect, out);
+    const auto run = stream_blocks(*t, read, p.file, p.language, *options.output_dialect, out);
     const translation& streamed = t->result();
     RC_ASSERT(run.input.ok());
     RC_ASSERT(run.ok(*t) == whole.ok());
@@ -73,8 +73,8 @@ TEST_CASE("two passes block by block write what translate + write produce, and c
     RC_ASSERT(streamed.reports.size() == exception_lines.size());
     for (std::size_t i = 0; i < exception_lines.size(); ++i) RC_ASSERT(streamed.reports[i].where.line == exception_lines[i]);
     if (whole.ok())
-      RC_ASSERT(out.text == program::write(options.output_dialect, whole.output,
-                                           write_settings_for(options.output_dialect, whole.output_decimals)));
+      RC_ASSERT(out.text == program::write(*options.output_dialect, whole.output,
+                                           write_settings_for(*options.output_dialect, whole.output_decimals)));
   });
 }
 
@@ -116,27 +116,27 @@ TEST_CASE("the streaming driver over text: the whole output, or nothing after an
   using To = machines::dmu_80p;
   const auto options = test::options();
   const std::string text = siemens_program(30000);  // about 1.6 MB of Heidenhain output
-  const auto read = program::read(program::dialect::siemens, text, "long.mpf");
+  const auto read = program::read(program::id_of<program::siemens::dialect>(), text, "long.mpf");
   REQUIRE(read.ok());
   const translation whole = translate<From, To>(read.parsed, options);
   REQUIRE(whole.ok());
-  const std::string expected = program::write(options.output_dialect, whole.output,
-                                              write_settings_for(options.output_dialect, whole.output_decimals));
+  const std::string expected = program::write(*options.output_dialect, whole.output,
+                                              write_settings_for(*options.output_dialect, whole.output_decimals));
   REQUIRE(expected.size() > (std::size_t{1} << 20));
 
   SECTION("a clean run gives the sink every byte, in order, across flushes") {
-    const auto t = make_translator<From, To>(program::dialect::siemens, "long.mpf", options);
+    const auto t = make_translator<From, To>(program::id_of<program::siemens::dialect>(), "long.mpf", options);
     chunked_sink out;
-    const auto run = stream_text(*t, text, program::dialect::siemens, "long.mpf", options.output_dialect, out);
+    const auto run = stream_text(*t, text, program::id_of<program::siemens::dialect>(), "long.mpf", *options.output_dialect, out);
     CHECK(run.ok(*t));
     CHECK(out.flushes >= 1);
     CHECK(out.written + out.pending == expected);
   }
   SECTION("a reader error: no second pass, nothing reaches the sink") {
-    const auto t = make_translator<From, To>(program::dialect::siemens, "bad.mpf", options);
+    const auto t = make_translator<From, To>(program::id_of<program::siemens::dialect>(), "bad.mpf", options);
     chunked_sink out;
-    const auto run = stream_text(*t, siemens_program(30000, 29000), program::dialect::siemens, "bad.mpf",
-                                 options.output_dialect, out);
+    const auto run = stream_text(*t, siemens_program(30000, 29000), program::id_of<program::siemens::dialect>(), "bad.mpf",
+                                 *options.output_dialect, out);
     CHECK_FALSE(run.input.ok());
     CHECK_FALSE(run.ok(*t));
     CHECK(out.calls == 0);
@@ -144,10 +144,10 @@ TEST_CASE("the streaming driver over text: the whole output, or nothing after an
     CHECK(t->result().blocks_written == 0);
   }
   SECTION("a sink that fails is given nothing more") {
-    const auto t = make_translator<From, To>(program::dialect::siemens, "long.mpf", options);
+    const auto t = make_translator<From, To>(program::id_of<program::siemens::dialect>(), "long.mpf", options);
     chunked_sink out;
     out.fail_at = 0;
-    const auto run = stream_text(*t, text, program::dialect::siemens, "long.mpf", options.output_dialect, out);
+    const auto run = stream_text(*t, text, program::id_of<program::siemens::dialect>(), "long.mpf", *options.output_dialect, out);
     CHECK(run.sink_failed);
     CHECK_FALSE(run.ok(*t));
     CHECK(out.flushes == 1);
@@ -158,9 +158,9 @@ TEST_CASE("the streaming driver over text: the whole output, or nothing after an
     // A = +20° is outside the DMU 80P's reach (k_d = −sin A < 0): an error on the last motion.
     std::string unreachable = text;
     unreachable.insert(unreachable.rfind("N"), "N999999 G1 X0 Y0 Z50 A20 B0\n");
-    const auto t = make_translator<From, To>(program::dialect::siemens, "far.mpf", options);
+    const auto t = make_translator<From, To>(program::id_of<program::siemens::dialect>(), "far.mpf", options);
     string_sink out;
-    const auto run = stream_text(*t, unreachable, program::dialect::siemens, "far.mpf", options.output_dialect, out);
+    const auto run = stream_text(*t, unreachable, program::id_of<program::siemens::dialect>(), "far.mpf", *options.output_dialect, out);
     CHECK(run.input.ok());
     CHECK_FALSE(run.ok(*t));
     CHECK(t->result().per_class[static_cast<std::size_t>(matchability::unreachable)] == 1);

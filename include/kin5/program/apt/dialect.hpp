@@ -23,17 +23,20 @@ namespace kin5::program::apt {
 
 /// Reads APT CL data. Never throws on bad input: problems are in `errors`.
 inline read_result read(std::string_view text, std::string file_name) {
-  return read_whole(dialect_id::apt, text, std::move(file_name), &read_blocks);
+  return read_whole(id_of<dialect>(), text, std::move(file_name), &read_blocks);
 }
 
 /// The APT CL data dialect: its id, capabilities, file markers, reader and writer.
 struct dialect {
-  static constexpr dialect_id id = dialect_id::apt;
   static constexpr std::string_view name = "apt";
   static constexpr capabilities can{.cl_data = true, .inverse_time_feed = true, .tool_axis_vectors = true};
   static constexpr std::array<marker, 3> markers{{{"PARTNO", marker::place::block_start},
                                                   {"GOTO/", marker::place::block_start},
                                                   {"FEDRAT/", marker::place::block_start}}};
+  /// CL data: no controller; the CAM system's arithmetic.
+  static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {6, 6, 6, 9}};
+  /// No machine reads CL data.
+  static constexpr std::array<std::string_view, 0> default_for{};
   using write_options = apt::write_options;
   using writer = apt::writer;
   static void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
@@ -44,3 +47,5 @@ struct dialect {
 };
 
 }  // namespace kin5::program::apt
+
+#include "../dialect.hpp"  // id_of<dialect>(): this entry's place in the list

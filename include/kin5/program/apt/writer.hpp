@@ -21,6 +21,8 @@
 
 namespace kin5::program::apt {
 
+struct dialect;  // this folder's entry of `program::dialects` (dialect.hpp)
+
 /// Decimals written for each kind of number.
 struct write_options {
   int linear_decimals = 3;   ///< GOTO x, y, z (mm)
@@ -38,7 +40,7 @@ class writer {
   /// A writer for blocks read from `source` (another dialect's blocks keep their text in `$$`
   /// comments). Blocks name themselves in messages: `file` is not needed.
   explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
-      : same_(source == dialect_id::apt), options_(chosen) {
+      : same_(source == id_of<dialect>()), options_(chosen) {
     static_cast<void>(file);
   }
 

@@ -24,12 +24,11 @@ namespace kin5::program::heidenhain {
 /// Reads a Heidenhain conversational program. Never throws on bad input: problems are in
 /// `errors` (and `warnings`), each at the offending word's line and column.
 inline read_result read(std::string_view text, std::string file_name) {
-  return read_whole(dialect_id::heidenhain, text, std::move(file_name), &read_blocks);
+  return read_whole(id_of<dialect>(), text, std::move(file_name), &read_blocks);
 }
 
 /// The Heidenhain conversational dialect: its id, capabilities, file markers, reader and writer.
 struct dialect {
-  static constexpr dialect_id id = dialect_id::heidenhain;
   static constexpr std::string_view name = "heidenhain";
   static constexpr capabilities can{.tcp_switch = true, .rotary_axis_words = true, .tool_axis_vectors = true,
                                     .arcs = true, .arc_centre_block = true,
@@ -37,6 +36,12 @@ struct dialect {
   static constexpr std::array<marker, 3> markers{{{"BEGIN PGM", marker::place::block_start},
                                                   {"M128", marker::place::anywhere},
                                                   {"FUNCTION TCPM", marker::place::anywhere}}};
+  /// TNC 640 User's Manual DIN/ISO 1/2015, §19.3 p. 631; M91/M92 move in machine coordinates and
+  /// a TNC has no standard M7 (docs/dialects/heidenhain.md).
+  static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {4, 4, 3, 7}, .m7_mist_coolant = false,
+                                    .m91_m92_machine_coordinates = true};
+  /// Catalog machines whose controller reads it (Tian 2010's DMU 80P; Liu 2010's DMU 50V).
+  static constexpr std::array<std::string_view, 2> default_for{"dmu-80p", "dmu-50v"};
   using write_options = heidenhain::write_options;
   using writer = heidenhain::writer;
   static void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
@@ -47,3 +52,5 @@ struct dialect {
 };
 
 }  // namespace kin5::program::heidenhain
+
+#include "../dialect.hpp"  // id_of<dialect>(): this entry's place in the list

@@ -28,6 +28,8 @@
 
 namespace kin5::program::heidenhain {
 
+struct dialect;  // this folder's entry of `program::dialects` (dialect.hpp)
+
 /// Decimals written for each kind of number.
 struct write_options {
   int linear_decimals = 3;  ///< X Y Z, CC, CR radius (mm)
@@ -46,7 +48,7 @@ class writer {
   /// A writer for blocks read from `source` (another dialect's passthrough text and kept words
   /// go into comments); `file` names the program in messages for blocks without a location.
   explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
-      : same_(source == dialect_id::heidenhain), program_file_(std::move(file)), options_(chosen) {}
+      : same_(source == id_of<dialect>()), program_file_(std::move(file)), options_(chosen) {}
 
   /// Appends the lines of block `b` to `out`. Throws `std::invalid_argument` naming the block
   /// (`file:line`) when it cannot be written in Heidenhain.

@@ -23,18 +23,21 @@ namespace kin5::program::iso {
 
 /// Reads ISO / Fanuc G code. Never throws on bad input: problems are in `errors`.
 inline read_result read(std::string_view text, std::string file_name) {
-  return read_whole(dialect_id::iso, text, std::move(file_name), &read_blocks);
+  return read_whole(id_of<dialect>(), text, std::move(file_name), &read_blocks);
 }
 
 /// The ISO / Fanuc dialect: its id, capabilities, file markers, reader and writer.
 struct dialect {
-  static constexpr dialect_id id = dialect_id::iso;
   static constexpr std::string_view name = "iso";
   static constexpr capabilities can{.inverse_time_feed = true, .tcp_switch = true, .rotary_axis_words = true,
                                     .tool_axis_vectors = true, .arcs = true,
                                     .work_offsets = {{{work_offset_family::g54, 1, 6}, {work_offset_family::extended, 1, 300}}}};
   static constexpr std::array<marker, 2> markers{{{"G43.4", marker::place::anywhere},
                                                   {"G43.5", marker::place::anywhere}}};
+  /// Increment system IS-C (Mitsubishi M700V §2.1; IS-B rounds the 4th); `( … )` are comments.
+  static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {4, 4, 3, 7}, .paren_comments = true};
+  /// Catalog machines whose controller reads it (CN1624613's 4-axis machine).
+  static constexpr std::array<std::string_view, 1> default_for{"a-rotary-4axis"};
   using write_options = iso::write_options;
   using writer = iso::writer;
   static void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
@@ -45,3 +48,5 @@ struct dialect {
 };
 
 }  // namespace kin5::program::iso
+
+#include "../dialect.hpp"  // id_of<dialect>(): this entry's place in the list

@@ -25,6 +25,8 @@
 
 namespace kin5::program::iso {
 
+struct dialect;  // this folder's entry of `program::dialects` (dialect.hpp)
+
 /// Decimals written for each kind of number. Spindle speeds use `feed_decimals`.
 struct write_options {
   int linear_decimals = 3;   ///< X Y Z, arc I J K, R (mm)
@@ -63,7 +65,7 @@ class writer {
   /// A writer for blocks read from `source` (another dialect's passthrough text and kept words
   /// go into comments). Blocks name themselves in messages: `file` is not needed.
   explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
-      : same_(source == dialect_id::iso), options_(chosen) {
+      : same_(source == id_of<dialect>()), options_(chosen) {
     static_cast<void>(file);
   }
 

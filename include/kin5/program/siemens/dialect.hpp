@@ -23,12 +23,11 @@ namespace kin5::program::siemens {
 
 /// Reads a Siemens 840D program. Never throws on bad input: problems are in `errors`.
 inline read_result read(std::string_view text, std::string file_name) {
-  return read_whole(dialect_id::siemens, text, std::move(file_name), &read_blocks);
+  return read_whole(id_of<dialect>(), text, std::move(file_name), &read_blocks);
 }
 
 /// The Siemens 840D dialect: its id, capabilities, file markers, reader and writer.
 struct dialect {
-  static constexpr dialect_id id = dialect_id::siemens;
   static constexpr std::string_view name = "siemens";
   static constexpr capabilities can{.inverse_time_feed = true, .tcp_switch = true, .rotary_axis_words = true,
                                     .tool_axis_vectors = true, .arcs = true,
@@ -38,6 +37,11 @@ struct dialect {
   static constexpr std::array<marker, 3> markers{{{"%_N_", marker::place::block_start},
                                                   {"TRAORI", marker::place::anywhere},
                                                   {"TRAFOOF", marker::place::anywhere}}};
+  /// 840Di Manual (HBI) 06/2003 §10.3.1: input rounded to MD10200/MD10210 (docs/dialects/siemens.md).
+  static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {6, 6, 3, 9}};
+  /// Catalog machines whose controller reads it (Tian 2010's SAJO 12000P; the usual one for the rest).
+  static constexpr std::array<std::string_view, 4> default_for{"sajo-12000p", "ac-trunnion", "ac-head",
+                                                               "b-head-a-tilted-table"};
   using write_options = siemens::write_options;
   using writer = siemens::writer;
   static void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
@@ -48,3 +52,5 @@ struct dialect {
 };
 
 }  // namespace kin5::program::siemens
+
+#include "../dialect.hpp"  // id_of<dialect>(): this entry's place in the list

@@ -26,6 +26,8 @@
 
 namespace kin5::program::siemens {
 
+struct dialect;  // this folder's entry of `program::dialects` (dialect.hpp)
+
 /// Decimals written for each kind of number. Spindle speeds use `feed_decimals`.
 struct write_options {
   int linear_decimals = 3;  ///< X Y Z, I J K, CR= (mm)
@@ -97,7 +99,7 @@ class writer {
   /// A writer for blocks read from `source` (another dialect's passthrough text and kept words
   /// go into comments); `file` names the program in messages.
   explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
-      : same_(source == dialect_id::siemens), program_file_(std::move(file)), options_(chosen) {}
+      : same_(source == id_of<dialect>()), program_file_(std::move(file)), options_(chosen) {}
 
   /// Appends the text of block `b` to `out` (nothing for a block with nothing to say). Throws
   /// `std::invalid_argument` ("file:line: reason") for a block Siemens cannot express.

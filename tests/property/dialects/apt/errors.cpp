@@ -59,7 +59,7 @@ TEST_CASE("apt: reading goes on after an error and keeps every statement") {
 
 TEST_CASE("apt: the writer names the block it cannot write") {
   program p;
-  p.language = dialect::apt;
+  p.language = id_of<apt::dialect>();
   block b;
   b.where = {"part.cls", 12, 1};
   b.motion = motion_kind::linear;

@@ -70,7 +70,7 @@ TEST_CASE("apt: comments keep non-UTF-8 bytes, lone CR ends lines, blank lines a
 
 TEST_CASE("apt: the writer's own spelling") {
   program p;
-  p.language = dialect::apt;
+  p.language = id_of<apt::dialect>();
   p.file = "w.cls";
   auto add = [&](auto&& fill) {
     block b;
@@ -95,7 +95,7 @@ TEST_CASE("apt: the writer's own spelling") {
 
 TEST_CASE("apt: blocks from another dialect") {
   program p;
-  p.language = dialect::iso;
+  p.language = id_of<iso::dialect>();
   block g0;
   g0.text = "G0 G90 X1 Y2 Z3";
   g0.motion = motion_kind::rapid;

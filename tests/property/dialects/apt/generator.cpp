@@ -176,7 +176,7 @@ std::vector<item> draw_items() {
 
 program expected_program(const std::vector<item>& items) {
   program p;
-  p.language = dialect::apt;
+  p.language = id_of<apt::dialect>();
   p.file = "gen.cls";
   for (const item& it : items) p.blocks.push_back(it.expected);
   return p;

@@ -115,7 +115,7 @@ TEST_CASE("heidenhain: CYCL DEF 247 selects the preset of its Q339, the block ke
 
 TEST_CASE("heidenhain: the writer names the block it cannot write") {
   program p;
-  p.language = dialect::iso;
+  p.language = id_of<iso::dialect>();
   p.file = "part.nc";
   block b;
   b.where = {"part.nc", 12, 1};

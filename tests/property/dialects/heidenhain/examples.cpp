@@ -137,7 +137,7 @@ TEST_CASE("heidenhain: the writer numbers blocks from 0 in Heidenhain style") {
 
 TEST_CASE("heidenhain: blocks from another dialect are written, and what has no Heidenhain form is kept as a comment") {
   program p;
-  p.language = dialect::iso;
+  p.language = id_of<iso::dialect>();
   p.file = "in.nc";
   block b;
   b.program_begin = "O1234 BRACKET";

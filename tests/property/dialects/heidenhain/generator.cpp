@@ -321,7 +321,7 @@ struct generated {
 
 generated draw_program() {
   generated g;
-  g.expected.language = dialect::heidenhain;
+  g.expected.language = id_of<heidenhain::dialect>();
   g.expected.file = "g.h";
   modal m;
   const std::string eol = *rc::gen::element<std::string>("\n", "\r\n", "\r");

@@ -77,7 +77,7 @@ TEST_CASE("iso: harmless words and resets are not errors") {
 
 TEST_CASE("iso: the writer names the block it cannot write") {
   program p;
-  p.language = dialect::iso;
+  p.language = id_of<iso::dialect>();
   block b;
   b.where = {"part.nc", 3, 1};
   b.motion = motion_kind::linear;

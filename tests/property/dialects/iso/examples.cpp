@@ -132,7 +132,7 @@ TEST_CASE("iso: comments keep non-UTF-8 bytes, lone CR ends lines, blank lines a
 
 TEST_CASE("iso: blocks from another dialect") {
   program p;
-  p.language = dialect::heidenhain;
+  p.language = id_of<heidenhain::dialect>();
   block l;
   l.text = "L X+1 Y+2 FMAX M91";
   l.motion = motion_kind::linear;

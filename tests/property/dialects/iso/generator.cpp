@@ -288,7 +288,7 @@ std::vector<item> draw_items() {
 
 program expected_program(const std::vector<item>& items) {
   program p;
-  p.language = dialect::iso;
+  p.language = id_of<iso::dialect>();
   p.file = "gen.nc";
   for (const item& it : items) p.blocks.push_back(it.expected);
   return p;

@@ -134,7 +134,7 @@ TEST_CASE("siemens: lines without axis words that change nothing are passthrough
 
 TEST_CASE("siemens: writer refuses what Siemens cannot express", "[siemens][errors]") {
   program p;
-  p.language = dialect::iso;
+  p.language = id_of<iso::dialect>();
   p.file = "in.nc";
   block b;
   b.where = {"in.nc", 7, 1};

@@ -217,7 +217,7 @@ TEST_CASE("siemens: program ends, names and odd lines", "[siemens][quirks]") {
 
 TEST_CASE("siemens: writing another dialect's program", "[siemens][quirks]") {
   program p;
-  p.language = dialect::heidenhain;
+  p.language = id_of<heidenhain::dialect>();
   p.file = "part.h";
   block begin;
   begin.number = 0;

@@ -308,7 +308,7 @@ struct drawn_program {
 
 drawn_program draw_program() {
   drawn_program d;
-  d.expected.language = dialect::siemens;
+  d.expected.language = id_of<siemens::dialect>();
   d.expected.file = "gen.mpf";
   state s;
   const int n = *rc::gen::inRange(1, 30);
