@@ -8,19 +8,19 @@
 #
 #   ; expect: LINE:COL: MESSAGE
 #
-# The file is read by `kin5 reverse --dialect <dialect>` (APT CL data: `kin5 post`), for the
-# machine the runner names per dialect below. The run must exit 2, print nothing on stdout,
-# and report exactly one error, `FILE:LINE:COL: error: MESSAGE`; warnings may come with it.
+# The file is read by the `kin5` command line in kin5.args beside it (one per dialect folder:
+# the command that reads the dialect and the machine its programs were written for). The run
+# must exit 2, print nothing on stdout, and report exactly one error,
+# `FILE:LINE:COL: error: MESSAGE`; warnings may come with it.
 set -u
 exe=$1 file=$2
-dialect=$(basename "$(dirname "$file")")
-case "$dialect" in
-  siemens) set -- reverse --machine sajo-12000p --dialect siemens ;;
-  heidenhain) set -- reverse --machine dmu-80p --dialect heidenhain ;;
-  iso) set -- reverse --machine ac-trunnion --dialect iso ;;
-  apt) set -- post --machine dmu-80p ;;
-  *) set -- reverse --machine ac-trunnion --dialect "$dialect" ;;
-esac
+args=$(dirname "$file")/kin5.args
+if [ ! -f "$args" ]; then
+  echo "FAIL: $file: no $args naming the kin5 command that reads it" >&2
+  exit 1
+fi
+# shellcheck disable=SC2046  # one line of words, split on purpose
+set -- $(cat "$args")
 
 expect=$(head -n 1 "$file" | tr -d '\r' | sed -n 's/^[;$ ]*expect: //p')
 if [ -z "$expect" ]; then

@@ -32,8 +32,8 @@ namespace {
 
 using kin5::program::dialect;
 
-constexpr dialect nc_dialects[] = {kin5::program::id_of<kin5::program::siemens::dialect>(), kin5::program::id_of<kin5::program::heidenhain::dialect>(),
-                                   kin5::program::id_of<kin5::program::iso::dialect>()};
+constexpr auto nc_dialects = kin5::program::nc_dialect_ids();  // every dialect but CL data
+constexpr std::size_t nc_count = nc_dialects.size();
 constexpr kin5::feed_policy feeds[] = {kin5::feed_policy::tcp, kin5::feed_policy::block_time,
                                        kin5::feed_policy::inverse_time};
 constexpr std::size_t max_text = std::size_t{5} << 18;  // 1.25 MiB: past the first 1 MiB chunk
@@ -76,10 +76,10 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 2) return 0;
   const unsigned choice = data[0];
-  const dialect from = nc_dialects[choice % 3];
-  const dialect to = nc_dialects[(choice / 3) % 3];
-  const kin5::feed_policy feed = feeds[(choice / 9) % 3];
-  const bool backwards = (choice / 27) % 2 != 0;
+  const dialect from = nc_dialects[choice % nc_count];
+  const dialect to = nc_dialects[(choice / nc_count) % nc_count];
+  const kin5::feed_policy feed = feeds[(choice / (nc_count * nc_count)) % 3];
+  const bool backwards = (choice / (nc_count * nc_count * 3)) % 2 != 0;
   const std::size_t copies = data[1] < 0xF0 ? 1 : std::size_t{1} << std::min(2 * (data[1] - 0xEE), 22);
   const std::string_view program(reinterpret_cast<const char*>(data + 2), size - 2);
   std::string text;

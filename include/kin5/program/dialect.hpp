@@ -11,6 +11,7 @@
 /// | `can` | its `capabilities` (program/dialect_id.hpp) |
 /// | `reads` | its `controller`: input resolution, comment forms, M functions of its own |
 /// | `default_for` | the catalog machines (by id) whose controller reads it |
+/// | `lost_as_comment` | an array of `kept_word_effect`s: kept words another dialect cannot carry |
 /// | `markers` | an array of `marker`s only it writes, for `guess_dialect` |
 /// | `read_blocks(text, file, diagnostics, on_block)` | its streaming reader |
 /// | `write_options`, `write(program, options)` | its writer's settings, and the whole-program writer |
@@ -20,6 +21,7 @@
 /// `id_of<D>()`), so nothing outside the folder and this list names it.
 #pragma once
 
+#include <array>
 #include <concepts>
 #include <cstddef>
 #include <optional>
@@ -50,6 +52,7 @@ concept nc_dialect = requires(std::string_view text, const std::string& file, re
   { D::markers[0] } -> std::convertible_to<marker>;
   { D::reads } -> std::convertible_to<controller>;
   { D::default_for.size() } -> std::convertible_to<std::size_t>;
+  { D::lost_as_comment.size() } -> std::convertible_to<std::size_t>;
   D::read_blocks(text, file, diagnostics, on_block);
   { D::write(p, typename D::write_options{}) } -> std::same_as<std::string>;
   requires std::constructible_from<typename D::writer, dialect_id, std::string, const typename D::write_options&>;
@@ -191,6 +194,36 @@ constexpr std::optional<dialect> default_dialect(std::string_view machine_id) {
       if (id == machine_id) found = dialect(i);
   });
   return found;
+}
+
+/// What kept word `word` (upper case, no spaces) of a program in dialect `d` does that a comment
+/// would lose (the entry's `lost_as_comment`); empty when it is harmless as a comment.
+template <class List = dialects>
+constexpr std::string_view lost_as_comment(dialect d, std::string_view word) {
+  return visit_dialect<List>(
+      d,
+      [&]<class D>(std::type_identity<D>) {
+        for (const kept_word_effect& k : D::lost_as_comment)
+          if (k.matches(word)) return k.effect;
+        return std::string_view{};
+      },
+      [] { return std::string_view{}; });
+}
+
+/// The dialects of `List` that are not CL data, in list order: those `translate` reads and writes.
+template <class List = dialects>
+constexpr auto nc_dialect_ids() {
+  constexpr std::size_t count = [] {
+    std::size_t n = 0;
+    for_each_dialect<List>([&]<class D>(std::type_identity<D>, std::size_t) { n += D::can.cl_data ? 0 : 1; });
+    return n;
+  }();
+  std::array<dialect, count> ids{};
+  std::size_t n = 0;
+  for_each_dialect<List>([&]<class D>(std::type_identity<D>, std::size_t i) {
+    if (!D::can.cl_data) ids[n++] = dialect(i);
+  });
+  return ids;
 }
 
 }  // namespace kin5::program

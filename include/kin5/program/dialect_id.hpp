@@ -1,8 +1,9 @@
 /// @file program/dialect_id.hpp
 /// What names a dialect at run time and what every dialect declares of itself, as data:
 /// `dialect` (its place in `program::dialects`, so a new entry needs no enum), what its writer can
-/// express (`capabilities`), what its controller reads (`controller`), and the text that gives a
-/// file away as written in it (`marker`).
+/// express (`capabilities`), what its controller reads (`controller`), the words its reader keeps
+/// whose effect a comment would lose (`kept_word_effect`), and the text that gives a file away as
+/// written in it (`marker`).
 ///
 /// Each entry of `program::dialects` (program/dialect.hpp) carries one `capabilities`, one
 /// `controller` and an array of `marker`s; the translation asks them (can the target write G93?
@@ -74,6 +75,46 @@ struct controller {
   bool paren_comments = false;  ///< `( … )` is a comment (ISO), not text to read
   bool m7_mist_coolant = true;  ///< M7 is mist coolant (false: no standard M7, as on a TNC)
   bool m91_m92_machine_coordinates = false;  ///< M91/M92 in a block: it moves in machine coordinates
+};
+
+/// A word that a dialect's reader keeps without interpreting it (`block::kept_words`) and whose
+/// effect a program of another dialect would lose as a comment: a translation into another
+/// dialect refuses it (translate/source_checks.hpp). Words are compared upper case, spaces removed.
+struct kept_word_effect {
+  enum class match {
+    whole,   ///< the word itself ("D0")
+    prefix,  ///< any word that starts with it ("T=")
+    code,    ///< its letter with the same number, however written ("G4": G4, G04, G4.0)
+  };
+  std::string_view word;
+  match how = match::whole;
+  std::string_view effect;  ///< what the word does, for the message ("a dwell")
+
+  /// Whether word `w` (upper case, no spaces) is this one.
+  constexpr bool matches(std::string_view w) const {
+    if (how == match::whole) return w == word;
+    if (how == match::prefix) return w.substr(0, word.size()) == word;
+    return !w.empty() && !word.empty() && w[0] == word[0] && number_of(w.substr(1)) == number_of(word.substr(1));
+  }
+
+ private:
+  /// The value of an unsigned decimal number ("04", "4.0"); -1 for any other text.
+  static constexpr double number_of(std::string_view s) {
+    double value = 0, scale = 1;
+    bool point = false, digits = false;
+    for (char c : s) {
+      if (c == '.' && !point) {
+        point = true;
+      } else if (c >= '0' && c <= '9') {
+        digits = true;
+        if (point) scale /= 10;
+        value = value * (point ? 1 : 10) + (c - '0') * (point ? scale : 1);
+      } else {
+        return -1;
+      }
+    }
+    return digits ? value : -1;
+  }
 };
 
 /// Text only one dialect writes, as `guess_dialect` looks for it: an upper-case keyword matched

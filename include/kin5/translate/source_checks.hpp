@@ -203,22 +203,14 @@ inline bool check_work_offset(const program::block& b, const source_context& ctx
 
 /// What a word that the reader kept without interpreting it (`block::kept_words`) does, when a
 /// program of another dialect could only carry it as a comment and so lose it; empty when it is
-/// harmless as a comment (plane, absolute mode, cancels, path-smoothing modes, …). Work offsets
-/// (G54 …) are not listed here yet: they are translated by their own table.
+/// harmless as a comment (plane, absolute mode, cancels, path-smoothing modes, …). Each dialect
+/// lists its own (`lost_as_comment` of its entry, program/dialect.hpp). Work offsets (G54 …) are
+/// not listed there: they are translated by their own table.
 inline std::string lost_kept_word(std::string_view word, program::dialect from) {
   std::string w;
   for (char c : word)
     if (!program::is_space(c)) w.push_back(program::to_upper(c));
-  if (from == program::id_of<program::iso::dialect>() && w.size() > 1 && w[0] == 'G') {
-    char* end = nullptr;
-    const double g = std::strtod(w.c_str() + 1, &end);
-    if (end && *end == '\0' && g == 4) return "a dwell";
-    if (end && *end == '\0' && g == 43) return "tool length compensation (G43, without tool-tip tracking)";
-  }
-  if (from == program::id_of<program::siemens::dialect>() && w.rfind("T=", 0) == 0) return "a tool named in T=";
-  if (from == program::id_of<program::siemens::dialect>() && w == "D0") return "tool length compensation off (D0)";
-  if (from == program::id_of<program::heidenhain::dialect>() && (w == "X" || w == "Y")) return "a tool axis other than Z in TOOL CALL";
-  return "";
+  return std::string(program::lost_as_comment(from, w));
 }
 
 /// Checks the kept words of block `b` against the output dialect: in a program of another

@@ -37,6 +37,8 @@ struct dialect {
                                     .m7_mist_coolant = false};
   static constexpr std::array<std::string_view, 1> default_for{"toy-mill"};
   static constexpr std::array<marker, 1> markers{{{"TOY/", marker::place::block_start}}};
+  static constexpr std::array<kept_word_effect, 2> lost_as_comment{
+      {{"G99", kept_word_effect::match::code, "a toy return"}, {"Q=", kept_word_effect::match::prefix, "a toy queue"}}};
   using write_options = toy::write_options;
   using writer = toy::writer;
   static void read_blocks(std::string_view text, const std::string& file, read_result&, const block_sink& on_block) {
@@ -93,6 +95,12 @@ static_assert(guess_dialect<with_toy>("N1 TOY/1\n") == toy_id);
 static_assert(!guess_dialect<with_toy>("TOY/1\nBEGIN PGM P MM\n"), "markers of two dialects give nothing");
 static_assert(guess_dialect<with_toy>("BEGIN PGM P MM\n") == id_of<heidenhain::dialect>());
 static_assert(!guess_dialect("TOY/1\n"));
+static_assert(lost_as_comment<with_toy>(toy_id, "G099.0") == "a toy return", "the entry's kept words are refused");
+static_assert(lost_as_comment<with_toy>(toy_id, "Q=7") == "a toy queue");
+static_assert(lost_as_comment<with_toy>(toy_id, "G990").empty() && lost_as_comment<with_toy>(toy_id, "G9.9").empty());
+static_assert(lost_as_comment(toy_id, "G99").empty(), "the real list does not know it");
+static_assert(nc_dialect_ids<with_toy>().size() == nc_dialect_ids().size() + 1, "translate reads and writes it");
+static_assert(nc_dialect_ids<with_toy>().back() == toy_id);
 
 }  // namespace
 

@@ -37,6 +37,8 @@ struct dialect {
   static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {6, 6, 6, 9}};
   /// No machine reads CL data.
   static constexpr std::array<std::string_view, 0> default_for{};
+  /// Its reader keeps no word a comment would lose.
+  static constexpr std::array<kept_word_effect, 0> lost_as_comment{};
   using write_options = apt::write_options;
   using writer = apt::writer;
   static void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,

@@ -42,6 +42,10 @@ struct dialect {
                                     .m91_m92_machine_coordinates = true};
   /// Catalog machines whose controller reads it (Tian 2010's DMU 80P; Liu 2010's DMU 50V).
   static constexpr std::array<std::string_view, 2> default_for{"dmu-80p", "dmu-50v"};
+  /// Kept words a comment would lose: TOOL CALL's tool axis when it is not Z.
+  static constexpr std::array<kept_word_effect, 2> lost_as_comment{
+      {{"X", kept_word_effect::match::whole, "a tool axis other than Z in TOOL CALL"},
+       {"Y", kept_word_effect::match::whole, "a tool axis other than Z in TOOL CALL"}}};
   using write_options = heidenhain::write_options;
   using writer = heidenhain::writer;
   static void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
