@@ -118,7 +118,7 @@ TEST_CASE("The setup-rotation option text reads back as the rotation", "[reach][
 TEST_CASE("Program report: classes, unreachable runs with their gap, planned travel", "[reach][setup]") {
   // Lines 3-8: A = -45, 5, 6, -30, -100, 20 (B = 30 each): runs {4, 5} and {8}; gaps = A.
   const std::string text =
-      "N10 G90 G17 G54\nN20 TRAORI\nN30 G1 X0 Y0 Z50 A-45 B30 F1000\nN40 G1 X1 A5\nN50 G1 X2 A6\n"
+      "N10 G90 G17\nN20 TRAORI\nN30 G1 X0 Y0 Z50 A-45 B30 F1000\nN40 G1 X1 A5\nN50 G1 X2 A6\n"
       "N60 G1 X3 A-30\nN70 G1 X4 A-100\nN80 G1 X5 A20\nN90 TRAFOOF\nN100 M30\n";
   const auto in = program::read(program::id_of<program::siemens::dialect>(), text, "wall.mpf");
   REQUIRE(in.ok());
@@ -144,7 +144,7 @@ TEST_CASE("Program report: classes, unreachable runs with their gap, planned tra
 TEST_CASE("Program report: the slides of each reachable block put the tool back on its tip (G6)", "[reach][setup]") {
   // The same wall; tool length 120 mm, the workpiece frame 30 mm above and beside the origin.
   const std::string text =
-      "N10 G90 G17 G54\nN20 TRAORI\nN30 G1 X0 Y0 Z50 A-45 B30 F1000\nN40 G1 X1 A5\nN50 G1 X2 A6\n"
+      "N10 G90 G17\nN20 TRAORI\nN30 G1 X0 Y0 Z50 A-45 B30 F1000\nN40 G1 X1 A5\nN50 G1 X2 A6\n"
       "N60 G1 X3 A-30\nN70 G1 X4 A-100\nN80 G1 X5 A20\nN90 TRAFOOF\nN100 M30\n";
   const auto in = program::read(program::id_of<program::siemens::dialect>(), text, "wall.mpf");
   REQUIRE(in.ok());
