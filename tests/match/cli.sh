@@ -60,6 +60,16 @@ rotation=$(sed -n 's/^kin5 translate .*--setup-rotation \([^ ]*\) .*/\1/p' "$out
 run 3 default translate --from sajo-12000p --to dmu-80p -o "$out/default.h" "$dir/flank.mpf"
 run 0 refixtured translate --from sajo-12000p --to dmu-80p --setup-rotation "$rotation" -o "$out/flank.h" "$dir/flank.mpf"
 [ -s "$out/flank.h" ] || report "refixtured: nothing written"
+
+# The same program selecting G54: into Heidenhain it needs --work-offset-map, in the setup
+# search's trial translations too, and the printed command repeats the map.
+sed 's/^N10 G90 G17$/N10 G90 G17 G54/' "$dir/flank.mpf" >"$out/flank54.mpf"
+run 3 flank54 match --from sajo-12000p --to dmu-80p --work-offset-map G54=1 --program "$out/flank54.mpf"
+grep -q '^kin5 translate .*--setup-rotation [^ ]* --work-offset-map G54=1 ' "$out/flank54" || report "flank54: map not in the printed command"
+rotation54=$(sed -n 's/^kin5 translate .*--setup-rotation \([^ ]*\) .*/\1/p' "$out/flank54")
+[ "$rotation54" = "$rotation" ] || report "flank54: another setup ($rotation54) than without G54 ($rotation)"
+run 0 refixtured54 translate --from sajo-12000p --to dmu-80p --work-offset-map G54=1 --setup-rotation "$rotation54" -o "$out/flank54.h" "$out/flank54.mpf"
+run 1 badmap match --from sajo-12000p --to dmu-80p --work-offset-map G54 --program "$out/flank54.mpf"
 grep -q "7 direct, 0 other-branch, 0 unreachable" "$out/refixtured.err" || report "refixtured: not every block direct"
 
 # The slides (G7) against the DMU 80P's linear travel: a workpiece frame 2 m above the machine's

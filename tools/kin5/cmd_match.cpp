@@ -48,6 +48,7 @@ struct match_arguments {
   std::string program, from_dialect, format = "md";
   double tool_length_mm = 0.0;
   std::vector<double> work_offset_mm;  ///< X, Y, Z of the workpiece frame on the target, or empty
+  std::vector<std::string> work_offset_map;  ///< --work-offset-map entries, as `translate` takes them
 };
 
 run_inputs target_inputs(const match_arguments& a) {
@@ -94,13 +95,26 @@ int with_program(const machine_model& from, const machine_model& to, const match
     std::fprintf(stderr, "kin5 match: %zu errors in %s; no report\n", in.error_count(), name.c_str());
     return exit_codes::input_error;
   }
+  work_offset_map work_offsets;
+  std::string map_text;
+  for (const auto& entries : a.work_offset_map) {
+    if (!work_offsets.add(entries)) {
+      std::fprintf(stderr, "kin5 match: --work-offset-map: '%s' is not FROM=TO[,FROM=TO…], or maps a work offset twice\n",
+                   entries.c_str());
+      return exit_codes::usage;
+    }
+    map_text += (map_text.empty() ? "" : ",") + entries;
+  }
   const rigid_transform setup = default_setup(from.geometry.id, to.geometry.id);
-  const auto report = reach::make_program_report(from, to, in.parsed, setup, true, target_inputs(a), placed(a));
+  auto report = reach::make_program_report(from, to, in.parsed, setup, true, target_inputs(a), placed(a), work_offsets);
+  report.work_offset_map_option = map_text;
   std::optional<reach::setup_search_result> search;
   std::optional<reach::chosen_setup> chosen;
   if (!report.unreachable.empty()) {
     search = reach::search_setup(from, to, report.source_axes, setup.rotation);
-    chosen = reach::choose_setup(from, to, in.parsed, *search, setup.translation_mm, target_inputs(a), placed(a));
+    chosen = reach::choose_setup(from, to, in.parsed, *search, setup.translation_mm, target_inputs(a), placed(a),
+                                 work_offsets);
+    if (chosen) chosen->report.work_offset_map_option = map_text;
   }
   if (a.format == "svg") {
     const auto t = reach::make_pair_table(from, to, setup, true, false);
@@ -149,6 +163,10 @@ void add_match_command(CLI::App& app, int& exit_code) {
   sub->add_option("--work-offset", a->work_offset_mm, "Origin of the workpiece frame on the target X,Y,Z, mm")
       ->delimiter(',')
       ->expected(3);
+  sub->add_option("--work-offset-map", a->work_offset_map,
+                  "Work offset selections of the program mapped to the target's, as translate takes them "
+                  "(FROM=TO[,FROM=TO…])")
+      ->allow_extra_args(false);
   sub->footer("Exit codes: 0 every block reachable (or no program), 1 bad arguments, 2 the program cannot be read,\n"
               "3 blocks unreachable under the pair's default setup (the report says which, and a setup that helps).");
   sub->callback([a, &exit_code] { exit_code = run_match(*a); });

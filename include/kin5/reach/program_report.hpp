@@ -77,6 +77,7 @@ struct program_report {
   std::vector<vec3> source_axes;            ///< tool axes of the motion blocks, source frame
   run_inputs target_inputs;                 ///< tool length and work offset on the target
   bool placed = false;                      ///< the work offset was given (else the machine's origin)
+  std::string work_offset_map_option;       ///< `--work-offset-map` text repeated in a printed command, or empty
   std::vector<block_on_target> blocks;      ///< the motion blocks, as `source_axes`
   std::vector<slide_span> linear;           ///< X, Y, Z over the reachable blocks (none reachable: empty)
   /// Whether some slide leaves its travel.
@@ -158,7 +159,7 @@ inline void place_slides(const machine_model& to, program_report& out, const rot
 inline program_report make_program_report(const machine_model& from, const machine_model& to,
                                           const program::program& nc, const rigid_transform& setup,
                                           bool is_default_setup, const run_inputs& target_inputs = {},
-                                          bool placed = false) {
+                                          bool placed = false, const work_offset_map& work_offsets = {}) {
   program_report out;
   out.target_inputs = target_inputs;
   out.placed = placed;
@@ -167,6 +168,7 @@ inline program_report make_program_report(const machine_model& from, const machi
   out.setup = setup, out.default_setup = is_default_setup;
   translate_options options;
   options.setup = setup;
+  options.common.work_offsets = work_offsets;
   const translation t = translate(from, to, nc, options);
   out.per_class = t.per_class;
   out.unreachable = detail::runs_of(t.reports);
@@ -209,10 +211,11 @@ struct chosen_setup {
 inline std::optional<chosen_setup> choose_setup(const machine_model& from, const machine_model& to,
                                                 const program::program& nc, const setup_search_result& search,
                                                 const vec3& offset_mm, const run_inputs& target_inputs = {},
-                                                bool placed = false) {
+                                                bool placed = false, const work_offset_map& work_offsets = {}) {
   chosen_setup out;
   for (const auto& c : search.ranked) {
-    program_report r = make_program_report(from, to, nc, {c.rotation, offset_mm}, false, target_inputs, placed);
+    program_report r =
+        make_program_report(from, to, nc, {c.rotation, offset_mm}, false, target_inputs, placed, work_offsets);
     if (r.unreachable.empty() && r.other_errors.empty() && !r.linear_exceeded()) {
       out.candidate = c;
       out.report = std::move(r);

@@ -55,6 +55,7 @@ inline std::string turn_text(const mat3& r) {
 /// The command that translates with `setup` instead of the pair's default.
 inline std::string translate_command(const program_report& r, const mat3& rotation) {
   return "kin5 translate --from " + r.from + " --to " + r.to + " --setup-rotation " + rotation_option(rotation) + " " +
+         (r.work_offset_map_option.empty() ? "" : "--work-offset-map " + r.work_offset_map_option + " ") +
          (r.file.empty() ? "-" : r.file);
 }
 
