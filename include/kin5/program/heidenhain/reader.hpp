@@ -127,11 +127,9 @@ class block_reader : public word_checks {
       function_tcpm(*f);
     } else if (auto r = scan_.keywords(i, {"FUNCTION", "RESET", "TCPM"})) {
       b_.tcp = false;
-      const std::size_t c = scan_.skip_spaces(*r);
-      if (c < s_.size() && s_[c] == ';') b_.comment = s_.substr(c + 1);
-      else if (c < s_.size()) {
+      if (!only_comment_after(*r)) {
         b_.passthrough = true, b_.tcp.reset();
-        error(c, "FUNCTION RESET TCPM: words after it are not supported");
+        error(scan_.skip_spaces(*r), "FUNCTION RESET TCPM: words after it are not supported");
       }
     } else if (auto cycle = scan_.keywords(i, {"CYCL", "DEF"})) {
       cycle_definition(i, *cycle);
@@ -168,8 +166,7 @@ class block_reader : public word_checks {
       if (state_.begin_name && *state_.begin_name != name)
         warning(p, "END PGM name '" + name + "' differs from BEGIN PGM '" + *state_.begin_name + "'");
     }
-    const std::size_t c = scan_.skip_spaces(ue);
-    if (c < s_.size() && s_[c] == ';') b_.comment = s_.substr(c + 1);
+    only_comment_after(ue);
   }
 
   /// `TOOL CALL 5 Z S6000 F… DL… DR…`; any other form is refused at `i`.
@@ -255,13 +252,8 @@ class block_reader : public word_checks {
     b_.tcp = true;
     std::vector<std::string> tokens;
     std::vector<std::size_t> at;
-    for (;;) {
+    while (!only_comment_after(k)) {
       k = scan_.skip_spaces(k);
-      if (k >= s_.size()) break;
-      if (s_[k] == ';') {
-        b_.comment = s_.substr(k + 1);
-        break;
-      }
       const std::size_t e = scan_.run_end(k);
       tokens.push_back(t_.upper.substr(k, e - k));
       at.push_back(k);
@@ -305,13 +297,8 @@ class block_reader : public word_checks {
   /// Anything else in the block is refused at it.
   void preset_selection(std::size_t i, std::size_t p) {
     std::optional<int> row;
-    for (;;) {
+    while (!only_comment_after(p)) {
       p = scan_.skip_spaces(p);
-      if (p >= s_.size()) break;
-      if (s_[p] == ';') {
-        b_.comment = s_.substr(p + 1);
-        break;
-      }
       const std::string key = scan_.letters(p);
       if ((key == "DATUM" || key == "SETTING") && !row) {
         p += key.size();
