@@ -44,7 +44,8 @@ class block_store {
     record_.resize(static_cast<std::size_t>(write_ - record_.data()));
     if (chunks_.empty() || capacity_ - used_ < record_.size()) {  // used_ <= capacity_ always
       capacity_ = std::max(chunk_bytes_, record_.size());
-      chunks_.push_back(std::make_unique<unsigned char[]>(capacity_));
+      // Not zeroed: replay reads only the bytes push copied in (up to sizes_).
+      chunks_.push_back(std::make_unique_for_overwrite<unsigned char[]>(capacity_));
       sizes_.push_back(0);
       used_ = 0;
     }
