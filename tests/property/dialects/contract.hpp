@@ -9,13 +9,16 @@
 /// |---|---|
 /// | `file` | the file name of generated and fuzzed text |
 /// | `draw_program()` | generated text with the model it must read as (RapidCheck; `<name>/generator.cpp`) |
-/// | `bad_inputs()` | texts and the exact diagnostics each gives (`<name>/errors.cpp`) |
+/// | `bad_file` | the file name the bad-input table (`<name>/errors.txt`, bad_inputs.hpp) is read as |
 /// | `read_exactly` | how the reading of generated text matches the drawn model |
 /// | `read_back` | how `read(write(model))` matches the model (a writer may renumber) |
 /// | `numbers_from_zero` | whether the writer numbers blocks 0, 1, 2, … itself |
 /// | `fuzz_options()`, `fuzz_read_back`, `fuzz_fixed_point` | how the fuzz target writes and compares |
 /// | `writes_all_it_reads` | whether the writer must accept every program the reader accepts |
 /// | `round_trips(p)` | whether a program read is inside the writer's round-trip contract |
+///
+/// `usual_contract<D>` holds what most dialects say; a contract derives from it and declares
+/// only what differs.
 #pragma once
 
 #include <string>
@@ -24,6 +27,7 @@
 #include <vector>
 
 #include <kin5/program/block.hpp>
+#include <kin5/program/dialect.hpp>
 
 #include "model_difference.hpp"
 
@@ -37,6 +41,33 @@ struct contract;
 struct drawn_program {
   std::string text;
   program::program expected;
+};
+
+/// Generated `text` with the program it must read as in dialect D: the `expected` block of each
+/// of `items`, in order, from the contract's `file`.
+template <class D, class Item>
+drawn_program drawn_from(std::string text, const std::vector<Item>& items) {
+  drawn_program d{std::move(text), {}};
+  d.expected.language = program::id_of<D>();
+  d.expected.file = std::string(contract<D>::file);
+  for (const Item& it : items) d.expected.blocks.push_back(it.expected);
+  return d;
+}
+
+/// What most contracts say: readings and read-backs compare to the last bit of a decimal, the
+/// writer keeps the block numbers read and writes every program the reader accepts; the fuzz
+/// target writes the default decimals (3 for lengths, 7 for vectors, 1 for feeds), so a first
+/// read-back is within 0.05, and once written the text is a fixed point.
+template <class D>
+struct usual_contract {
+  static constexpr comparison read_exactly{};
+  static constexpr comparison read_back{};
+  static constexpr bool numbers_from_zero = false;
+  static typename D::write_options fuzz_options() { return {}; }
+  static constexpr comparison fuzz_read_back{.tolerance = 0.05};
+  static constexpr comparison fuzz_fixed_point{};
+  static constexpr bool writes_all_it_reads = true;
+  static bool round_trips(const program::program&) { return true; }
 };
 
 /// A text and the exact diagnostics (`FILE:LINE:COL: error: …`, in order) reading it gives.

@@ -4,8 +4,10 @@
 /// RapidCheck properties (each function draws with `*gen`).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <rapidcheck.h>
 
@@ -13,6 +15,15 @@
 #include <kin5/program/number.hpp>
 
 namespace kin5::test {
+
+/// Up to `most` items (none included), each drawn by `draw()` in turn.
+template <class Draw>
+auto draw_items(std::size_t most, Draw draw) {
+  const auto n = *rc::gen::inRange<std::size_t>(0, most + 1);
+  std::vector<decltype(draw())> items;
+  for (std::size_t i = 0; i < n; ++i) items.push_back(draw());
+  return items;
+}
 
 /// k / 10^decimals for k uniform in [lo·10^d, hi·10^d]: a value every writer reproduces exactly.
 inline double draw_decimal(double lo, double hi, int decimals) {

@@ -78,8 +78,8 @@ TEST_CASE("heidenhain: `~` lines before a passthrough's text stay when no number
 }
 
 TEST_CASE("heidenhain: cycle parameters after `;comment~` stay in their cycle's block") {
-  // The cycle itself is refused (refusal_table.cpp), once, at its first line: its parameter
-  // lines are part of its block, not blocks of their own.
+  // The cycle itself is refused (tests/property/dialects/heidenhain/errors.txt), once, at its
+  // first line: its parameter lines are part of its block, not blocks of their own.
   const std::string text =
       "CYCL DEF 200 DRILLING~\n"
       "  Q200=2 ;SET-UP CLEARANCE~\n"
@@ -108,7 +108,7 @@ TEST_CASE("heidenhain: Q parameters that are not constants of the file are refus
       {"FN 1: Q1=+1+2\nL X+10 F Q1\n", {"t.h:2:8: error: parameter Q1 is computed at line 1; only a parameter assigned a number is read"}},
       {"Q1 = 5 * 2\nL X+Q1\n", {"t.h:2:3: error: parameter Q1 is computed at line 1; only a parameter assigned a number is read"}},
       {"FN 0: Q120=30\nL A+Q120 FMAX\n", {"t.h:2:3: error: parameter Q120 is set by the control (Q100-Q199), not a constant of this file"}},
-      // The labels, calls and jumps are refused too (refusal_table.cpp), each at its line.
+      // The labels, calls and jumps are refused too (tests/property/dialects/heidenhain/errors.txt), each at its line.
       {"FN 0: Q1=5\nL X+Q1\nCALL LBL 1\nLBL 1\nLBL 0\n",
        {"t.h:2:3: error: parameter Q1 in a program with control flow (CALL LBL at line 3): its value depends on the path",
         "t.h:3:1: error: CALL LBL: program and label calls are not supported (the motion they make would be lost)",

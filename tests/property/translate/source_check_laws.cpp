@@ -412,3 +412,56 @@ TEST_CASE("M functions whose meaning is the machine maker's are refused across d
   CHECK_FALSE(bad.add("x=1"));
   CHECK_FALSE(bad.add("1=-2"));
 }
+
+TEST_CASE("across dialects, a kept word whose effect a comment would lose is refused at its block") {
+  using program::id_of;
+  using program::read_result;
+  using translate_detail::check_kept_words;
+  using translate_detail::source_context;
+  struct case_row {
+    dialect from;
+    std::string text, error;  // error empty: carried as a comment, harmless
+  };
+  const dialect iso = id_of<program::iso::dialect>();
+  const dialect siemens = id_of<program::siemens::dialect>();
+  const std::vector<case_row> rows{
+      {iso, "G4 P1500\n", "t:1:1: error: G4: a dwell of iso is not translated into heidenhain yet (it would become a comment)"},
+      {iso, "G04 X1.5\n",  // X of a G4 is its time, not a position
+       "t:1:1: error: G04: a dwell of iso is not translated into heidenhain yet (it would become a comment)"},
+      {iso, "G43 H1\n",
+       "t:1:1: error: G43: tool length compensation (G43, without tool-tip tracking) of iso is not translated into "
+       "heidenhain yet (it would become a comment)"},
+      {siemens, "T=\"BALL\"\n",
+       "t:1:1: error: T=\"BALL\": a tool named in T= of siemens is not translated into heidenhain yet (it would "
+       "become a comment)"},
+      {siemens, "D0\n",
+       "t:1:1: error: D0: tool length compensation off (D0) of siemens is not translated into heidenhain yet (it "
+       "would become a comment)"},
+      {iso, "G17 G40 G80 G90 G05.1 Q1\n", ""},
+      {siemens, "G17 G40 G90 SOFT D1\n", ""},
+  };
+  for (const case_row& r : rows) {
+    INFO(r.text);
+    const read_result read = program::read(r.from, r.text, "t");
+    REQUIRE(read.ok());
+    translation out;
+    source_context ctx;
+    ctx.language = r.from;
+    ctx.output = id_of<program::heidenhain::dialect>();
+    ctx.out = &out;
+    const bool ok = check_kept_words(read.parsed.blocks.at(0), ctx);
+    CHECK(ok == r.error.empty());
+    if (r.error.empty()) continue;
+    REQUIRE(out.errors.size() == 1);
+    CHECK(out.errors[0].to_string() == r.error);
+    ctx.output = r.from;  // the same dialect writes it back as code
+    CHECK(check_kept_words(read.parsed.blocks.at(0), ctx));
+  }
+  // TOOL CALL along X or Y: a tool axis the other dialects cannot say.
+  const read_result h = program::heidenhain::read("TOOL CALL 5 Y S1000\n", "t");
+  REQUIRE(h.ok());
+  source_context ctx;
+  ctx.language = id_of<program::heidenhain::dialect>();
+  ctx.output = iso;
+  CHECK_FALSE(check_kept_words(h.parsed.blocks.at(0), ctx));
+}

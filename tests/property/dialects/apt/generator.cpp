@@ -166,26 +166,11 @@ std::string spell(const std::vector<item>& items) {
   return text;
 }
 
-std::vector<item> draw_items() {
-  const auto n = *rc::gen::inRange<std::size_t>(0, 40);
-  std::vector<item> items;
-  bool rapid_pending = false;
-  for (std::size_t i = 0; i < n; ++i) items.push_back(draw_item(rapid_pending));
-  return items;
-}
-
-program expected_program(const std::vector<item>& items) {
-  program p;
-  p.language = id_of<apt::dialect>();
-  p.file = "gen.cls";
-  for (const item& it : items) p.blocks.push_back(it.expected);
-  return p;
-}
-
 }  // namespace
 
 /// Text drawn with the block each line must read as (see the top of this file).
 kin5::test::drawn_program kin5::test::contract<kin5::program::apt::dialect>::draw_program() {
-  const std::vector<item> items = ::draw_items();
-  return {::spell(items), ::expected_program(items)};
+  bool rapid_pending = false;
+  const auto items = kin5::test::draw_items(39, [&] { return ::draw_item(rapid_pending); });
+  return kin5::test::drawn_from<kin5::program::apt::dialect>(::spell(items), items);
 }

@@ -7,7 +7,6 @@
 #pragma once
 
 #include <string_view>
-#include <vector>
 
 #include <kin5/program/heidenhain/dialect.hpp>
 
@@ -16,10 +15,9 @@
 namespace kin5::test {
 
 template <>
-struct contract<program::heidenhain::dialect> {
+struct contract<program::heidenhain::dialect> : usual_contract<program::heidenhain::dialect> {
   static constexpr std::string_view file = "g.h";
   static drawn_program draw_program();
-  static std::vector<bad_input> bad_inputs();
   static constexpr std::string_view bad_file = "t.h";
   static constexpr comparison read_exactly{.relative = 0};
   static constexpr comparison read_back{.relative = 0, .block_numbers = false};

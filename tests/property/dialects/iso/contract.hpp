@@ -7,7 +7,6 @@
 #pragma once
 
 #include <string_view>
-#include <vector>
 
 #include <kin5/program/iso/dialect.hpp>
 
@@ -16,20 +15,10 @@
 namespace kin5::test {
 
 template <>
-struct contract<program::iso::dialect> {
+struct contract<program::iso::dialect> : usual_contract<program::iso::dialect> {
   static constexpr std::string_view file = "gen.nc";
   static drawn_program draw_program();
-  static std::vector<bad_input> bad_inputs();
   static constexpr std::string_view bad_file = "t.nc";
-  static constexpr comparison read_exactly{};
-  static constexpr comparison read_back{};
-  static constexpr bool numbers_from_zero = false;
-
-  static program::iso::write_options fuzz_options() { return {}; }
-  static constexpr comparison fuzz_read_back{.tolerance = 0.05};
-  static constexpr comparison fuzz_fixed_point{};
-  static constexpr bool writes_all_it_reads = true;
-  static bool round_trips(const program::program&) { return true; }
 };
 
 }  // namespace kin5::test

@@ -7,6 +7,8 @@
 
 #include <kin5/program/iso/dialect.hpp>
 
+#include "../example.hpp"
+
 using namespace kin5::program;
 
 namespace {
@@ -82,10 +84,7 @@ TEST_CASE("iso: LinuxCNC style: M428 remap, semicolon comments, G93, G43 is not 
       "G94\n"
       "M2\n"
       "%\n";
-  const read_result r = iso::read(text, "l.ngc");
-  REQUIRE(r.errors.empty());
-  const auto& b = r.parsed.blocks;
-  REQUIRE(b.size() == 10);
+  const auto b = kin5::test::read_example<iso::dialect>(text, "l.ngc", 10);
   CHECK((b[1].m_codes == std::vector<int>{428} && !b[1].tcp && b[1].comment == "TCP:xyzbc"));
   CHECK((b[2].motion == motion_kind::rapid && b[2].feed_mode == feed_unit::per_minute));
   CHECK((!b[4].tcp && b[4].kept_words == strings{"G43", "H3"} && b[4].m_codes == std::vector<int>{8}));

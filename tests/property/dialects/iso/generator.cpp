@@ -278,26 +278,11 @@ std::string spell(const std::vector<item>& items) {
   return text;
 }
 
-std::vector<item> draw_items() {
-  const auto n = *rc::gen::inRange<std::size_t>(0, 40);
-  std::vector<item> items;
-  state st;
-  for (std::size_t i = 0; i < n; ++i) items.push_back(draw_item(st));
-  return items;
-}
-
-program expected_program(const std::vector<item>& items) {
-  program p;
-  p.language = id_of<iso::dialect>();
-  p.file = "gen.nc";
-  for (const item& it : items) p.blocks.push_back(it.expected);
-  return p;
-}
-
 }  // namespace
 
 /// Text drawn with the block each line must read as (see the top of this file).
 kin5::test::drawn_program kin5::test::contract<kin5::program::iso::dialect>::draw_program() {
-  const std::vector<item> items = ::draw_items();
-  return {::spell(items), ::expected_program(items)};
+  ::state st;
+  const auto items = kin5::test::draw_items(39, [&] { return ::draw_item(st); });
+  return kin5::test::drawn_from<kin5::program::iso::dialect>(::spell(items), items);
 }

@@ -6,7 +6,6 @@
 #pragma once
 
 #include <string_view>
-#include <vector>
 
 #include <kin5/program/siemens/dialect.hpp>
 
@@ -15,20 +14,15 @@
 namespace kin5::test {
 
 template <>
-struct contract<program::siemens::dialect> {
+struct contract<program::siemens::dialect> : usual_contract<program::siemens::dialect> {
   static constexpr std::string_view file = "gen.mpf";
   static drawn_program draw_program();
-  static std::vector<bad_input> bad_inputs();
   static constexpr std::string_view bad_file = "bad.mpf";
   static constexpr comparison read_exactly{.locations = true};
-  static constexpr comparison read_back{};
-  static constexpr bool numbers_from_zero = false;
 
   static program::siemens::write_options fuzz_options() { return {6, 6, 6, 6}; }
   static constexpr comparison fuzz_read_back{.tolerance = 1e-6};
   static constexpr comparison fuzz_fixed_point{.tolerance = 1e-6};
-  static constexpr bool writes_all_it_reads = true;
-  static bool round_trips(const program::program&) { return true; }
 };
 
 }  // namespace kin5::test
