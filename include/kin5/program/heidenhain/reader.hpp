@@ -103,7 +103,9 @@ class block_reader : public word_checks {
     while (k < s_.size() && is_digit(s_[k])) ++k;
     long long n = 0;
     const auto r = std::from_chars(s_.data() + i, s_.data() + k, n);
-    if (r.ec != std::errc{}) error(i, "block number out of range");
+    // the bound of every number the readers take (`max_magnitude`), as the ISO and Siemens N
+    // words have it: a number past it is one no other dialect's reader reads back
+    if (r.ec != std::errc{} || static_cast<double>(n) > max_magnitude) error(i, "block number out of range");
     else b_.number = n;
     return scan_.skip_spaces(k);
   }
