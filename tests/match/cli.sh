@@ -1,7 +1,7 @@
 #!/bin/sh
 # End-to-end checks of `kin5 match`: the pair's table in each format, a program's report, and
-# the setup search — the printed `kin5 translate --setup-rotation …` must translate the program
-# that does not translate with the pair's default setup.
+# the setup search — the printed `kin5 translate --setup-rotation … [--setup-offset …]` must
+# translate the program that does not translate with the pair's default setup.
 #   cli.sh KIN5 DIR     (DIR holds side.mpf and flank.mpf)
 set -u
 kin5=$1 dir=$2
@@ -73,14 +73,36 @@ run 1 badmap match --from sajo-12000p --to dmu-80p --work-offset-map G54 --progr
 grep -q "7 direct, 0 other-branch, 0 unreachable" "$out/refixtured.err" || report "refixtured: not every block direct"
 
 # The slides (G7) against the DMU 80P's linear travel: a workpiece frame 2 m above the machine's
-# origin puts Z beyond its [-600, 0] mm.
+# origin puts Z beyond its [-600, 0] mm, and the setup search moves the part down.
 run 3 flank_placed match --from sajo-12000p --to dmu-80p --program "$dir/flank.mpf" --tool-length 100 --work-offset 0,0,-300
 has flank_placed "Linear travel on dmu-80p"
 has flank_placed "tool length 100.000 mm, work offset (0.000, 0.000, -300.000) mm"
 grep -q "exceeded" "$out/flank_placed" && report "flank_placed: a slide beyond its travel"
 run 3 flank_high match --from sajo-12000p --to dmu-80p --program "$dir/flank.mpf" --work-offset 0,0,2000
 has flank_high "[-600.000, 0.000] exceeded"
-has flank_high "or a slide leaves its travel"
+has flank_high "the part moved by (0.000, 0.000, -"
+
+# With the part's place given, the setup search moves the part too: the printed command, setup
+# offset included, must translate with the slides checked; the same rotation where the part sat
+# leaves Z past its travel.
+run 3 flank_moved match --from sajo-12000p --to dmu-80p --program "$dir/flank.mpf" --tool-length 100 --work-offset 0,0,2000
+has flank_moved "the least move that keeps every slide 0.01 mm within its travel"
+command=$(grep '^kin5 translate .* --setup-offset ' "$out/flank_moved")
+[ -n "$command" ] || report "flank_moved: no --setup-offset printed"
+set -- $command
+shift 2  # kin5 translate
+run 0 moved translate -o "$out/moved.h" "$@"
+grep -q "7 direct, 0 other-branch, 0 unreachable" "$out/moved.err" || report "moved: not every block direct"
+moved_rotation=$(echo "$command" | sed -n 's/.*--setup-rotation \([^ ]*\) .*/\1/p')
+run 3 unmoved translate --from sajo-12000p --to dmu-80p --setup-rotation "$moved_rotation" --tool-length 100 --work-offset 0,0,2000 -o "$out/unmoved.h" "$dir/flank.mpf"
+grep -q "past its travel" "$out/unmoved.err" || report "unmoved: no slide past its travel"
+
+# A wall 3 m long: every block reachable, but no turn or place of the part fits it in the
+# DMU 80P's 800 x 700 x 600 mm travel.
+printf 'N10 G90 G17\nN20 TRAORI\nN30 G1 X0 Y0 Z50 A-45 B30 F1000\nN40 G1 X3000 A-30\nN50 TRAFOOF\nN60 M30\n' >"$out/long.mpf"
+run 3 long match --from sajo-12000p --to dmu-80p --program "$out/long.mpf" --work-offset 0,0,-300
+has long "| unreachable | 0 |"
+has long "no place of the part on the table keeps every slide within its travel"
 
 [ "$fail" = 0 ] && echo "kin5 match: all checks passed"
 exit "$fail"

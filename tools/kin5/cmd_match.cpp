@@ -7,13 +7,13 @@
 // checks included) or its sphere map. With one: the program's report — motion blocks per class,
 // the unreachable ones as runs of lines with their worst gap, the rotary travel the target
 // needs, the tool-tip range and the slides each block needs against the target's linear travel
-// (with the tool length and work offset given) — and, when blocks are unreachable, a setup
-// search whose result is
-// printed as the `--setup-rotation` option of `kin5 translate`. docs/matchability.md explains
-// all of it.
+// (with the tool length and work offset given) — and, when blocks are unreachable or a slide
+// leaves its travel, a setup search whose result is printed as the `--setup-rotation` (and,
+// with the work offset given, `--setup-offset`) options of `kin5 translate`. docs/matchability.md explains all of it.
 //
 // Exit codes (commands.hpp): 0 done and every block reachable; 1 bad arguments; 2 the program
-// cannot be read; 3 blocks unreachable under the pair's default setup (the report is printed).
+// cannot be read; 3 blocks unreachable under the pair's default setup, or, with --work-offset, a
+// slide past its travel (the report is printed).
 #include <cstdio>
 #include <string>
 
@@ -110,7 +110,8 @@ int with_program(const machine_model& from, const machine_model& to, const match
   report.work_offset_map_option = map_text;
   std::optional<reach::setup_search_result> search;
   std::optional<reach::chosen_setup> chosen;
-  if (!report.unreachable.empty()) {
+  const bool runs = report.unreachable.empty() && !(placed(a) && report.linear_exceeded());
+  if (!runs) {
     search = reach::search_setup(from, to, report.source_axes, setup.rotation);
     chosen = reach::choose_setup(from, to, in.parsed, *search, setup.translation_mm, target_inputs(a), placed(a),
                                  work_offsets);
@@ -127,7 +128,7 @@ int with_program(const machine_model& from, const machine_model& to, const match
   } else {
     print(reach::report_markdown(report, search, chosen));
   }
-  return report.unreachable.empty() ? exit_codes::ok : exit_codes::unreachable;
+  return runs ? exit_codes::ok : exit_codes::unreachable;
 }
 
 int run_match(const match_arguments& a) {
@@ -168,7 +169,8 @@ void add_match_command(CLI::App& app, int& exit_code) {
                   "(FROM=TO[,FROM=TO…])")
       ->allow_extra_args(false);
   sub->footer("Exit codes: 0 every block reachable (or no program), 1 bad arguments, 2 the program cannot be read,\n"
-              "3 blocks unreachable under the pair's default setup (the report says which, and a setup that helps).");
+              "3 blocks unreachable under the pair's default setup, or with --work-offset a slide past its travel\n"
+              "(the report says which, and a setup that helps).");
   sub->callback([a, &exit_code] { exit_code = run_match(*a); });
 }
 

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -20,6 +21,7 @@
 #include "../kinematics/inverse_pose.hpp"
 #include "../translate/translate.hpp"
 #include "pair_geometry.hpp"
+#include "setup_offset.hpp"
 #include "setup_search.hpp"
 
 namespace kin5::reach {
@@ -198,33 +200,65 @@ inline program_report make_program_report(const machine_model& from, const machi
 }
 
 /// The setup a search proposes for a program: the first rotation of the ranking with which the
-/// whole program translates, and the report with it.
+/// whole program translates, the offset that keeps its slides within travel, and the report.
 struct chosen_setup {
   setup_candidate candidate;
+  vec3 offset_mm{};             ///< the setup's translation, mm (target workpiece frame)
+  bool offset_moved = false;    ///< `setup_offset_shift` moved the part from the offset asked for
   program_report report;
   std::size_t passed_over = 0;  ///< rotations of less travel whose translation fails otherwise
   std::string first_reason;     ///< the first error of the first one passed over
 };
 
-/// Tries `search.ranked` in order (offset: the pair's default translation, mm): the first with
-/// which the program translates and every slide stays within its travel.
+namespace detail {
+
+/// With the work offset given: the least shift of the part that brings report `r`'s slides
+/// within travel (every block reachable), or nothing.
+inline std::optional<vec3> shift_into_travel(const machine_model& to, const program_report& r) {
+  std::vector<vec3> tips;
+  std::vector<rotary_values> angles;
+  for (const auto& b : r.blocks) {
+    if (!b.reachable) return std::nullopt;
+    tips.push_back(b.tip_mm);
+    angles.push_back({radians{b.rotary_rad[0]}, radians{b.rotary_rad[1]}});
+  }
+  return setup_offset_shift(to, tips, angles, r.target_inputs);
+}
+
+}  // namespace detail
+
+/// Tries `search.ranked` in order (offset: the setup's translation asked for, mm): the first
+/// with which the program translates and every slide stays within its travel. With the work
+/// offset given (`placed`), a rotation whose slides leave the travel is tried again with the
+/// part shifted by the least amount that brings them back (`setup_offset_shift`).
 inline std::optional<chosen_setup> choose_setup(const machine_model& from, const machine_model& to,
                                                 const program::program& nc, const setup_search_result& search,
                                                 const vec3& offset_mm, const run_inputs& target_inputs = {},
                                                 bool placed = false, const work_offset_map& work_offsets = {}) {
   chosen_setup out;
+  auto report_with = [&](const mat3& rotation, const vec3& offset) {
+    return make_program_report(from, to, nc, {rotation, offset}, false, target_inputs, placed, work_offsets);
+  };
   for (const auto& c : search.ranked) {
-    program_report r =
-        make_program_report(from, to, nc, {c.rotation, offset_mm}, false, target_inputs, placed, work_offsets);
+    vec3 offset = offset_mm;
+    program_report r = report_with(c.rotation, offset);
+    if (placed && r.unreachable.empty() && r.other_errors.empty() && r.linear_exceeded())
+      if (const auto shift = detail::shift_into_travel(to, r)) {
+        offset = offset + *shift;
+        r = report_with(c.rotation, offset);
+      }
     if (r.unreachable.empty() && r.other_errors.empty() && !r.linear_exceeded()) {
       out.candidate = c;
+      out.offset_mm = offset;
+      out.offset_moved = norm(offset - offset_mm) > 0.0;
       out.report = std::move(r);
       return out;
     }
     if (out.passed_over++ == 0)
       out.first_reason = !r.other_errors.empty() ? r.other_errors.front().message
-                         : r.unreachable.empty()   ? "a slide leaves its travel"
-                                                   : "blocks unreachable";
+                         : !r.unreachable.empty() ? "blocks unreachable"
+                         : placed                 ? "no place of the part keeps every slide within its travel"
+                                                  : "a stroke is longer than its axis' travel";
   }
   return std::nullopt;
 }

@@ -52,11 +52,26 @@ inline std::string turn_text(const mat3& r) {
          fixed(axis.z, 4) + ")";
 }
 
-/// The command that translates with `setup` instead of the pair's default.
-inline std::string translate_command(const program_report& r, const mat3& rotation) {
-  return "kin5 translate --from " + r.from + " --to " + r.to + " --setup-rotation " + rotation_option(rotation) + " " +
-         (r.work_offset_map_option.empty() ? "" : "--work-offset-map " + r.work_offset_map_option + " ") +
-         (r.file.empty() ? "-" : r.file);
+/// A number as `kin5 translate` reads it back exactly enough: 15 significant digits.
+inline std::string option_number(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.15g", v + 0.0);
+  return buf;
+}
+
+/// The command that translates with setup rotation `rotation` instead of the pair's default;
+/// with the work offset given (`r.placed`), also the setup offset `offset_mm` and the tool
+/// length and work offset, so that `translate` checks the slides against the linear travel.
+inline std::string translate_command(const program_report& r, const mat3& rotation, const vec3& offset_mm = {}) {
+  std::string o = "kin5 translate --from " + r.from + " --to " + r.to + " --setup-rotation " + rotation_option(rotation);
+  auto triple = [](const vec3& v) { return option_number(v.x) + "," + option_number(v.y) + "," + option_number(v.z); };
+  if (r.placed) {
+    o += " --setup-offset " + triple(offset_mm);
+    if (r.target_inputs.tool_length_mm != 0.0) o += " --tool-length " + option_number(r.target_inputs.tool_length_mm);
+    o += " --work-offset " + triple(r.target_inputs.work_offset.translation_mm);
+  }
+  if (!r.work_offset_map_option.empty()) o += " --work-offset-map " + r.work_offset_map_option;
+  return o + " " + (r.file.empty() ? "-" : r.file);
 }
 
 inline std::string report_markdown(const program_report& r, const std::optional<setup_search_result>& search,
@@ -111,20 +126,38 @@ inline std::string report_markdown(const program_report& r, const std::optional<
            std::to_string(search->closest.unreachable) + " unreachable (worst gap " + deg(search->closest.worst_gap_rad, 3) +
            "\u00b0).\n";
   if (!chosen)
-    return o + "None of them translates the whole program within the target's travel: " +
-           (search->ranked.empty() ? std::string() : "with each, ") + "the program has constructs the turned setup "
-           "cannot carry, or a slide leaves its travel; `kin5 translate` with the best lists the constructs.\n\n```\n" +
-           translate_command(r, search->ranked.front().rotation) + "\n```\n";
+    return o + "None of the " + std::to_string(search->ranked.size()) +
+           " translates the whole program within the target's travel: with each, the program has constructs the "
+           "turned setup cannot carry, or " +
+           (r.placed ? "no place of the part on the table keeps every slide within its travel"
+                     : "a stroke is longer than its axis' travel") +
+           ". `kin5 translate` with the one of least travel says which:\n\n```\n" +
+           translate_command(r, search->ranked.front().rotation, r.setup.translation_mm) + "\n```\n";
   const auto& b = chosen->candidate;
   const auto& w = chosen->report;
   o += "Best: " + turn_text(b.rotation) + (b.axis_aligned ? " (axis-aligned)" : " (refined)") +
-       "; total rotary movement " + deg(b.travel_rad, 3) + "\u00b0. Translated with it: " + std::to_string(w.per_class[0]) +
-       " direct, " + std::to_string(w.per_class[1]) + " other branch, " + std::to_string(w.per_class[2]) + " unreachable";
+       "; total rotary movement " + deg(b.travel_rad, 3) + "\u00b0";
+  if (r.placed) {
+    const vec3 d = chosen->offset_mm - r.setup.translation_mm;
+    o += chosen->offset_moved ? "; the part moved by (" + fixed(d.x, 3) + ", " + fixed(d.y, 3) + ", " + fixed(d.z, 3) +
+                                    ") mm, the least move that keeps every slide " + fixed(offset_margin_mm, 2) +
+                                    " mm within its travel"
+                              : "; every slide within its travel where the part is";
+  }
+  o += ". Translated with it: " + std::to_string(w.per_class[0]) + " direct, " + std::to_string(w.per_class[1]) +
+       " other branch, " + std::to_string(w.per_class[2]) + " unreachable";
   o += chosen->passed_over ? "; " + std::to_string(chosen->passed_over) +
                                  " rotations of less travel were passed over, as the program does not translate with "
                                  "them (" + chosen->first_reason + ").\n\n"
                            : ".\n\n";
-  o += "```\n" + translate_command(r, b.rotation) + "\n```\n";
+  if (r.placed && !w.linear.empty()) {
+    o += "Slides with it:";
+    for (const auto& s : w.linear)
+      o += std::string(s.letter == w.linear.front().letter ? " " : ", ") + s.letter + " [" + fixed(s.lo_mm, 3) + ", " +
+           fixed(s.hi_mm, 3) + "]";
+    o += " mm.\n\n";
+  }
+  o += "```\n" + translate_command(r, b.rotation, chosen->offset_mm) + "\n```\n";
   return o;
 }
 
@@ -165,10 +198,12 @@ inline std::string report_json(const program_report& r, const std::optional<chos
   }
   o += "]";
   if (chosen)
-    o += ",\n \"setup\": {\"rotation\": [" + rotation_option(chosen->candidate.rotation) + "], \"axis_aligned\": " +
+    o += ",\n \"setup\": {\"rotation\": [" + rotation_option(chosen->candidate.rotation) + "], \"offset_mm\": [" +
+         option_number(chosen->offset_mm.x) + ", " + option_number(chosen->offset_mm.y) + ", " +
+         option_number(chosen->offset_mm.z) + "], \"axis_aligned\": " +
          (chosen->candidate.axis_aligned ? "true" : "false") + ", \"rotary_travel_deg\": " +
          deg(chosen->candidate.travel_rad) + "}";
-  else if (!r.unreachable.empty())
+  else if (!r.unreachable.empty() || (r.placed && r.linear_exceeded()))
     o += ",\n \"setup\": null";
   return o + "}\n";
 }

@@ -22,8 +22,8 @@
 ///    axis-aligned setup): `make_program_report` with the rotation says, and `kin5 match` takes
 ///    the first of the ranking that translates.
 ///
-/// Only rotations are searched: the catalog has no linear travel yet, so a position cannot be
-/// checked; the offset stays the pair's default.
+/// Rotations only: where the part must sit for its slides to stay within the linear travel is
+/// `setup_offset.hpp`, which `choose_setup` (program_report.hpp) asks for each rotation.
 #pragma once
 
 #include <algorithm>

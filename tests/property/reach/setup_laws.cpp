@@ -2,7 +2,9 @@
 // each result checked with the core solver rather than with the search's own closed form.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <set>
 #include <tuple>
@@ -184,4 +186,148 @@ TEST_CASE("Program report: the slides of each reachable block put the tool back 
   // Not placed, only the strokes count, and these few millimetres fit.
   const auto loose = reach::make_program_report(sajo_12000p::model, dmu_80p::model, in.parsed, setup, true, inputs, false);
   CHECK(!loose.linear_exceeded());
+}
+
+namespace {
+
+/// The first solution of `inverse` within travel for `u`, if any.
+template <machine To>
+std::optional<rotary_values> angles_for(const vec3& u) {
+  for (const auto& s : inverse<To>(u))
+    if (s.within_travel) return rotary_values{s.angles[0], s.angles[1]};
+  return std::nullopt;
+}
+
+/// The box [lo, hi] of shifts of each slide, from slide values at no shift: every travel
+/// narrowed by the margin, the tightest block each way.
+struct shift_box {
+  std::array<double, 3> lo{-1e300, -1e300, -1e300}, hi{1e300, 1e300, 1e300};
+  void add(const machine_model& m, const vec3& slides_mm) {
+    const double x[3] = {slides_mm.x, slides_mm.y, slides_mm.z};
+    for (std::size_t k = 0; k < 3; ++k) {
+      lo[k] = std::max(lo[k], m.linear(k).travel.lower_mm + reach::offset_margin_mm - x[k]);
+      hi[k] = std::min(hi[k], m.linear(k).travel.upper_mm - reach::offset_margin_mm - x[k]);
+    }
+  }
+  double narrowest() const { return std::min({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}); }
+  /// The point of the box nearest the origin.
+  vec3 nearest() const {
+    return {std::clamp(0.0, lo[0], hi[0]), std::clamp(0.0, lo[1], hi[1]), std::clamp(0.0, lo[2], hi[2])};
+  }
+};
+
+}  // namespace
+
+TEST_CASE("Setup offset on a head-head machine: the nearest point of the closed-form box", "[reach][setup][offset]") {
+  // ac-head moves the tool only: its slides are x = w + p + (L + l) u (L = 150 mm pivot), so the
+  // shifts that keep every block within travel are an axis-aligned box from the travel and the
+  // program's bounding box, and the least shift is the origin clamped to it; none when it is empty.
+  using kin5::machines::ac_head;
+  std::mt19937 random(20261123);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  auto in = [&](double lo, double hi) { return lo + (hi - lo) * unit(random); };
+  int found = 0, none = 0;
+  for (int k = 0; k < 200; ++k) {
+    run_inputs inputs{.tool_length_mm = in(0.0, 200.0)};
+    inputs.work_offset.translation_mm = {in(-500, 500), in(-500, 500), in(-400, 100)};
+    const vec3 centre{in(-800, 800), in(-800, 800), in(-400, 400)};
+    const vec3 half{in(0, 1100), in(0, 900), in(0, 350)};
+    std::vector<vec3> tips;
+    std::vector<rotary_values> angles;
+    shift_box box;
+    const int n = 1 + static_cast<int>(unit(random) * 12);
+    while (static_cast<int>(tips.size()) < n) {
+      const vec3 u = normalized(vec3{in(-1, 1), in(-1, 1), in(-1, 1)});
+      const auto a = angles_for<ac_head>(u);
+      if (!a) continue;
+      const vec3 tip{centre.x + half.x * in(-1, 1), centre.y + half.y * in(-1, 1), centre.z + half.z * in(-1, 1)};
+      tips.push_back(tip), angles.push_back(*a);
+      box.add(ac_head::model, inputs.work_offset.translation_mm + tip + (150.0 + inputs.tool_length_mm) * u);
+    }
+    const auto shift = reach::setup_offset_shift(ac_head::model, tips, angles, inputs);
+    INFO("program " << k << ", " << n << " blocks, narrowest side of the box " << box.narrowest() << " mm");
+    if (box.narrowest() < -1e-3) {
+      CHECK_FALSE(shift.has_value());
+      ++none;
+    } else if (box.narrowest() > 1e-2) {
+      REQUIRE(shift.has_value());
+      CHECK(norm(*shift - box.nearest()) < 1e-3);
+      ++found;
+    }
+  }
+  CHECK(found > 50);
+  CHECK(none > 15);
+}
+
+TEST_CASE("Setup offset on a table machine, one tool axis: the box turned by the tables (G6)", "[reach][setup][offset]") {
+  // With every block at the same angles, the tip the slides x give is c + K x (forward, G6),
+  // K a rotation: the least shift is K times the origin clamped to the box of Kᵀ-slides.
+  std::mt19937 random(20261124);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  auto in = [&](double lo, double hi) { return lo + (hi - lo) * unit(random); };
+  int found = 0, none = 0;
+  for (int k = 0; k < 120; ++k) {
+    run_inputs inputs{.tool_length_mm = in(0.0, 200.0)};
+    inputs.work_offset.translation_mm = {in(-300, 300), in(-300, 300), in(-500, 0)};
+    std::optional<rotary_values> a;
+    while (!a) a = angles_for<dmu_80p>(normalized(vec3{in(-1, 1), in(-1, 1), in(-0.2, 1)}));
+    auto tip_of = [&](const vec3& x) { return forward<dmu_80p>({x, *a}, inputs).tip_mm; };
+    const vec3 c = tip_of({0, 0, 0});
+    const mat3 K = mat3::from_columns(tip_of(unit_x) - c, tip_of(unit_y) - c, tip_of(unit_z) - c);
+    REQUIRE(norm((K * K.transposed()).row[0] - unit_x) < 1e-12);
+    const vec3 centre{in(-400, 400), in(-400, 400), in(-400, 400)};
+    const double half = in(0, 450);
+    std::vector<vec3> tips;
+    shift_box box;
+    for (int i = 0; i < 6; ++i) {
+      tips.push_back(centre + half * normalized(vec3{in(-1, 1), in(-1, 1), in(-1, 1)}));
+      box.add(dmu_80p::model, K.transposed() * (tips.back() - c));
+    }
+    const std::vector<rotary_values> angles(tips.size(), *a);
+    const auto shift = reach::setup_offset_shift(dmu_80p::model, tips, angles, inputs);
+    INFO("program " << k << ", narrowest side of the box " << box.narrowest() << " mm");
+    if (box.narrowest() < -1e-3) {
+      CHECK_FALSE(shift.has_value());
+      ++none;
+    } else if (box.narrowest() > 1e-2) {
+      REQUIRE(shift.has_value());
+      CHECK(norm(*shift - K * box.nearest()) < 2e-3);
+      ++found;
+    }
+  }
+  CHECK(found > 20);
+  CHECK(none > 5);
+}
+
+TEST_CASE("Setup offset on a table machine, many tool axes: every slide within travel (G6)", "[reach][setup][offset]") {
+  std::mt19937 random(20261125);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  auto in = [&](double lo, double hi) { return lo + (hi - lo) * unit(random); };
+  int found = 0;
+  for (int k = 0; k < 60; ++k) {
+    run_inputs inputs{.tool_length_mm = in(0.0, 200.0)};
+    inputs.work_offset.translation_mm = {in(-300, 300), in(-300, 300), in(-500, 500)};
+    const vec3 centre{in(-400, 400), in(-400, 400), in(-400, 400)};
+    std::vector<vec3> tips;
+    std::vector<rotary_values> angles;
+    while (tips.size() < 8) {
+      const auto a = angles_for<dmu_80p>(normalized(vec3{in(-1, 1), in(-1, 1), in(-0.2, 1)}));
+      if (!a) continue;
+      tips.push_back(centre + vec3{in(-150, 150), in(-150, 150), in(-100, 100)}), angles.push_back(*a);
+    }
+    const auto shift = reach::setup_offset_shift(dmu_80p::model, tips, angles, inputs);
+    if (!shift) continue;
+    ++found;
+    for (std::size_t i = 0; i < tips.size(); ++i) {
+      const vec3 x = linear_axes_for(dmu_80p::model, angles[i], inputs.work_offset.map_point(tips[i] + *shift), inputs);
+      CHECK(norm(forward<dmu_80p>({x, angles[i]}, inputs).tip_mm - (tips[i] + *shift)) < 1e-9);  // G6 agrees
+      const double v[3] = {x.x, x.y, x.z};
+      for (std::size_t j = 0; j < 3; ++j) CHECK(dmu_80p::model.linear(j).travel.contains(v[j], 1e-6));
+    }
+  }
+  CHECK(found > 45);
+  // Two tips 2 m apart at the same angles: farther than the 800 x 700 x 600 mm travel reaches.
+  const auto a = angles_for<dmu_80p>(unit_z);
+  const std::vector<vec3> far{{0, 0, 0}, {2000, 0, 0}};
+  CHECK_FALSE(reach::setup_offset_shift(dmu_80p::model, far, std::vector<rotary_values>(2, *a), {}).has_value());
 }
