@@ -16,6 +16,7 @@
 /// | `fuzz_options()`, `fuzz_read_back`, `fuzz_fixed_point` | how the fuzz target writes and compares |
 /// | `writes_all_it_reads` | whether the writer must accept every program the reader accepts |
 /// | `round_trips(p)` | whether a program read is inside the writer's round-trip contract |
+/// | `transmission` | a short program that ends, the same without its end, a comment with an ETX (`transmission_texts`) |
 ///
 /// `usual_contract<D>` holds what most dialects say; a contract derives from it and declares
 /// only what differs.
@@ -53,6 +54,14 @@ drawn_program drawn_from(std::string text, const std::vector<Item>& items) {
   for (const Item& it : items) d.expected.blocks.push_back(it.expected);
   return d;
 }
+
+/// Texts in a dialect's own spelling for the transmission laws
+/// (tests/property/reading/transmission_table.cpp), which fold over the list.
+struct transmission_texts {
+  std::string_view ending;          ///< a short program that ends: moves, then the dialect's end
+  std::string_view open;            ///< the same motion without its end
+  std::string_view etx_in_comment;  ///< one comment line with an ETX byte (0x03) inside it
+};
 
 /// What most contracts say: readings and read-backs compare to the last bit of a decimal, the
 /// writer keeps the block numbers read and writes every program the reader accepts; the fuzz

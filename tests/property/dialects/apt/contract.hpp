@@ -1,8 +1,8 @@
 /// @file apt/contract.hpp
-/// The APT dialect's contract with the dialect laws and its fuzz target (contract.hpp):
-/// readings compare to the last bit of a decimal; the writer must write every program the reader
-/// accepts. The fuzz target writes the default decimals (3 for lengths, 7 for vectors, 1 for
-/// feeds), so a first read-back is within 0.05, and once written the text is a fixed point.
+/// The APT dialect's contract with the dialect laws, its fuzz target and the transmission table
+/// (contract.hpp): the usual one (`usual_contract`: readings compare to the last bit of a
+/// decimal, the writer writes every program the reader accepts, the fuzz target writes the
+/// default decimals), with APT's file names and texts.
 #pragma once
 
 #include <string_view>
@@ -15,9 +15,12 @@ namespace kin5::test {
 
 template <>
 struct contract<program::apt::dialect> : usual_contract<program::apt::dialect> {
-  static constexpr std::string_view file = "gen.cls";
+  static constexpr std::string_view file = "gen.cls", bad_file = "t.cls";
   static drawn_program draw_program();
-  static constexpr std::string_view bad_file = "t.cls";
+  static constexpr transmission_texts transmission{
+      .ending = "PARTNO T\nGOTO/10,20,30\nFINI\n",
+      .open = "PARTNO T\nGOTO/10,20,30\n",
+      .etx_in_comment = "PPRINT a\x03~\n"};
 };
 
 }  // namespace kin5::test

@@ -16,9 +16,12 @@ namespace kin5::test {
 
 template <>
 struct contract<program::heidenhain::dialect> : usual_contract<program::heidenhain::dialect> {
-  static constexpr std::string_view file = "g.h";
+  static constexpr std::string_view file = "g.h", bad_file = "t.h";
   static drawn_program draw_program();
-  static constexpr std::string_view bad_file = "t.h";
+  static constexpr transmission_texts transmission{
+      .ending = "BEGIN PGM T MM\nL X+10 Y+20 Z+30 FMAX\nEND PGM T MM\n",
+      .open = "BEGIN PGM T MM\nL X+10 Y+20 Z+30 FMAX\n",
+      .etx_in_comment = "* - a\x03~\n"};
   static constexpr comparison read_exactly{.relative = 0};
   static constexpr comparison read_back{.relative = 0, .block_numbers = false};
   static constexpr bool numbers_from_zero = true;

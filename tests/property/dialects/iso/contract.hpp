@@ -1,9 +1,8 @@
 /// @file iso/contract.hpp
-/// The ISO / Fanuc dialect's contract with the dialect laws and its fuzz target (contract.hpp):
-/// readings compare to the last bit of a decimal, N numbers included; the writer must write
-/// every program the reader accepts. The fuzz target writes the default decimals (3 for lengths
-/// and angles, 7 for vectors, 1 for feeds), so a first read-back is within 0.05, and once written
-/// the text is a fixed point.
+/// The ISO / Fanuc dialect's contract with the dialect laws, its fuzz target and the transmission
+/// table (contract.hpp): the usual one (`usual_contract`: readings compare to the last bit of a
+/// decimal, N numbers included; the writer writes every program the reader accepts; the fuzz
+/// target writes the default decimals), with ISO's file names and texts.
 #pragma once
 
 #include <string_view>
@@ -16,9 +15,12 @@ namespace kin5::test {
 
 template <>
 struct contract<program::iso::dialect> : usual_contract<program::iso::dialect> {
-  static constexpr std::string_view file = "gen.nc";
+  static constexpr std::string_view file = "gen.nc", bad_file = "t.nc";
   static drawn_program draw_program();
-  static constexpr std::string_view bad_file = "t.nc";
+  static constexpr transmission_texts transmission{
+      .ending = "%\nO1000\nG0 X10. Y20. Z30.\nM30\n%\n",
+      .open = "%\nO1000\nG0 X10. Y20. Z30.\n",
+      .etx_in_comment = "(a\x03~)\n"};
 };
 
 }  // namespace kin5::test

@@ -15,9 +15,12 @@ namespace kin5::test {
 
 template <>
 struct contract<program::siemens::dialect> : usual_contract<program::siemens::dialect> {
-  static constexpr std::string_view file = "gen.mpf";
+  static constexpr std::string_view file = "gen.mpf", bad_file = "bad.mpf";
   static drawn_program draw_program();
-  static constexpr std::string_view bad_file = "bad.mpf";
+  static constexpr transmission_texts transmission{
+      .ending = "G0 X10 Y20 Z30\nM30\n",
+      .open = "G0 X10 Y20 Z30\n",
+      .etx_in_comment = "; a\x03~\n"};
   static constexpr comparison read_exactly{.locations = true};
 
   static program::siemens::write_options fuzz_options() { return {6, 6, 6, 6}; }
