@@ -3,13 +3,14 @@
 //
 // Input: byte 0 picks the direction, the source and output dialects and the feed policy; byte 1
 // how many times the rest is repeated: once below 0xF0, else 16, 64, … 4^(byte − 0xEE) times,
-// at most 1.25 MiB in all, so that small inputs cross the block store's first 1 MiB chunk (a
-// repeated text without a line end is one huge block) while most runs stay short; the rest is
+// at most 1.25 MiB in all, so that small inputs reach the block store's full 1 MiB chunks (its
+// chunks double from 64 KiB; a repeated text without a line end is one huge block) while most
+// runs stay short; the rest is
 // the program. Large inputs reach it directly: run with -max_len=1310720 (docs/reliability.md).
 //
 // By hand (docs/reliability.md): KIN5_PIPELINE_FUZZ_MAX_TEXT=N caps the repeated text at N bytes
 // instead, for a long run of small programs; KIN5_PIPELINE_FUZZ_STATS=1 prints at exit how many
-// runs filled more than one 1 MiB chunk of the block store, and the longest text.
+// runs filled more than one chunk of the block store (the first is 64 KiB), and the longest text.
 //
 // Besides what the sanitizers catch: a run without errors has given the sink the whole program,
 // and that program reads back without errors in the output dialect (faithful or refused: the
@@ -36,7 +37,7 @@ constexpr auto nc_dialects = kin5::program::nc_dialect_ids();  // every dialect 
 constexpr std::size_t nc_count = nc_dialects.size();
 constexpr kin5::feed_policy feeds[] = {kin5::feed_policy::tcp, kin5::feed_policy::block_time,
                                        kin5::feed_policy::inverse_time};
-constexpr std::size_t max_text = std::size_t{5} << 18;  // 1.25 MiB: past the first 1 MiB chunk
+constexpr std::size_t max_text = std::size_t{5} << 18;  // 1.25 MiB: into the first full 1 MiB chunk
 
 // KIN5_PIPELINE_FUZZ_MAX_TEXT and KIN5_PIPELINE_FUZZ_STATS (see the file comment).
 std::size_t text_cap = max_text;

@@ -5,9 +5,9 @@
 /// Each block is packed into a byte record: one word of flags (which fields are present), then
 /// only the fields present, numbers as their exact bytes, strings with their length. A motion
 /// block `N… G1 X Y Z A B F` takes about 70 bytes, a quarter of `sizeof(block)` and without
-/// its heap parts. Records go into 1 MiB chunks, so the store grows without copying: a record
-/// that does not fit the rest of the last chunk starts a new one, of its own size if it is
-/// larger than a chunk.
+/// its heap parts. Records go into chunks, so the store grows without copying: a record that
+/// does not fit the rest of the last chunk starts a new one, of its own size if it is larger.
+/// Chunks double from 64 KiB up to 1 MiB, so a short program does not take a whole 1 MiB.
 /// `replay` gives back blocks equal (`==`) to those stored, except:
 /// - `where.file` is the store's file name (one per program, not one per block);
 /// - `text` is dropped where the caller asks (`keep_text`), for blocks whose consumer never
@@ -32,18 +32,24 @@ namespace kin5::program {
 /// The blocks of one program as compact records, replayed in the order stored.
 class block_store {
  public:
-  /// Bytes of a chunk, unless a record needs more.
+  /// Bytes of a chunk once the chunks have grown, unless a record needs more.
   static constexpr std::size_t default_chunk_bytes = std::size_t{1} << 20;
+  /// Bytes of the first chunk; each next one doubles, up to the chunk size.
+  static constexpr std::size_t default_first_chunk_bytes = std::size_t{1} << 16;
 
-  explicit block_store(std::string file, std::size_t chunk_bytes = default_chunk_bytes)
-      : file_(std::move(file)), chunk_bytes_(std::max<std::size_t>(chunk_bytes, 1)) {}
+  explicit block_store(std::string file, std::size_t chunk_bytes = default_chunk_bytes,
+                       std::size_t first_chunk_bytes = default_first_chunk_bytes)
+      : file_(std::move(file)),
+        chunk_bytes_(std::max<std::size_t>(chunk_bytes, 1)),
+        next_chunk_bytes_(std::clamp<std::size_t>(first_chunk_bytes, 1, chunk_bytes_)) {}
 
   /// Appends `b` (without its text unless `keep_text`).
   void push(const block& b, bool keep_text = true) {
     encode(b, keep_text);
     record_.resize(static_cast<std::size_t>(write_ - record_.data()));
     if (chunks_.empty() || capacity_ - used_ < record_.size()) {  // used_ <= capacity_ always
-      capacity_ = std::max(chunk_bytes_, record_.size());
+      capacity_ = std::max(next_chunk_bytes_, record_.size());
+      next_chunk_bytes_ = std::min(chunk_bytes_, 2 * next_chunk_bytes_);
       // Not zeroed: replay reads only the bytes push copied in (up to sizes_).
       chunks_.push_back(std::make_unique_for_overwrite<unsigned char[]>(capacity_));
       sizes_.push_back(0);
@@ -97,6 +103,7 @@ class block_store {
   std::vector<std::unique_ptr<unsigned char[]>> chunks_;
   std::vector<std::size_t> sizes_;
   std::size_t chunk_bytes_;
+  std::size_t next_chunk_bytes_;  // of the next chunk: doubles after each, up to chunk_bytes_
   std::size_t capacity_ = 0, used_ = 0, count_ = 0;  // of the last chunk: its size, bytes used
   std::vector<unsigned char> record_;  // the record being built
   unsigned char* write_ = nullptr;     // where `put` writes in it

@@ -163,12 +163,14 @@ block block_of_record_size(std::size_t bytes, std::size_t line) {
 TEST_CASE("records of any size, on either side of every chunk boundary and in any order") {
   rc::prop("a small chunk; sizes relative to the space left, to the chunk, or small", [] {
     const auto chunk = *rc::gen::inRange<std::size_t>(40, 600);
+    const auto first = *rc::gen::oneOf(rc::gen::inRange<std::size_t>(1, chunk + 1), rc::gen::just(chunk));
     const auto n = *rc::gen::inRange<std::size_t>(1, 40);
-    block_store store("c.mpf", chunk);
+    block_store store("c.mpf", chunk, first);
     std::vector<block> in;
     // The store's rule as a model: a record that does not fit what is left of the last chunk
-    // starts a new chunk, of max(chunk, record) bytes.
-    std::size_t chunks = 0, capacity = 0, used = 0, total = 0;
+    // starts a new chunk, of max(next, record) bytes, where next is `first`, then doubles after
+    // each chunk up to `chunk`.
+    std::size_t chunks = 0, capacity = 0, used = 0, total = 0, next = first;
     for (std::size_t k = 0; k < n; ++k) {
       const auto d = *rc::gen::inRange<long>(-3, 4);
       const std::size_t left = chunks ? capacity - used : 0;
@@ -178,7 +180,10 @@ TEST_CASE("records of any size, on either side of every chunk boundary and in an
       const std::size_t before = store.bytes();
       store.push(in.back());
       const std::size_t record = store.bytes() - before;
-      if (chunks == 0 || capacity - used < record) capacity = std::max(chunk, record), used = 0, ++chunks;
+      if (chunks == 0 || capacity - used < record) {
+        capacity = std::max(next, record), used = 0, ++chunks;
+        next = std::min(chunk, 2 * next);
+      }
       used += record;
       total += record;
       RC_ASSERT(store.chunks() == chunks);
