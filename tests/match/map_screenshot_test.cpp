@@ -5,7 +5,9 @@
 //   * on its two discs, the share of each class colour among the pixels of class colours
 //     matches the sphere share the pair's table gives (the map shows what the table says), to
 //     3 percentage points (curves and markers are not class colours and are left out; cells on
-//     the rim, the line of a one-rotary source and antialiased edges account for the rest).
+//     the rim, the line of a one-rotary source and antialiased edges account for the rest);
+//   * its discs are filled to the rim (under 0.5 % white in the band 1.5 to 3 pixels inside it,
+//     pole markers left out).
 // The screenshot stays in the build directory (maps.png) for a human to look at.
 //   match_maps_test CHROMIUM DOCS_TABLES_DIR WORK_DIR      (exit 0 when every check holds)
 // A plain program, not a Catch2 suite: it runs one browser and needs no test framework.
@@ -38,6 +40,7 @@ const int tile_h = static_cast<int>(reach::svg_detail::height_px * scale);
 struct pair_info {
   std::string stem;
   std::array<double, reach::map_colour_count> share{};
+  std::vector<std::array<double, 2>> markers_px;  ///< where pole markers sit, map pixels
 };
 
 std::vector<pair_info> pairs() {
@@ -46,7 +49,10 @@ std::vector<pair_info> pairs() {
     for (const machine_model* to : machines::catalog_models) {
       const rigid_transform setup = default_setup(from->geometry.id, to->geometry.id);
       const auto t = reach::make_pair_table(*from, *to, setup, true, false);
-      out.push_back({"match-" + t.from + "-to-" + t.to, t.sphere_share});
+      out.push_back({"match-" + t.from + "-to-" + t.to, t.sphere_share, {}});
+      for (const auto& m : t.markers)
+        for (bool upper : {true, false})
+          out.back().markers_px.push_back(reach::svg_detail::to_px(reach::project(m.u, upper)));
     }
   return out;
 }
@@ -124,24 +130,37 @@ int check_maps() {
     return 1;
   }
   double worst_share = 0.0;
+  std::string worst_stem;
+  double worst_rim = 0.0;
   for (std::size_t i = 0; i < ps.size(); ++i) {
     const int x0 = static_cast<int>(i % columns) * tile_w, y0 = static_cast<int>(i / columns) * tile_h;
     std::array<long, reach::map_colour_count> on_discs{};
     std::array<long, reach::map_colour_count> anywhere{};
-    long white = 0;
+    long white = 0, rim = 0, rim_white = 0;
     for (int y = y0; y < y0 + tile_h; ++y)
       for (int x = x0; x < x0 + tile_w; ++x) {
         const auto c = img.at(x, y);
         white += c[0] == 255 && c[1] == 255 && c[2] == 255;
-        bool on_disc = false;
+        bool on_disc = false, on_rim = false;
         for (double cx : reach::svg_detail::disc_x_px) {
           const double dx = (x + 0.5 - x0) / scale - cx, dy = (y + 0.5 - y0) / scale - reach::svg_detail::disc_y_px;
-          on_disc = on_disc || dx * dx + dy * dy < std::pow(reach::svg_detail::disc_radius_px - 3.0, 2);
+          const double r2 = dx * dx + dy * dy;
+          on_disc = on_disc || r2 < std::pow(reach::svg_detail::disc_radius_px - 3.0, 2);
+          on_rim = on_rim || (r2 >= std::pow(reach::svg_detail::disc_radius_px - 3.0, 2) &&
+                              r2 < std::pow(reach::svg_detail::disc_radius_px - 1.5, 2));
         }
+        for (const auto& m : ps[i].markers_px)  // a pole's open circle on the equator is white
+          on_rim = on_rim && std::hypot((x + 0.5 - x0) / scale - m[0], (y + 0.5 - y0) / scale - m[1]) > 9.0;
+        rim += on_rim, rim_white += on_rim && c[0] == 255 && c[1] == 255 && c[2] == 255;
         for (std::size_t k = 1; k < reach::map_colour_count; ++k)
           if (same(c, rgb(reach::map_palette[k].fill))) (on_disc ? on_discs : anywhere)[k]++;
       }
     check(static_cast<double>(white) < 0.8 * tile_w * tile_h, ps[i].stem + ": blank");
+    // The discs are filled to the rim: no white in the band just inside it (away from the pole
+    // markers, whose open circle is white).
+    worst_rim = std::max(worst_rim, static_cast<double>(rim_white) / static_cast<double>(rim));
+    check(rim_white * 200 < rim, ps[i].stem + ": white at the rim (" + std::to_string(rim_white) + " of " +
+                                    std::to_string(rim) + " pixels)");
     long disc_pixels = 0;
     for (long n : on_discs) disc_pixels += n;
     for (std::size_t k = 1; k < reach::map_colour_count; ++k) {
@@ -149,13 +168,14 @@ int check_maps() {
       // Its legend swatch: 11 x 7 pixels at half scale, less the border.
       check(anywhere[k] >= 40, what + ": not in the legend (" + std::to_string(anywhere[k]) + " pixels)");
       const double seen = static_cast<double>(on_discs[k]) / static_cast<double>(disc_pixels);
-      worst_share = std::max(worst_share, std::abs(seen - ps[i].share[k]));
+      if (std::abs(seen - ps[i].share[k]) > worst_share) worst_share = std::abs(seen - ps[i].share[k]), worst_stem = what;
       check(std::abs(seen - ps[i].share[k]) < 0.03, what + ": " + std::to_string(100 * seen) + " % of the discs, table " +
                                                         std::to_string(100 * ps[i].share[k]) + " %");
     }
   }
-  std::printf("%zu maps checked in %s; largest share difference %.2f percentage points; %d failures\n", ps.size(),
-              shot.c_str(), 100 * worst_share, failures);
+  std::printf("%zu maps checked in %s; largest share difference %.2f percentage points (%s); white at the rim "
+              "%.2f %% at most; %d failures\n",
+              ps.size(), shot.c_str(), 100 * worst_share, worst_stem.c_str(), 100 * worst_rim, failures);
   return failures;
 }
 

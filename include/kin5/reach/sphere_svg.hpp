@@ -2,11 +2,13 @@
 /// Writes a pair's sphere map (`sphere_map.hpp`) as a standalone SVG: the two discs, the
 /// boundary curves, the pole markers and a legend that always lists every colour. Cells are
 /// merged into one path per colour (a rectangle per run of equal cells in a row) and drawn with
-/// crisp edges, so each class keeps its exact colour on screen. The text is the same bytes on
+/// crisp edges, so each class keeps its exact colour on screen; the cells the rim cuts are
+/// painted as their inner neighbour and clipped to the disc, which leaves no white at the rim. The text is the same bytes on
 /// every run: fixed formatting, nothing that depends on time or locale.
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -53,18 +55,44 @@ inline std::string escape(const std::string& s) {
   return out;
 }
 
+/// The colour to paint cell (row, col) of `disc`: its class; for a cell whose centre is off the
+/// disc but which overlaps it, the class of its neighbour nearest the disc's centre, so that the
+/// clipped cells fill the disc up to its rim.
+inline map_colour paint_of(const sphere_raster& r, int disc, int row, int col) {
+  const map_colour own = r.at(disc, row, col);
+  const double n = r.cells_across, half = n / 2.0;
+  if (own != map_colour::outside) return own;
+  const double dx = std::max(0.0, std::abs(col + 0.5 - half) - 0.5), dy = std::max(0.0, std::abs(row + 0.5 - half) - 0.5);
+  if (dx * dx + dy * dy >= half * half) return own;
+  map_colour best = own;
+  double best_d = 1e300;
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j) {
+      const int rr = row + i, cc = col + j;
+      if (rr < 0 || cc < 0 || rr >= r.cells_across || cc >= r.cells_across || r.at(disc, rr, cc) == map_colour::outside)
+        continue;
+      const double d = std::hypot(cc + 0.5 - half, rr + 0.5 - half);
+      if (d < best_d) best_d = d, best = r.at(disc, rr, cc);
+    }
+  return best;
+}
+
 inline void cells(std::string& out, const sphere_raster& r) {
   const double cell = 2.0 * disc_radius_px / r.cells_across;
   for (int disc = 0; disc < 2; ++disc) {
+    const std::string id = "disc" + std::to_string(disc);
+    out += "<clipPath id=\"" + id + "\"><circle cx=\"" + num(disc_x_px[disc]) + "\" cy=\"" + num(disc_y_px) + "\" r=\"" +
+           num(disc_radius_px) + "\"/></clipPath>\n<g clip-path=\"url(#" + id + ")\">\n";
     out += "<g shape-rendering=\"crispEdges\" transform=\"translate(" + num(disc_x_px[disc] - disc_radius_px) + " " +
            num(disc_y_px - disc_radius_px) + ") scale(" + num(cell, 6) + ")\">\n";
     for (std::size_t c = 1; c < map_colour_count; ++c) {
       std::string d;
+      auto is_c = [&](int row, int col) { return static_cast<std::size_t>(paint_of(r, disc, row, col)) == c; };
       for (int row = 0; row < r.cells_across; ++row)
         for (int col = 0; col < r.cells_across;) {
-          if (static_cast<std::size_t>(r.at(disc, row, col)) != c) { ++col; continue; }
+          if (!is_c(row, col)) { ++col; continue; }
           int end = col;
-          while (end < r.cells_across && static_cast<std::size_t>(r.at(disc, row, end)) == c) ++end;
+          while (end < r.cells_across && is_c(row, end)) ++end;
           const std::string run = std::to_string(end - col);
           d += 'M';
           d += std::to_string(col);
@@ -79,7 +107,7 @@ inline void cells(std::string& out, const sphere_raster& r) {
         }
       if (!d.empty()) out += std::string("<path fill=\"") + map_palette[c].fill + "\" d=\"" + d + "\"/>\n";
     }
-    out += "</g>\n";
+    out += "</g>\n</g>\n";
   }
 }
 
