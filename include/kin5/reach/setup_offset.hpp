@@ -19,6 +19,7 @@
 #include <IpIpoptApplication.hpp>
 #include <IpTNLP.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
