@@ -8,7 +8,7 @@
 /// so the shifts that keep them within each travel narrowed by m = 0.01 mm form a convex
 /// polytope, and the least one is a quadratic programme: minimise ½|Δ|² subject to
 /// lo + m ≤ xᵢ(0) + Jᵢ Δ ≤ hi − m. On a machine without rotary tables T = I, and the polytope
-/// is the box max_i(lo + m − xᵢ(0)) ≤ D Δ ≤ min_i(hi − m − xᵢ(0)) (the laws check it).
+/// is the box max_i(lo + m − xᵢ(0)) ≤ D⁻¹ Δ ≤ min_i(hi − m − xᵢ(0)) (the laws check it).
 /// The answer is rounded to a micrometre, which m covers, and checked again by (G7).
 /// @code
 ///   const auto shift = kin5::reach::setup_offset_shift(to, tips_mm, angles, inputs);
