@@ -1,4 +1,4 @@
-# Sourced by run.sh and reliability.sh, which are called as `SCRIPT KIN5_EXE EXAMPLES_DIR
+# Sourced by run.sh, reliability.sh and silent.sh, which are called as `SCRIPT KIN5_EXE EXAMPLES_DIR
 # TEST_NAME`: sets exe, examples and name from those, moves into a fresh directory removed on
 # exit, and defines the helpers the tests share. Set KIN5_RUN_ENV before sourcing to run the tool
 # under `env $KIN5_RUN_ENV` (reliability.sh: --default-signal).

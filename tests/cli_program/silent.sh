@@ -1,0 +1,185 @@
+#!/bin/sh
+# The table of silent wrong outputs: cases where kin5 once exited 0 with a program that meant
+# something else on the target than the source meant on its machine (issue 11, "Silent wrong
+# output found"). One test per row: a tiny program written here, the kin5 command, and either
+# the exit code with the error at FILE:LINE:COL, or the lines the output must (and must not) hold.
+#
+#   silent.sh KIN5_EXE EXAMPLES_DIR ROW
+set -u
+
+. "$(cd "$(dirname "$0")" && pwd)/harness.sh"
+example="$examples/table1-sajo.mpf"
+
+# error_at TEXT: err has a line starting with TEXT (FILE:LINE:COL: error: ...), as fixed text.
+error_at() { awk -v t="$1" 'index($0, t) == 1 { f = 1 } END { exit !f }' err || { report "no line '$1...'"; show err; }; }
+# has_line FILE REGEX: FILE has a whole line matching REGEX (extended).
+has_line() { grep -Eq -- "^($2)\$" "$1" || { report "$1: no line '$2'"; show "$1"; }; }
+# no_line FILE REGEX: FILE has no whole line matching REGEX.
+no_line() { ! grep -Eq -- "^($2)\$" "$1" || { report "$1: a line '$2'"; show "$1"; }; }
+# nothing FILE: a refused run wrote nothing.
+nothing() { [ -e "$1" ] && report "$1 written although refused"; [ -s out ] && report "stdout not empty"; return 0; }
+
+# tnc NAME MOVE [BLOCK...]: NAME.h, a Heidenhain program for the DMU 80P (C table, B head):
+# BEGIN PGM, TOOL CALL 1, M128, L MOVE on line 4, the BLOCKs (numbered on), M129, END PGM.
+tnc() {
+  n=$1 move=$2; shift 2
+  { echo "0 BEGIN PGM $n MM"; echo '1 TOOL CALL 1 Z S4000'; echo '2 M128'; echo "3 L $move"
+    k=4; for l in "$@"; do echo "$k $l"; k=$((k + 1)); done
+    echo "$k M129"; echo "$((k + 1)) END PGM $n MM"; } >"$n.h"
+}
+
+case "$name" in
+  # An axis word the source machine does not have is an error at the word.
+  axis-a-on-dmu)
+    tnc A 'X+0 Y+0 Z+50 B+10 C+0 A+30 F500'
+    run 2 translate --from dmu-80p --to sajo-12000p -o a.mpf A.h
+    error_at 'A.h:4:27: error: A+30: dmu-80p has no A axis'
+    nothing a.mpf
+    ;;
+  axis-c-on-sajo)
+    printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A-30 B10 C77 F500' 'N30 TRAFOOF' 'N40 M30' >c.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p -o c.h c.mpf
+    error_at 'c.mpf:2:27: error: C77: sajo-12000p has no C axis'
+    nothing c.h
+    ;;
+  wrong-from)
+    # The SAJO example given as a DMU 80P program: its A words name the wrong machine.
+    run 2 translate --from dmu-80p --to sajo-12000p -o w.mpf "$example"
+    error_at "$example:14:34: error: A-77.954: dmu-80p has no A axis"
+    nothing w.mpf
+    ;;
+  # A source rotary value outside the source machine's own travel is an error at the word.
+  outside-travel)
+    printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A-150 B10 F500' 'N30 TRAFOOF' 'N40 M30' >r.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p -o r.h r.mpf
+    error_at 'r.mpf:2:18: error: A-150: outside the travel of A on sajo-12000p, [-120°, 30°], by 30°'
+    nothing r.h
+    ;;
+  # Tool changes: a TOOL CALL is a change (T and M6 in one block), never a bare T.
+  tool-call-to-siemens)
+    printf '%s\n' '0 BEGIN PGM TC MM' '1 TOOL CALL 9 Z S13000' '2 M128' '3 L X+0 Y+0 Z+50 B+10 C+0 F500' \
+      '4 M129' '5 END PGM TC MM' >tc.h
+    run 0 translate --from dmu-80p --to dmu-80p --to-dialect siemens -o tc.mpf tc.h
+    has_line tc.mpf 'N1 S13000 T9 M6( ;.*)?'
+    has_line tc.mpf 'D1'
+    ;;
+  tool-call-to-iso)
+    printf '%s\n' '0 BEGIN PGM TC MM' '1 TOOL CALL 9 Z S13000' '2 M128' '3 L X+0 Y+0 Z+50 B+10 C+0 F500' \
+      '4 M129' '5 END PGM TC MM' >tc.h
+    run 0 translate --from dmu-80p --to dmu-80p --to-dialect iso -o tc.nc tc.h
+    has_line tc.nc 'N1 S13000 T9 M6( \(.*\))?'
+    ;;
+  load-tool-apt)
+    # APT LOAD/TOOL,4 is a tool change: a TOOL CALL 4 on the TNC.
+    printf '%s\n' 'PARTNO TC' 'UNITS/MM' 'LOAD/TOOL,4' 'SPINDL/RPM,6000,CLW' 'FEDRAT/MMPM,500' \
+      'GOTO/0,0,50,0,0,1' 'GOTO/10,0,50,0,0,1' 'FINI' >tc.apt
+    run 0 post --machine dmu-80p -o tc.h tc.apt
+    has_line tc.h '[0-9]+ TOOL CALL 4 Z'
+    ;;
+  tool-call-heidenhain)
+    # Siemens T/M6 into Heidenhain: TOOL CALL n Z (the tool axis), no separate M6; a change
+    # under TRAORI goes between M129 and M128 (no TOOL CALL while M128 is active).
+    printf '%s\n' 'N10 T1 D1' 'N20 M6' 'N30 TRAORI' 'N40 G1 X0 Y0 Z50 A-30 B10 F500' 'N50 T2 M6' \
+      'N60 G1 X1 Y0 Z50 A-30 B10' 'N70 TRAFOOF' 'N80 M30' >tt.mpf
+    run 0 translate --from sajo-12000p --to dmu-80p -o tt.h tt.mpf
+    has_line tt.h '[0-9]+ TOOL CALL 1 Z'
+    no_line tt.h '.*M6.*'
+    awk '/TOOL CALL 2 Z$/ { if (prev !~ / M129$/) bad = 1; getline; if ($0 !~ / M128$/) bad = 1; seen = 1 }
+         { prev = $0 } END { exit !(seen && !bad) }' tt.h ||
+      { report "TOOL CALL 2 not between M129 and M128"; show tt.h; }
+    ;;
+  # ISO output: G43.4 with its H register; G54 as a code.
+  iso-g43-h)
+    run 0 translate --from sajo-12000p --to dmu-80p --to-dialect iso -o e.nc "$example"
+    has_line e.nc 'N70 G43.4 H1'
+    no_line e.nc '(.* )?G43\.4( [^H].*)?'
+    ;;
+  iso-g54)
+    run 0 translate --from sajo-12000p --to dmu-80p --to-dialect iso -o e.nc "$example"
+    has_line e.nc 'N20 G54'
+    ;;
+  # Cutter radius compensation is refused at the word (a comment would leave the cut off by
+  # the radius).
+  compensation-rl)
+    tnc RL 'X+0 Y+0 Z+50 B+10 C+0 RL F500'
+    run 2 translate --from dmu-80p --to dmu-80p --to-dialect iso -o rl.nc RL.h
+    error_at 'RL.h:4:27: error: RL: cutter radius compensation'
+    nothing rl.nc
+    ;;
+  compensation-g42)
+    printf '%s\n' 'N10 TRAORI' 'N20 G1 G42 X0 Y0 Z50 A-30 B10 F500' 'N30 TRAFOOF' 'N40 M30' >g42.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p --to-dialect iso -o g42.nc g42.mpf
+    error_at 'g42.mpf:2:8: error: G42: cutter radius compensation'
+    nothing g42.nc
+    ;;
+  # A drilling cycle and its M99 calls are refused, never a comment plus an M99 (a subprogram
+  # return on a Fanuc control).
+  cycle-200-m99)
+    printf '%s\n' '0 BEGIN PGM CY MM' '1 TOOL CALL 1 Z S4000' '2 CYCL DEF 200 DRILLING ~' \
+      '  Q200=+2 ;SET-UP CLEARANCE ~' '  Q201=-10 ;DEPTH' '3 L X+10 Y+10 Z+50 B+0 C+0 FMAX M99' \
+      '4 END PGM CY MM' >cy.h
+    run 2 translate --from dmu-80p --to dmu-80p --to-dialect iso -o cy.nc cy.h
+    error_at 'cy.h:3:3: error: CYCL DEF 200'
+    error_at 'cy.h:6:33: error: M99: '
+    nothing cy.nc
+    ;;
+  # A block continued with ~ after a ;comment stays one block: its M3 is on the move's block.
+  continued-after-comment)
+    printf '%s\n' '0 BEGIN PGM TL MM' '1 TOOL CALL 1 Z S4000' '2 M128' '3 L X+0 Y+0 Z+50 B+10 C+0 F500 ;finish ~' \
+      '  M3' '4 L X+1 Y+0 Z+50' '5 M129' '6 END PGM TL MM' >TL.h
+    run 0 translate --from dmu-80p --to dmu-80p --to-dialect siemens -o tl.mpf TL.h
+    has_line tl.mpf 'N3 G1 X0 Y0 Z50 B10 C0 F500 M3 ; finish'
+    no_line tl.mpf '(N[0-9]+ )?M3'
+    ;;
+  # Vendor M codes (the machine maker's meaning) are refused across dialects.
+  m126)
+    tnc M126 'X+0 Y+0 Z+50 B+10 C+0 F500' 'M126'
+    run 2 translate --from dmu-80p --to dmu-80p --to-dialect iso -o m.nc M126.h
+    error_at 'M126.h:5:3: error: M126: '
+    nothing m.nc
+    ;;
+  m13|m117|m429)
+    m=$(echo "$name" | tr m M)
+    printf '%s\n' 'N10 TRAORI' "N20 G1 X0 Y0 Z50 A-30 B10 F500 $m" 'N30 TRAFOOF' 'N40 M30' >m.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p -o m.h m.mpf
+    error_at "m.mpf:2:32: error: $m: an M function of siemens whose meaning is the machine maker's"
+    nothing m.h
+    ;;
+  # post reads CL data only: an NC program is refused, not written as comments.
+  post-nc)
+    run 2 post --machine dmu-80p -o p.h "$example"
+    error_at "$example: error: not APT CL data: it reads as a siemens NC program"
+    nothing p.h
+    printf '%s\n' '%' 'O1000' 'G0 X0 Y0 Z50' 'G1 X10 F500' 'M30' '%' >plain.nc
+    run 2 post --machine dmu-80p -o p.h plain.nc
+    error_at 'plain.nc:2:1: error: APT statement O1000 is not supported'
+    nothing p.h
+    ;;
+  # An empty input is an error.
+  empty-input)
+    : >empty.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p -o e.h empty.mpf
+    error_at 'empty.mpf: error: empty program'
+    nothing e.h
+    ;;
+  # The summary counts what was written: nothing when the write fails.
+  summary-after-failed-write)
+    [ -w /dev/full ] || { echo "no writable /dev/full: row not run"; exit 0; }
+    printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A-30 B10 F500' 'N30 TRAFOOF' 'N40 M30' >s.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p -o /dev/full s.mpf
+    error_at "kin5 translate: cannot write '/dev/full'"
+    grep -q ' 4 written' err && { report "summary counts blocks never written"; show err; }
+    error_at 'kin5 translate: 4 blocks read, 0 written'
+    ;;
+  # Output precision never drops below the source's: 4 decimals in, 4 out.
+  precision)
+    printf '%s\n' 'N10 TRAORI' 'N20 G1 X-34.9834 Y9.1006 Z118.5261 A-77.954 B3.536 F1091' 'N30 TRAFOOF' 'N40 M30' >fine.mpf
+    run 0 translate --from sajo-12000p --to dmu-80p -o fine.h fine.mpf
+    has_line fine.h '[0-9]+ L X\+34\.9834 Y\+118\.5261 Z\+9\.1006 .*'
+    ;;
+  *)
+    echo "silent.sh: unknown row '$name'" >&2
+    exit 2
+    ;;
+esac
+exit "$fail"
