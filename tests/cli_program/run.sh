@@ -378,6 +378,33 @@ case "$name" in
     run 1 translate --from sajo-12000p --to dmu-80p --work-offset-map G54=G53 -o w.h "$example"
     run 1 translate --from sajo-12000p --to dmu-80p --work-offset-map G54=1,G54=2 -o w.h "$example"
     ;;
+  linuxcnc)
+    # tests/programs/linuxcnc/boss_chamfer.ngc, written for LinuxCNC's xyzac-trt sim (tracking by
+    # M428, identity by M429 around the tool change, G43 after each M6), to the DMU 80P and back,
+    # each machine in its own dialect by default. There: M128 / M129 and TOOL CALL, no ISO word.
+    # Back: LinuxCNC's words again (%, M428, M429 before the second M6), and every motion block
+    # at the source's pose: X Y Z within 1e-4 mm, A C within 0.001 deg (C modulo 360).
+    src="$examples/../tests/programs/linuxcnc/boss_chamfer.ngc"
+    run 0 translate --from xyzac-trt --to dmu-80p --work-offset-map G54=1 -o there.h "$src"
+    grep -q ' M128' there.h && grep -q ' M129' there.h && grep -q ' TOOL CALL 3 Z$' there.h &&
+      ! grep -q '^[0-9]* [^;]*\(G43\.4\|M428\)' there.h || { report "not heidenhain tracking"; show there.h; }
+    run 0 translate --from dmu-80p --to xyzac-trt --work-offset-map 1=G54 -o back.ngc there.h
+    grep -q '^%$' back.ngc && grep -q ' G54$' back.ngc && ! grep -q 'G43\.[45]\|G49$' back.ngc ||
+      { report "not LinuxCNC framing and offsets"; show back.ngc; }
+    awk '/^[^(]*M429/ { off = NR } / T3 M6/ { change = NR; before = off } /^[^(]*M428/ { if (change && !on) on = NR }
+         END { exit !(before && on) }' back.ngc ||
+      { report "no M429 before the second M6 and M428 after it"; show back.ngc; }
+    poses() { words "$1" | awk '{ for (i = 1; i <= NF; ++i) { split($i, kv, "="); v[kv[1]] = kv[2] }
+                                 if ($0 ~ /[XYZAC]=/) print v["X"], v["Y"], v["Z"], v["A"], v["C"] }'; }
+    poses "$src" >src.poses
+    poses back.ngc >back.poses
+    [ "$(wc -l <src.poses)" = "$(wc -l <back.poses)" ] && [ "$(wc -l <src.poses)" -gt 20 ] ||
+      { report "motion blocks: $(wc -l <src.poses) in, $(wc -l <back.poses) back"; show back.ngc; }
+    paste -d ' ' src.poses back.poses | while read -r x y z a c bx by bz ba bc; do
+      { near "$x" "$bx" 1e-4 && near "$y" "$by" 1e-4 && near "$z" "$bz" 1e-4 && near "$a" "$ba" 0.001 &&
+        near360 "$c" "$bc" 0.001; } || { echo "pose $x $y $z $a $c came back as $bx $by $bz $ba $bc" >&2; exit 1; }
+    done || report "poses not kept"
+    ;;
   machine-coordinates)
     # A move in machine coordinates means the source machine's own axis positions: refused.
     printf '%s\n' 'N10 G54' 'N20 SUPA G0 Z0' 'N30 TRAORI' 'N40 G1 X0 Y0 Z50 A-45 B30 F500' 'N50 M30' >mc.mpf

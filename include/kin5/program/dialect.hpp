@@ -37,6 +37,7 @@
 #include "dialect_id.hpp"
 #include "heidenhain/dialect.hpp"
 #include "iso/dialect.hpp"
+#include "linuxcnc/dialect.hpp"
 #include "siemens/dialect.hpp"
 
 namespace kin5::program {
@@ -60,7 +61,7 @@ concept nc_dialect = requires(std::string_view text, const std::string& file, re
 };
 
 /// Every dialect, in the order `kin5 --help` lists them.
-using dialects = std::tuple<siemens::dialect, heidenhain::dialect, iso::dialect, apt::dialect>;
+using dialects = std::tuple<siemens::dialect, heidenhain::dialect, iso::dialect, linuxcnc::dialect, apt::dialect>;
 
 /// How many dialects there are.
 inline constexpr std::size_t dialect_count = std::tuple_size_v<dialects>;

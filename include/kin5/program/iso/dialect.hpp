@@ -1,5 +1,5 @@
 /// @file program/iso/dialect.hpp
-/// ISO / Fanuc G code (and LinuxCNC's spelling of it), as an entry of `program::dialects`: the
+/// ISO / Fanuc G code, as an entry of `program::dialects` (LinuxCNC's, program/linuxcnc/, builds on it): the
 /// reader (lexer.hpp → reader.hpp), the writer (writer.hpp), and what the dialect declares of
 /// itself. docs/dialects/iso.md lists every word.
 ///

@@ -62,10 +62,23 @@ struct reader_state {
   bool moved = false;         // a block has moved: the unit is fixed
 };
 
-/// Reads the lines of one program into blocks.
-class reader {
+/// The words a dialect built on this reader reads itself (LinuxCNC: program/linuxcnc/words.hpp).
+/// `line(s, first, end)` may refuse a line before it is lexed; `take(words, b, error)` reads and
+/// removes the words it owns before the rest get their ISO meaning; `check(b, error)` sees each
+/// block read without error. `error(column, message)` reports at a column of the line. ISO owns none.
+struct no_own_words {
+  std::optional<lex_problem> line(std::string_view, std::size_t, std::size_t) { return std::nullopt; }
+  template <class Error>
+  void take(std::vector<word>&, block&, Error&&) {}
+  template <class Error>
+  void check(const block&, Error&&) {}
+};
+
+/// Reads the lines of one program into blocks; `Own` reads the words of a dialect built on ISO.
+template <class Own = no_own_words>
+class basic_reader {
  public:
-  reader(const std::string& file, read_result& result, const block_sink& on_block)
+  basic_reader(const std::string& file, read_result& result, const block_sink& on_block)
       : file_(file), result_(result), on_block_(on_block) {}
 
   void run(std::string_view text) {
@@ -80,6 +93,7 @@ class reader {
   std::size_t line_ = 0;
   bool failed_ = false;
   std::vector<word> words_;  // reused from line to line
+  Own own_;
 
   void error(std::size_t column, std::string message) {
     result_.add_error({{file_, line_, column}, std::move(message)});
@@ -103,8 +117,13 @@ class reader {
       return;
     }
     words_.clear();
-    if (const auto problem = lex_line(s, first, end, words_, b.comment)) error(problem->column, problem->message);
+    auto problem = own_.line(s, first, end);
+    if (!problem) problem = lex_line(s, first, end, words_, b.comment);
+    if (problem) error(problem->column, problem->message);
+    const auto report = [this](std::size_t column, std::string message) { error(column, std::move(message)); };
+    if (!failed_) own_.take(words_, b, report);
     if (!failed_) interpret(b);
+    if (!failed_) own_.check(b, report);
     on_block_(std::move(b));
   }
 
@@ -402,6 +421,9 @@ class reader {
     return a;
   }
 };
+
+/// The ISO reader.
+using reader = basic_reader<>;
 
 }  // namespace kin5::program::iso::detail
 

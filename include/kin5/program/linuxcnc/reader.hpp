@@ -1,0 +1,220 @@
+/// @file program/linuxcnc/reader.hpp
+/// The LinuxCNC (RS274NGC) reader: ISO's reader (iso/reader.hpp) with the words LinuxCNC reads
+/// otherwise (`own_words`), read first. Where the grammar is ISO's (G0–G3, G17–G19, G20/G21,
+/// G90, G93/G94, T, M6, M3–M5, M7–M9, M0/M1, M2/M30, `( … )` and `;` comments, `%`) the ISO
+/// reader reads it. LinuxCNC's own:
+/// | words | read as |
+/// |---|---|
+/// | `M428`, `G12.1 P1` | tool-tip tracking on (the TCP kinematics of the 5-axis trt configurations) |
+/// | `M429`, `G13.1` | tracking off (identity kinematics) |
+/// | `G43` (the loaded tool), `G43 H n` (tool n's table entry), `G49` | `state.length_compensation`, `length_register` |
+/// | `G54` … `G59`, `G59.1` … `G59.3` | `state.work_offset` 1 … 9 |
+/// | `G64 P… Q…`, `G91.1` | kept words (path blending tolerance, incremental arc centres: the default) |
+/// Refused at the word: `M430`, `G12.1` with another type, a kinematics switch on a line with
+/// motion or M6, `G43.1`/`G43.2`, ISO codes LinuxCNC does not have (`G43.4`, `G43.5`, `G54.1`,
+/// `G50`), splines `G5`–`G5.3`, `G90.1`, `M61`, `H` without G43, `D` without G41/G42, `G4`
+/// with axis words or without P, o-words (lexer.hpp); under tracking, a move while G43 does not
+/// hold the loaded tool's length (the point programmed would not be the tool tip).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "../block.hpp"
+#include "../iso/reader.hpp"
+#include "../iso/vocabulary.hpp"
+#include "../lexing.hpp"
+#include "../modal.hpp"
+#include "../transmission.hpp"
+#include "lexer.hpp"
+
+namespace kin5::program::linuxcnc::detail {
+
+using iso::detail::g_code;
+
+/// The words of one line that give other words their meaning.
+struct line_words {
+  const word* g43 = nullptr;    ///< G43 (or a refused G43.n): H is its tool
+  const word* g12_1 = nullptr;  ///< G12.1: P is the kinematics type
+  const word* p = nullptr;      ///< P of G12.1
+  const word* g4 = nullptr;     ///< G4: P is the dwell (seconds); no axis words
+  const word* offset = nullptr; ///< the work-offset word
+  const word* tcp = nullptr;    ///< the kinematics switch (M428, M429, G12.1, G13.1)
+  const word* axis = nullptr;   ///< the first axis word
+  bool g64 = false, radius = false, m6 = false, dwell_p = false;
+};
+
+/// The G name of a G code times ten: 430 → "G43", 591 → "G59.1".
+inline std::string g_name(int g) {
+  return "G" + std::to_string(g / 10) + (g % 10 ? "." + std::to_string(g % 10) : "");
+}
+
+/// The words LinuxCNC reads otherwise than ISO (see the file comment), and the modal record the
+/// tracking check needs: the tool selected and loaded, whether G43 holds the loaded tool's
+/// length, whether tracking is on.
+class own_words {
+ public:
+  std::optional<lex_problem> line(std::string_view s, std::size_t first, std::size_t end) { return o_word(s, first, end); }
+
+  /// Reads and removes from `words` the words LinuxCNC reads itself.
+  template <class Error>
+  void take(std::vector<word>& words, block& b, Error&& error) {
+    line_words l;
+    for (const word& w : words) classify(w, l);
+    std::vector<word> rest;
+    for (const word& w : words)
+      if (!own(w, b, l, error)) rest.push_back(w);
+    finish(b, l, error);
+    words = std::move(rest);
+  }
+
+  /// Follows tools, G43 and tracking; refuses a tracked move without the loaded tool's length.
+  template <class Error>
+  void check(const block& b, Error&& error) {
+    if (b.tool) selected_ = *b.tool;
+    for (int m : b.m_codes)
+      if (m == 6) loaded_ = selected_, length_of_loaded_ = false, refused_ = false;
+    if (const auto& on = b.state.length_compensation) {
+      const auto& h = b.state.length_register;
+      length_of_loaded_ = *on && (!h || (loaded_ && *h == *loaded_));
+      refused_ = false;
+    }
+    if (b.tcp) tracking_ = *b.tcp, refused_ = false;
+    if (!tracking_ || length_of_loaded_ || !is_motion(b) || refused_) return;
+    refused_ = true;  // once until G43, M6 or a switch
+    error(b.where.column, "a move under TCP kinematics without G43 for the loaded tool: the point programmed is not "
+                          "the tool tip (G43, or G43 H n with the loaded tool n, after each M6)");
+  }
+
+ private:
+  std::optional<long long> selected_, loaded_;
+  bool length_of_loaded_ = false, tracking_ = false, refused_ = false;
+
+  static void classify(const word& w, line_words& l) {
+    if (std::string_view("XYZABC").find(w.letter) != std::string_view::npos && !l.axis) l.axis = &w;
+    if (w.letter == 'M' && w.value == 6) l.m6 = true;
+    if (w.letter != 'G') return;
+    const int g = g_code(w.value);
+    if (g == 430 || g == 431 || g == 432 || g == 434 || g == 435) l.g43 = &w;
+    if (g == 121) l.g12_1 = &w;
+    if (g == 40) l.g4 = &w;
+    if (g == 640) l.g64 = true;
+    if (g == 410 || g == 420) l.radius = true;
+  }
+
+  /// Whether word `w` is LinuxCNC's own (read into `b`, or refused); false leaves it to ISO.
+  template <class Error>
+  bool own(const word& w, block& b, line_words& l, Error&& error) {
+    switch (w.letter) {
+      case 'G': return g_word(w, b, l, error);
+      case 'M': return m_word(w, b, l, error);
+      case 'H':
+        if (!l.g43) return error(w.column, "word 'H' without G43 (H is the tool whose length G43 applies)"), true;
+        if (g_code(l.g43->value) != 430) return true;  // the refused G43.n's
+        if (!lexing::is_whole(w.value)) return error(w.column, "G43 H: the tool number must be a whole number"), true;
+        b.state.length_register = static_cast<long long>(w.value);
+        return true;
+      case 'P':
+        if (l.g12_1) return l.p = &w, true;
+        if (l.g4) l.dwell_p = true;
+        if (!l.g64) return false;
+        b.kept_words.emplace_back(w.text);
+        return true;
+      case 'Q':
+        if (!l.g64) return false;
+        b.kept_words.emplace_back(w.text);
+        return true;
+      case 'D':
+        if (l.radius) return false;
+        return error(w.column, "word 'D' without G41 or G42 (D is the tool whose radius they apply)"), true;
+      case 'O': return error(w.column, "word 'O' inside a line: o-words start a line"), true;
+      default: return false;
+    }
+  }
+
+  template <class Error>
+  bool g_word(const word& w, block& b, line_words& l, Error&& error) {
+    const int g = g_code(w.value);
+    switch (g) {
+      case 430: b.state.length_compensation = true; return true;
+      case 490: b.state.length_compensation = false; return true;
+      case 431: case 432:
+        return error(w.column, g_name(g) + ": a tool length offset other than the tool table's is not supported"), true;
+      case 434: case 435: case 541: case 500: case 501:
+        return error(w.column, g_name(g) + " is not a LinuxCNC G code" + not_linuxcnc_hint(g)), true;
+      case 50: case 51: case 52: case 53:
+        return error(w.column, g_name(g) + ": spline and NURBS moves are not supported"), true;
+      case 901: return error(w.column, "G90.1: absolute arc centres are not supported"), true;
+      case 911: b.kept_words.emplace_back(w.text); return true;
+      case 121: return switch_tcp(w, b, l, true, error), true;
+      case 131: return switch_tcp(w, b, l, false, error), true;
+      default: break;
+    }
+    const int n = (g >= 540 && g <= 590 && g % 10 == 0) ? g / 10 - 53 : (g >= 591 && g <= 593) ? g - 584 : 0;
+    if (n == 0) return false;
+    if (l.offset) return error(w.column, "two work offsets in one block"), true;
+    l.offset = &w;
+    b.state.work_offset = work_offset{work_offset_family::g54, n};
+    return true;
+  }
+
+  static std::string not_linuxcnc_hint(int g) {
+    if (g == 434 || g == 435) return " (tool-tip tracking is M428 or G12.1 there)";
+    if (g == 541) return " (its work offsets are G54 … G59.3)";
+    return "";
+  }
+
+  template <class Error>
+  bool m_word(const word& w, block& b, line_words& l, Error&& error) {
+    if (!lexing::is_whole(w.value)) return false;
+    const int m = static_cast<int>(w.value);
+    if (m == 428 || m == 429) return switch_tcp(w, b, l, m == 428, error), true;
+    if (m == 430) return error(w.column, "M430: the user kinematics of the 5-axis configurations are not supported"), true;
+    if (m == 61) return error(w.column, "M61: setting the loaded tool without a tool change is not supported"), true;
+    return false;
+  }
+
+  template <class Error>
+  static void switch_tcp(const word& w, block& b, line_words& l, bool on, Error&& error) {
+    if (l.tcp) return error(w.column, "two kinematics switches in one block");
+    l.tcp = &w;
+    if (l.axis || l.m6)
+      return error(w.column, std::string(w.text) + " on a line with " + (l.axis ? "motion" : "M6") +
+                                 ": a kinematics switch goes on a line of its own");
+    if (w.letter == 'M' || !on) b.tcp = on;  // G12.1: once its P is known
+  }
+
+  /// What the words of the line say together: G12.1's type, G4's P.
+  template <class Error>
+  static void finish(block& b, const line_words& l, Error&& error) {
+    if (l.g12_1 && l.tcp == l.g12_1) {
+      if (!l.p) error(l.g12_1->column, "G12.1 needs P, the kinematics type");
+      else if (l.p->value != 1)
+        error(l.p->column, "G12.1 " + std::string(l.p->text) +
+                               ": only type 1, the TCP kinematics of the 5-axis trt configurations, is read");
+      else b.tcp = true;
+    }
+    if (!l.g4) return;
+    if (l.axis) error(l.axis->column, std::string("word '") + l.axis->letter + "' in a dwell block (G4 takes P, seconds)");
+    else if (!l.dwell_p) error(l.g4->column, "G4 needs P, the dwell in seconds");
+  }
+};
+
+}  // namespace kin5::program::linuxcnc::detail
+
+namespace kin5::program::linuxcnc {
+
+/// Reads LinuxCNC G code block by block: `on_block` receives each block in file order as soon as
+/// it is read; errors and warnings go to `diagnostics` (its `parsed` is not touched).
+inline void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
+                        const block_sink& on_block) {
+  read_transmitted(text, file_name, diagnostics, on_block, [&](std::string_view body, const block_sink& sink) {
+    iso::detail::basic_reader<detail::own_words>(file_name, diagnostics, sink).run(body);
+  });
+}
+
+}  // namespace kin5::program::linuxcnc

@@ -1,0 +1,164 @@
+/// @file program/linuxcnc/writer.hpp
+/// Blocks written as LinuxCNC G code: the ISO writer (iso/writer.hpp) writes each block's line,
+/// and this one writes what LinuxCNC spells otherwise, in front of it: tool-tip tracking as
+/// `M428` / `M429` (the remaps of the 5-axis trt configurations), tool length as `G43` [`H n`] /
+/// `G49`, work offsets 1 … 9 as `G54` … `G59.3`, a program name as a comment. A program read in
+/// another dialect is framed by `%` lines (the second after its end) and gets around each tool
+/// change what tracking needs there: `M429` before the `M6`, `G43` and `M428` after; tracking
+/// switched on gets a `G43` first when the loaded tool's length is not in effect. A tool-axis
+/// vector (LinuxCNC has no G43.5) and a work offset LinuxCNC does not select throw
+/// `std::invalid_argument` naming the block's `file:line`.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "../block.hpp"
+#include "../dialect_id.hpp"
+#include "../iso/writer.hpp"
+#include "../text.hpp"
+#include "../work_offsets.hpp"
+
+namespace kin5::program::iso {
+struct dialect;
+}
+
+namespace kin5::program::linuxcnc {
+
+struct dialect;  // this folder's entry of `program::dialects` (dialect.hpp)
+
+/// Decimals written for each kind of number: as ISO's (`iso::write_options`).
+struct write_options : iso::write_options {};
+
+/// Writes blocks as LinuxCNC G code one at a time (see the file comment), in constant memory.
+class writer {
+ public:
+  /// A writer for blocks read from `source`: the ISO writer writes LinuxCNC's own kept words and
+  /// `%` lines back as they are, another dialect's as comments.
+  explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
+      : same_(source == id_of<dialect>()),
+        iso_(same_ ? id_of<iso::dialect>() : id_of<dialect>(), std::move(file), chosen) {}
+
+  /// Appends the lines of block `b` to `out`; throws `std::invalid_argument` naming the block
+  /// when LinuxCNC cannot say it.
+  void write(std::string& out, const block& b) {
+    if (!same_ && !opened_) out += "%\n", opened_ = true;
+    if (b.passthrough) return iso_.write(out, b);
+    if (b.axes.tool_axis) fail(b, "a tool-axis vector (LinuxCNC has no G43.5; its trt kinematics take A, B, C words)");
+    std::vector<std::string> own;
+    std::string before, after;
+    if (b.tool) selected_ = *b.tool;
+    tool_change(b, before, after);  // M6 runs before G43 of the same line (its order of execution)
+    own_words(b, own);
+    tracking(b, own, before);
+    std::string line;
+    iso_line(line, b);
+    out += before + with_words(line, own) + after;
+    if (!same_ && b.program_end && !closed_) out += "%\n", closed_ = true;
+  }
+
+ private:
+  bool same_;  // the blocks were read as LinuxCNC
+  iso::writer iso_;
+  bool opened_ = false, closed_ = false;  // the `%` lines written (another dialect's program)
+  bool tracking_ = false;                 // M428 in effect after the last block
+  bool length_of_loaded_ = false;         // G43 holds the loaded tool's length
+  std::optional<long long> selected_, loaded_;
+
+  [[noreturn]] static void fail(const block& b, const std::string& why) {
+    throw std::invalid_argument(b.where.file + ":" + std::to_string(b.where.line) +
+                                ": block cannot be written in LinuxCNC: " + why);
+  }
+
+  /// Work offset, G43 [H n] / G49: LinuxCNC Manual, "G-Codes", G54–G59.3 and G43, G49.
+  void own_words(const block& b, std::vector<std::string>& own) {
+    if (const auto& w = b.state.work_offset) {
+      if (w->family != work_offset_family::g54 || w->number < 1 || w->number > 9)
+        fail(b, "work offset " + spelling(*w) + " has no LinuxCNC form (G54 … G59.3; --work-offset-map names one)");
+      own.push_back(spelling(*w));
+    }
+    if (const auto& on = b.state.length_compensation) {
+      own.push_back(*on ? "G43" : "G49");
+      const auto& h = b.state.length_register;
+      if (*on && h) own.push_back("H" + std::to_string(*h));
+      length_of_loaded_ = *on && (!h || (loaded_ && *h == *loaded_));
+    }
+  }
+
+  static bool changes_tool(const block& b) { return std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end(); }
+
+  /// Another dialect's tool change under tracking: identity kinematics for the change (M429),
+  /// then the new tool's length and tracking again.
+  void tool_change(const block& b, std::string& before, std::string& after) {
+    if (!changes_tool(b)) return;
+    loaded_ = selected_;
+    length_of_loaded_ = false;
+    if (same_ || !tracking_ || b.tcp) return;
+    before += "M429\n";
+    after += "G43\nM428\n";
+    length_of_loaded_ = true;
+  }
+
+  /// M428 / M429: in the block's line, or on a line of their own before a block that moves or
+  /// changes the tool (the reader refuses a switch on such a line).
+  void tracking(const block& b, std::vector<std::string>& own, std::string& before) {
+    if (!b.tcp) return;
+    const std::string word = *b.tcp ? "M428" : "M429";
+    if (*b.tcp && !same_ && !length_of_loaded_) before += "G43\n", length_of_loaded_ = true;
+    if (b.moves() || changes_tool(b)) before += word + "\n";
+    else own.push_back(word);
+    tracking_ = *b.tcp;
+  }
+
+  /// The ISO writer's line of `b` without what this writer writes itself.
+  void iso_line(std::string& line, const block& b) {
+    block rest = b;
+    rest.tcp.reset();
+    rest.state.work_offset.reset();
+    rest.state.length_compensation.reset();
+    rest.state.length_register.reset();
+    if (b.program_begin) rest.comment = "PROGRAM " + *b.program_begin + (b.comment ? " " + *b.comment : "");
+    rest.program_begin.reset();
+    try {
+      iso_.write(line, rest);
+    } catch (const std::invalid_argument& e) {
+      std::string why = e.what();
+      const std::string iso = "cannot be written in ISO";
+      if (const auto at = why.find(iso); at != std::string::npos) why.replace(at, iso.size(), "cannot be written in LinuxCNC");
+      throw std::invalid_argument(why);
+    }
+  }
+
+  /// `line` with `own` words after its block number (the ISO writer writes one line).
+  static std::string with_words(const std::string& line, const std::vector<std::string>& own) {
+    if (own.empty()) return line;
+    std::string words;
+    for (const std::string& w : own) words += (words.empty() ? "" : " ") + w;
+    std::size_t at = 0;
+    if (!line.empty() && line[0] == 'N') {
+      at = 1;
+      while (at < line.size() && is_digit(line[at])) ++at;
+      if (at < line.size() && line[at] == ' ') ++at;
+    }
+    const bool more = at < line.size() && line[at] != '\n';
+    std::string out = line.substr(0, at);
+    if (at > 0 && out.back() != ' ') out += ' ';
+    return out + words + (more ? " " : "") + line.substr(at);
+  }
+};
+
+/// Writes `p` as LinuxCNC G code (see the file comment).
+inline std::string write(const program& p, const write_options& options = {}) {
+  writer w(p.language, p.file, options);
+  std::string out;
+  for (const block& b : p.blocks) w.write(out, b);
+  return out;
+}
+
+}  // namespace kin5::program::linuxcnc

@@ -1,0 +1,130 @@
+// LinuxCNC habits on small hand-written programs, with hand-derived expectations: what its
+// 5-axis configurations and CAM posts for them write.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include <kin5/program/io.hpp>
+#include <kin5/program/linuxcnc/dialect.hpp>
+
+using namespace kin5::program;
+
+namespace {
+using strings = std::vector<std::string>;
+}
+
+TEST_CASE("linuxcnc: a trt program: M428/M429, G43 without H, G59.1, G93, G4 P in seconds") {
+  const std::string text =
+      "%\n"
+      "(MSG, load the fixture)\n"
+      "g21 g17 g90 g40 g94 g64 p0.01 g91.1\n"
+      "G59.1\n"
+      "T7 M6\n"
+      "G43\n"
+      "S9000 M3 M8 M7\n"
+      "M428 ; tcp kinematics\n"
+      "G0 X1.5 Y-2 Z40 A-10 C20\n"
+      "G93\n"
+      "G1 X2 Z-.25 A-12 C25 F96.5\n"
+      "G94\n"
+      "G4 P1.5\n"
+      "M429\n"
+      "G49\n"
+      "G12.1 P1\n"
+      "G13.1\n"
+      "M2\n"
+      "%\n";
+  const read_result r = linuxcnc::read(text, "l.ngc");
+  REQUIRE(r.errors.empty());
+  const auto& b = r.parsed.blocks;
+  REQUIRE(b.size() == 19);
+  CHECK(b[0].passthrough);
+  CHECK(b[1].comment == "MSG, load the fixture");
+  CHECK(b[2].kept_words == strings{"g91.1", "g17", "g90", "g40", "g64", "p0.01"});
+  CHECK(b[2].metric == true);
+  CHECK(b[3].state.work_offset == work_offset{work_offset_family::g54, 7});
+  CHECK((b[4].tool == 7 && b[4].m_codes == std::vector<int>{6}));
+  CHECK((b[5].state.length_compensation == true && !b[5].state.length_register));
+  CHECK(b[6].m_codes == std::vector<int>{3, 8, 7});
+  CHECK((b[7].tcp == true && b[7].comment == "tcp kinematics" && b[7].m_codes.empty()));
+  CHECK((b[8].motion == motion_kind::rapid && b[8].axes.a_deg == -10.0 && b[8].axes.c_deg == 20.0));
+  CHECK(b[9].feed_mode == feed_unit::inverse_time);
+  CHECK((b[10].feed == 96.5 && b[10].axes.z_mm == -0.25));
+  CHECK(b[12].kept_words == strings{"G4", "P1.5"});
+  CHECK(b[13].tcp == false);
+  CHECK((b[14].state.length_compensation == false && !b[14].tcp));
+  CHECK(b[15].tcp == true);
+  CHECK(b[16].tcp == false);
+  CHECK(b[17].program_end == "M2");
+}
+
+TEST_CASE("linuxcnc: G43 H n holds the loaded tool n; M6 in a line runs before its G43") {
+  const read_result ok = linuxcnc::read("T3 M6 G43 H3\nM428\nG1 X1 A2 F100\n", "l.ngc");
+  CHECK(ok.errors.empty());
+  CHECK(ok.parsed.blocks[0].state.length_register == 3);
+  const read_result other = linuxcnc::read("T3 M6 G43 H4\nM428\nG1 X1 A2 F100\nG1 X2\n", "l.ngc");
+  REQUIRE(other.errors.size() == 1);  // once, at the first move
+  CHECK(other.errors[0].where.line == 3);
+}
+
+TEST_CASE("linuxcnc: the writer spells tracking, length and offsets its own way") {
+  const read_result r = linuxcnc::read("N5 G59.3 T2 M6 G43 H2\nM428\nG1 X1 Y2 Z3 B4 F500\nM429 G49\n", "l.ngc");
+  REQUIRE(r.errors.empty());
+  CHECK(linuxcnc::write(r.parsed) ==
+        "N5 G59.3 G43 H2 T2 M6\n"
+        "M428\n"
+        "G1 X1 Y2 Z3 B4 F500\n"
+        "G49 M429\n");
+}
+
+TEST_CASE("linuxcnc: another dialect's program gets % lines, G43 before tracking, M429 around its tool changes") {
+  const read_result iso_in = read(*parse_dialect("iso"),
+                                  "%\nO12\nT1 M6\nG43.4 H1\nG1 X1 Y2 Z3 B4 C5 F500\nT2 M6\nG1 X2\nG49\nM30\n%\n", "i.nc");
+  REQUIRE(iso_in.errors.empty());
+  const std::string out = write(*parse_dialect("linuxcnc"), iso_in.parsed);
+  CHECK(out ==
+        "%\n"
+        "(%)\n"
+        "(PROGRAM 12)\n"
+        "T1 M6\n"
+        "G43\n"
+        "M428 (H1)\n"
+        "G1 X1 Y2 Z3 B4 C5 F500\n"
+        "M429\n"
+        "T2 M6\n"
+        "G43\n"
+        "M428\n"
+        "G1 X2\n"
+        "M429 (G49)\n"
+        "M30\n"
+        "%\n"
+        "(%)\n");
+  const read_result back = linuxcnc::read(out, "back.ngc");
+  CHECK(back.errors.empty());
+}
+
+TEST_CASE("linuxcnc: what LinuxCNC cannot say is refused, naming the block") {
+  program p;
+  p.language = id_of<iso::dialect>();
+  p.file = "i.nc";
+  block vector_move;
+  vector_move.where = {"i.nc", 4, 1};
+  vector_move.motion = motion_kind::linear;
+  vector_move.axes.tool_axis = kin5::vec3{0, 0, 1};
+  p.blocks = {vector_move};
+  CHECK_THROWS_WITH(linuxcnc::write(p), "i.nc:4: block cannot be written in LinuxCNC: a tool-axis vector (LinuxCNC has "
+                                        "no G43.5; its trt kinematics take A, B, C words)");
+  block extended;
+  extended.where = {"i.nc", 6, 1};
+  extended.state.work_offset = work_offset{work_offset_family::extended, 3};
+  p.blocks = {extended};
+  CHECK_THROWS_WITH(linuxcnc::write(p), "i.nc:6: block cannot be written in LinuxCNC: work offset G54.1 P3 has no "
+                                        "LinuxCNC form (G54 … G59.3; --work-offset-map names one)");
+}
+
+TEST_CASE("linuxcnc: markers: M428 names LinuxCNC, the ISO G43.4 does not") {
+  CHECK(guess_dialect("G43\nM428\n") == id_of<linuxcnc::dialect>());
+  CHECK(guess_dialect("G43.4 H1\n") == id_of<iso::dialect>());
+}
