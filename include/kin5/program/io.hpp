@@ -71,6 +71,9 @@ struct writer_of<std::tuple<D...>> {
 /// own defaults; only the written dialect's are used. `settings.of<siemens::dialect>()` is one.
 struct write_settings {
   typename detail::write_options_of<dialects>::type options{};
+  /// The program's unit when known ahead (`program_unit`, units.hpp), for writers whose dialect
+  /// states it once at the top (their `write_options::program_metric`).
+  std::optional<bool> program_metric;
 
   template <class D>
   typename D::write_options& of() {
@@ -111,7 +114,9 @@ class block_writer {
     return visit_dialect(
         d,
         [&]<class D>(std::type_identity<D>) {
-          return any_writer(std::in_place_type<typename D::writer>, source, std::move(file), settings.of<D>());
+          typename D::write_options o = settings.of<D>();
+          if constexpr (requires { o.program_metric; }) o.program_metric = settings.program_metric;
+          return any_writer(std::in_place_type<typename D::writer>, source, std::move(file), o);
         },
         []() -> any_writer { throw std::invalid_argument("block_writer: no such dialect"); });
   }

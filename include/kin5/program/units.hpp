@@ -37,4 +37,17 @@ inline void mm_to_inches(block& b, bool per_minute) {
   detail::each_length(b, per_minute, [](double v) { return v / mm_per_inch; });
 }
 
+/// The unit a program states before its first move (the `metric` of the first block that says
+/// one), taken block by block: what a dialect that states its unit once at the top (Heidenhain's
+/// `BEGIN PGM … MM|INCH`) writes there when the source says it a few blocks later (`G700`).
+struct program_unit {
+  std::optional<bool> metric;  ///< empty: no unit said before the first move
+  bool moved = false;
+
+  void take(const block& b) {
+    if (!metric && !moved && b.metric) metric = b.metric;
+    moved = moved || b.moves();
+  }
+};
+
 }  // namespace kin5::program

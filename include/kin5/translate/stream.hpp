@@ -33,6 +33,7 @@
 #include <string_view>
 
 #include "../program/address_words.hpp"
+#include "../program/units.hpp"
 #include "../program/block.hpp"
 #include "../program/block_store.hpp"
 #include "../program/io.hpp"
@@ -102,8 +103,10 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
   program::block_store records(file);
   bool says_something = false;  // a block with more than blanks
   std::size_t moving = 0, not_understood = 0;
+  program::program_unit unit;  // for writers that state the unit at the top
   read(run.input, [&](program::block&& b) {
     says_something = says_something || !blank(b);
+    unit.take(b);
     moving += b.moves() ? 1 : 0;
     not_understood += b.passthrough ? 1 : 0;
     t.plan(b);
@@ -116,8 +119,9 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
     run.input.errors.push_back(translate_detail::file_error(file, not_cl_data(not_understood)));
   if (!run.input.ok()) return run;
 
-  program::block_writer writer(output_language, source_language, file,
-                               write_settings_for(output_language, t.result().output_decimals));
+  program::write_settings settings = write_settings_for(output_language, t.result().output_decimals);
+  settings.program_metric = unit.metric;
+  program::block_writer writer(output_language, source_language, file, settings);
   const program::block_sink emit = [&](program::block&& o) {
     if (run.writer_error || run.sink_failed || !t.result().ok()) return;
     try {

@@ -86,3 +86,95 @@ TEST_CASE("units: a unit change after motion is refused at the unit word") {
         std::vector<std::string>{"t:3:1: error: G20 after motion: a unit change inside a program is not supported"});
   CHECK(errors_of(id_of<iso::dialect>(), "G20\nG1 X1. F10.\nG20 X2.\n").empty());
 }
+
+TEST_CASE("units: Siemens G700 and G70 blocks are read in millimetres, F only under G700") {
+  const std::string text =
+      "%_N_P_MPF\nN10 G700 G17\nN20 G0 X1.2345 Y-.5 Z2\nN30 G1 X2 F9.8\nN40 G2 X3 Y-.5 I.5 J0 F10\n"
+      "N50 G93 G1 X4 F2.5\nN60 G94 G70 X5\nN70 G710 X25.4 F254\nN80 G70 CR=1 G3 X6 Y-.5\nM30\n";
+  const read_result r = read(id_of<siemens::dialect>(), text, "t");
+  REQUIRE(r.ok());
+  const auto& b = r.parsed.blocks;
+  REQUIRE(b.size() == 10);
+  CHECK(b[1].metric == false);
+  CHECK(near(b[2].axes.x_mm, 31.3563));
+  CHECK(near(b[2].axes.y_mm, -12.7));
+  CHECK(near(b[2].axes.z_mm, 50.8));
+  CHECK(near(b[3].feed, 248.92));
+  REQUIRE((b[4].arc && b[4].arc->centre_mm));
+  CHECK((near(b[4].arc->centre_mm->x, 63.5) && near(b[4].arc->centre_mm->y, -12.7) && near(b[4].arc->centre_mm->z, 50.8)));
+  CHECK(near(b[4].feed, 254.0));
+  CHECK(near(b[5].feed, 2.5));  // inverse time: 1/min, not a length
+  CHECK(near(b[5].axes.x_mm, 101.6));
+  CHECK(b[6].metric == false);  // G70: lengths in inches
+  CHECK(near(b[6].axes.x_mm, 127.0));
+  CHECK(b[7].metric == true);
+  CHECK(near(b[7].axes.x_mm, 25.4));
+  CHECK(near(b[7].feed, 254.0));
+  REQUIRE((b[8].arc && b[8].arc->radius_mm));
+  CHECK(near(*b[8].arc->radius_mm, 25.4));  // G70 applies to its own block, written after CR=
+  CHECK(near(b[8].axes.x_mm, 152.4));
+  // Written back with the forms that also set F's unit: G700 for G70, G710 for G71.
+  round_trip(id_of<siemens::dialect>(), text, id_of<siemens::dialect>(),
+             "%_N_P_MPF\nN10 G700 G17\nN20 G0 X1.2345 Y-0.5 Z2\nN30 G1 X2 F9.8\nN40 G2 X3 Y-0.5 I0.5 J0 F10\n"
+             "N50 G93 G1 X4 F2.5\nN60 G700 G94 X5\nN70 G710 X25.4 F254\nN80 G700 G3 X6 Y-0.5 CR=1\nM30\n");
+}
+
+TEST_CASE("units: a Siemens F under G70 is refused: it is in the control's basic system") {
+  const std::string why = "F under G70 is in the control's basic unit system, which the program does not say "
+                          "(G700 gives F in inch/min)";
+  CHECK(errors_of(id_of<siemens::dialect>(), "G70\nG1 X1 F10\n") == std::vector<std::string>{"t:2:7: error: " + why});
+  CHECK(errors_of(id_of<siemens::dialect>(), "G1 F10 G70 X1\n") == std::vector<std::string>{"t:1:4: error: " + why});
+  CHECK(errors_of(id_of<siemens::dialect>(), "G70\nG93 G1 X1 F2\n").empty());  // inverse time: no unit
+  CHECK(errors_of(id_of<siemens::dialect>(), "G700\nG1 X1 F10\nG70 X2\n").empty());
+}
+
+TEST_CASE("units: Heidenhain INCH programs are read in millimetres, F in 1/10 inch/min") {
+  const std::string text =
+      "0 BEGIN PGM P INCH\n1 TOOL CALL 5 Z S6000 F20\n2 L X+1.2345 Y-0.5 Z+2 R0 FMAX\n3 L X+2 F98\n"
+      "4 CC X+2.5 Y-0.5\n5 C X+3 Y-0.5 DR- F100\n6 CR X+4 Y-0.5 R+0.5 DR+\n7 END PGM P INCH\n";
+  const read_result r = read(id_of<heidenhain::dialect>(), text, "t");
+  REQUIRE(r.ok());
+  const auto& b = r.parsed.blocks;
+  REQUIRE(b.size() == 8);
+  CHECK(b[0].metric == false);
+  CHECK(near(b[1].feed, 50.8));
+  CHECK(near(b[2].axes.x_mm, 31.3563));
+  CHECK(near(b[2].axes.y_mm, -12.7));
+  CHECK(near(b[2].axes.z_mm, 50.8));
+  CHECK(near(b[3].feed, 248.92));  // F98 = 9.8 inch/min
+  REQUIRE((b[5].arc && b[5].arc->centre_mm));
+  CHECK((near(b[5].arc->centre_mm->x, 63.5) && near(b[5].arc->centre_mm->y, -12.7) && near(b[5].arc->centre_mm->z, 50.8)));
+  CHECK(near(b[5].feed, 254.0));
+  REQUIRE((b[6].arc && b[6].arc->radius_mm));
+  CHECK(near(*b[6].arc->radius_mm, 12.7));
+  round_trip(id_of<heidenhain::dialect>(), text, id_of<heidenhain::dialect>(),
+             "0 BEGIN PGM P INCH\n1 TOOL CALL 5 Z S6000 F20\n2 L X+1.2345 Y-0.5 Z+2 R0 FMAX\n3 L X+2 F98\n"
+             "4 CC X+2.5 Y-0.5\n5 C X+3 Y-0.5 DR- F100\n6 CR X+4 Y-0.5 R+0.5 DR+\n7 END PGM P INCH\n");
+  CHECK(errors_of(id_of<heidenhain::dialect>(), "BEGIN PGM P INCH\nEND PGM P MM\n") ==
+        std::vector<std::string>{"t:2:11: error: END PGM unit MM differs from BEGIN PGM's INCH"});
+}
+
+TEST_CASE("units: inch programs between dialects keep their inch values") {
+  // Heidenhain INCH → ISO G20: F98 (1/10 inch/min) is F9.8 inch/min.
+  round_trip(id_of<heidenhain::dialect>(), "0 BEGIN PGM P INCH\n1 L X+1.2345 Y-0.5 Z+2 F98\n2 END PGM P INCH\n",
+             id_of<iso::dialect>(), "N0 G20 (program P)\nN1 G1 X1.2345 Y-0.5 Z2 F9.8\nN2 G20 M30\n");
+  round_trip(id_of<iso::dialect>(), "G20\nG1 X1.2345 Y2. Z3. F10.\n", id_of<siemens::dialect>(),
+             "G700\nG1 X1.2345 Y2 Z3 F10\n");
+  // The unit Siemens states after its header is the BEGIN PGM's (program_unit).
+  round_trip(id_of<siemens::dialect>(), "%_N_P_MPF\nG700\nG1 X1.2345 Y2 Z3 F10\nM30\n", id_of<heidenhain::dialect>(),
+             "0 BEGIN PGM P INCH\n1 ;G700\n2 L X+1.2345 Y+2 Z+3 F100\n3 END PGM P INCH\n");
+}
+
+TEST_CASE("units: a unit Heidenhain cannot say is refused by its writer") {
+  // An inch block without BEGIN PGM … INCH before it, and a unit change after BEGIN PGM.
+  const read_result iso_inch = read(id_of<iso::dialect>(), "G20\nG1 X1. F10.\n", "t");
+  REQUIRE(iso_inch.ok());
+  CHECK_THROWS_WITH(write(id_of<heidenhain::dialect>(), iso_inch.parsed),
+                    "t:1: block cannot be written in heidenhain: inch units: a TNC program says INCH in its BEGIN "
+                    "PGM line, and this program has none");
+  const read_result switched = read(id_of<siemens::dialect>(), "%_N_P_MPF\nG710\nG1 X1 F10\nG700 X2\nM30\n", "t");
+  REQUIRE(switched.ok());
+  CHECK_THROWS_WITH(write(id_of<heidenhain::dialect>(), switched.parsed),
+                    "t:4: block cannot be written in heidenhain: a change of units to inch inside the program: a "
+                    "TNC program has one unit, its BEGIN PGM's (MM)");
+}

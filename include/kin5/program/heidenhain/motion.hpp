@@ -15,19 +15,27 @@
 
 #include "../block.hpp"
 #include "../number.hpp"
+#include "../units.hpp"
 #include "lexer.hpp"
 #include "parameters.hpp"
 
 namespace kin5::program::heidenhain::detail {
 
 /// What the reader carries from block to block: the last position (for CC's missing axes), the
-/// working plane, the last circle centre, the program's name (for END PGM), the Q parameters.
+/// working plane, the last circle centre, the program's name and unit (for END PGM), the Q
+/// parameters.
 struct reader_state {
   std::optional<double> last[3];
   q_parameters q;
   arc_plane plane = arc_plane::xy;
   std::optional<vec3> centre;
   std::optional<std::string> begin_name;
+  std::optional<bool> inch;  ///< the unit of BEGIN PGM (INCH: true)
+
+  /// Millimetres per unit of a length as written: 25.4 in an INCH program.
+  double mm_per_length() const { return inch.value_or(false) ? mm_per_inch : 1.0; }
+  /// mm/min per unit of F as written: an INCH program's F is in 1/10 inch/min, 2.54 mm/min.
+  double mm_per_min_per_feed() const { return inch.value_or(false) ? mm_per_inch / 10.0 : 1.0; }
 };
 
 /// Diagnostics at offsets of a block's text, and the checks every word goes through.
@@ -160,7 +168,7 @@ class motion_reader : public word_checks {
     if (!value_ok(w)) return;
     const std::size_t a = std::string_view("XYZABC").find(w.key[0]);
     if (axis_[a]) return error(w.pos, "axis '" + w.key + "' given twice");
-    axis_[a] = *w.value;
+    axis_[a] = a < 3 ? *w.value * state_.mm_per_length() : *w.value;
   }
 
   /// R, R0, RL/RR, DR±, F, FMAX, FAUTO, M.
@@ -168,7 +176,7 @@ class motion_reader : public word_checks {
     const std::string& key = w.key;
     const bool bare = !w.value && !w.sign;
     if (key == "R" && head_ == "CR" && !radius_ && !w.sign) {
-      if (value_ok(w)) radius_ = *w.value;
+      if (value_ok(w)) radius_ = *w.value * state_.mm_per_length();
     } else if (key == "R" && w.value && *w.value == 0 && w.error == number_error::none) {
       b_.kept_words.push_back("R0");
     } else if ((key == "RL" || key == "RR") && bare && w.error == number_error::none) {
@@ -177,7 +185,7 @@ class motion_reader : public word_checks {
       direction_ = w.sign;
     } else if (key == "F") {
       if (b_.feed) error(w.pos, "word 'F' given twice");
-      else if (rate_ok(w, "feed")) b_.feed = *w.value;
+      else if (rate_ok(w, "feed")) b_.feed = *w.value * state_.mm_per_min_per_feed();
     } else if (key == "FMAX" && bare) {
       b_.feed_rapid = true;
       b_.motion = arc_ ? b_.motion : motion_kind::rapid;

@@ -1,7 +1,8 @@
 /// @file program/heidenhain/reader.hpp
 /// The second stage of the Heidenhain reader: a block's words (lexer.hpp) become a `block`, by
 /// the block's keyword — `L` `LN` `C` `CC` `CR` (motion.hpp), `TOOL CALL`, M lines, `STOP`,
-/// `BEGIN PGM`/`END PGM … MM`, `;` and `*` comments, `FUNCTION TCPM`/`FUNCTION RESET TCPM`.
+/// `BEGIN PGM`/`END PGM … MM|INCH` (an INCH program read in millimetres), `;` and `*`
+/// comments, `FUNCTION TCPM`/`FUNCTION RESET TCPM`.
 /// Blocks that change nothing pass through (a comment in another dialect): `BLK FORM`,
 /// `TOOL DEF`, `PLANE RESET`, `TRANS … RESET`, Q assignments (parameters.hpp) and frame cycles
 /// whose values are the identity. `CYCL DEF 247 … Q339=n` selects preset n (`state.work_offset`).
@@ -10,7 +11,7 @@
 /// `LBL`, `CALL LBL`/`CALL PGM`, `FN` functions, `M` blocks with other words (`M140 MB MAX`),
 /// `TOOL CALL` forms it does not read, `FUNCTION TCPM` options other than `F TCP`, `AXIS POS`,
 /// `PATHCTRL AXIS`, unknown keywords; so are Q parameters that are not constants of the file,
-/// incremental `IX`…, INCH programs and active frame changes (`PLANE SPATIAL`…,
+/// incremental `IX`… and active frame changes (`PLANE SPATIAL`…,
 /// `CYCL DEF 7/8/10/11/19/26`, `TRANS`). Block numbers are kept as written (repeated or missing
 /// is fine).
 #pragma once
@@ -142,7 +143,8 @@ class block_reader : public word_checks {
     }
   }
 
-  /// `BEGIN PGM name MM`, `END PGM name MM`.
+  /// `BEGIN PGM name MM|INCH`, `END PGM name MM|INCH`: an INCH program's lengths are inches and
+  /// its F 1/10 inch/min, read in millimetres (motion.hpp, `reader_state`).
   void program_line(std::size_t i, std::size_t after, bool begin) {
     const std::size_t p = scan_.skip_spaces(after);
     const std::size_t e = scan_.run_end(p);
@@ -152,13 +154,15 @@ class block_reader : public word_checks {
     const std::string unit = t_.upper.substr(u, ue - u);
     if (name.empty() || unit.empty()) {
       error(i, std::string(begin ? "BEGIN" : "END") + " PGM needs a name and a unit");
-    } else if (unit == "INCH") {
-      error(u, "inch programs are not supported");
-      b_.metric = false;
-    } else if (unit != "MM") {
+    } else if (unit != "MM" && unit != "INCH") {
       error(u, "unknown unit '" + s_.substr(u, ue - u) + "'");
+    } else if (begin) {  // the unit of every block after it
+      b_.metric = unit == "MM";
+      state_.inch = unit == "INCH";
+    } else if (state_.inch && *state_.inch != (unit == "INCH")) {
+      error(u, "END PGM unit " + unit + " differs from BEGIN PGM's " + (*state_.inch ? "INCH" : "MM"));
     } else {
-      b_.metric = true;
+      b_.metric = unit == "MM";
     }
     if (!name.empty() && begin) {
       b_.program_begin = name;
@@ -189,7 +193,7 @@ class block_reader : public word_checks {
       } else if (w.key == "S" && w.value && !t.spindle_rpm) {
         if (rate_ok(w, "spindle speed")) t.spindle_rpm = *w.value;
       } else if (w.key == "F" && w.value && !t.feed) {
-        if (rate_ok(w, "feed")) t.feed = *w.value;
+        if (rate_ok(w, "feed")) t.feed = *w.value * state_.mm_per_min_per_feed();
       } else if ((w.key == "DL" || w.key == "DR" || w.key == "DR2") && w.value) {
         if (*w.value != 0 && !oversize) oversize = &w;
         t.kept_words.push_back(w.written);

@@ -23,6 +23,7 @@
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
+#include "../units.hpp"
 #include "../work_offsets.hpp"
 #include "lexer.hpp"
 
@@ -37,6 +38,9 @@ struct write_options {
   int feed_decimals = 1;    ///< F (mm/min) and S (1/min)
   int finest_feed_decimals = detail::finest_rate_decimals;  ///< more decimals for a small F or S, up to these (rate_decimals)
   int vector_decimals = 7;  ///< TX TY TZ
+  /// The program's unit when known ahead (`program_unit`): BEGIN PGM says it even when the
+  /// source states it only after its header (Siemens `%_N_P_MPF`, then `G700`).
+  std::optional<bool> program_metric;
 };
 
 /// Writes blocks as Heidenhain conversational text one at a time, numbering them from 0 and
@@ -52,16 +56,19 @@ class writer {
 
   /// Appends the lines of block `b` to `out`. Throws `std::invalid_argument` naming the block
   /// (`file:line`) when it cannot be written in Heidenhain.
-  void write(std::string& out, const block& b) {
+  void write(std::string& out, const block& b_mm) {
     const std::size_t bi = index_++;
     line_count_ = 0;
-    if (b.passthrough) return passthrough(out, b);
-    if (b.metric && !*b.metric) fail(b, bi, "inch units");
-    if (b.feed_mode == feed_unit::inverse_time) fail(b, bi, "inverse-time feed (G93)");
-    if (b.program_begin) {
-      begin_name_ = program_name(b.program_begin);
-      add("BEGIN PGM " + *begin_name_ + " MM");
+    if (b_mm.passthrough) return passthrough(out, b_mm);
+    if (b_mm.feed_mode == feed_unit::inverse_time) fail(b_mm, bi, "inverse-time feed (G93)");
+    if (b_mm.program_begin) {
+      begin_name_ = program_name(b_mm.program_begin);
+      begin_unit(!b_mm.metric.value_or(options_.program_metric.value_or(true)));
+      add("BEGIN PGM " + *begin_name_ + unit_word());
+    } else if (b_mm.metric) {
+      unit_change(b_mm, !*b_mm.metric, bi);
     }
+    const block b = in_program_unit(b_mm);
     if (b.state.work_offset) preset_selection(b, *b.state.work_offset, bi);
     const bool dropped = carry_feed(b);
     const bool moves = is_move(b);
@@ -89,7 +96,7 @@ class writer {
     }
     if (b.arc && b.arc->centre_mm && !arc && (b.motion || !b.axes.empty()))
       fail(b, bi, "circle centre on a block that is not an arc");
-    if (b.program_end) add("END PGM " + program_name(b.program_end) + " MM");
+    if (b.program_end) add("END PGM " + program_name(b.program_end) + unit_word());
     kept.insert(kept.end(), foreign.begin(), foreign.end());
     if (b.tcp) tcp_on_ = *b.tcp;
     emit(out, b, kept, dropped);
@@ -104,6 +111,7 @@ class writer {
   arc_plane plane_ = arc_plane::xy;
   std::optional<vec3> centre_;
   std::optional<std::string> begin_name_;
+  std::optional<bool> inch_;  // the unit BEGIN PGM said (INCH: true)
   std::optional<long long> selected_tool_;  // the last tool number written or selected
   bool tcp_on_ = false;                     // M128 / FUNCTION TCPM in effect after the last block
   // From a coordinate-less block of another dialect, for the next move that has no F of its own.
@@ -112,6 +120,35 @@ class writer {
   std::vector<std::string> lines_;  // the block's lines, reused from block to block (see `add`)
   std::size_t line_count_ = 0;
   std::string line_;                // the motion line being built
+
+  /// The program's unit, said once by BEGIN PGM: INCH makes lengths inches (one decimal more)
+  /// and F 1/10 inch/min (TNC 620 User's Manual, "Feed rate F"; docs/dialects/heidenhain.md).
+  void begin_unit(bool inch) {
+    if (inch && !inch_.value_or(false)) options_.linear_decimals += 1;
+    if (!inch && inch_.value_or(false)) options_.linear_decimals -= 1;
+    inch_ = inch;
+  }
+  std::string unit_word() const { return inch_.value_or(false) ? " INCH" : " MM"; }
+
+  /// A unit word after BEGIN PGM: the same unit says nothing; another cannot be written, since a
+  /// TNC program has one unit, its BEGIN PGM's (and without one, millimetres).
+  void unit_change(const block& b, bool inch, std::size_t bi) const {
+    if (inch == inch_.value_or(false)) return;
+    if (!inch_ && inch)
+      fail(b, bi, "inch units: a TNC program says INCH in its BEGIN PGM line, and this program has none");
+    fail(b, bi, std::string("a change of units to ") + (inch ? "inch" : "millimetres") +
+                    " inside the program: a TNC program has one unit, its BEGIN PGM's (" + (*inch_ ? "INCH" : "MM") + ")");
+  }
+
+  /// `b` with its lengths and F in the program's unit (inches and 1/10 inch/min after BEGIN PGM
+  /// … INCH).
+  block in_program_unit(const block& b) const {
+    block u = b;
+    if (!inch_.value_or(false)) return u;
+    mm_to_inches(u, false);
+    if (u.feed) *u.feed /= mm_per_inch / 10.0;
+    return u;
+  }
 
   [[noreturn]] void fail(const block& b, std::size_t bi, const std::string& what) const {
     const std::string at = b.where.line ? b.where.file + ":" + std::to_string(b.where.line)
@@ -360,7 +397,13 @@ class writer {
 /// Writes `p` as a Heidenhain conversational program, blocks numbered from 0.
 /// Throws std::invalid_argument naming the block (`file:line`) when a block cannot be written.
 inline std::string write(const program& p, const write_options& options = {}) {
-  writer w(p.language, p.file, options);
+  write_options chosen = options;
+  if (!chosen.program_metric) {
+    program_unit unit;
+    for (const block& b : p.blocks) unit.take(b);
+    chosen.program_metric = unit.metric;
+  }
+  writer w(p.language, p.file, chosen);
   std::string out;
   for (const block& b : p.blocks) w.write(out, b);
   return out;

@@ -1,7 +1,8 @@
 /// @file program/siemens/modal.hpp
 /// What a Siemens program leaves in effect from one block to the next, as far as reading and
 /// writing 840D text need it: the motion word (G0–G3), the arc plane (G17–G19), the last
-/// programmed X Y Z (arc centres are written relative to it) and the program's name (M30 ends it).
+/// programmed X Y Z (arc centres are written relative to it), the program's name (M30 ends it),
+/// the unit (G70/G700 inch) and the feed mode (G93 inverse time).
 #pragma once
 
 #include <array>
@@ -19,6 +20,9 @@ struct modal_state {
   arc_plane plane = arc_plane::xy;
   std::array<std::optional<double>, 3> position_mm;  ///< last programmed X Y Z (workpiece)
   std::optional<std::string> program_name;
+  bool inch = false;          ///< G70 or G700 in effect: lengths in inches
+  bool g70 = false;           ///< G70 in effect: lengths in inches, F in the control's basic system
+  bool inverse_time = false;  ///< G93 in effect: F is 1/min, not a length
 
   /// Takes block `b`'s linear axis words (machine coordinates make them unknown).
   void move(const block& b) {

@@ -5,7 +5,8 @@
 /// Reading rules (docs/dialects/siemens.md lists every word): `TRAORI` / `TRAFOOF` switch
 /// tool-tip tracking, `A3= B3= C3=` give a tool-axis vector, `I J K` (incremental from the last
 /// programmed point) or `CR=` give arcs, `SUPA` / `G53` / `G153` mean machine coordinates.
-/// Expressions, `G91` / `IC()`, inch units and active frame changes (`TRANS`, `ROT`, `CYCLE800`,
+/// `G70`/`G700` inch blocks are read in millimetres (`units`). Expressions, `G91` / `IC()` and
+/// active frame changes (`TRANS`, `ROT`, `CYCLE800`,
 /// …) are errors. A line without geometry that is not understood is kept verbatim (`passthrough`).
 /// Most lines of a long program (`N… G1 X… Y… Z… A… B… F…`) are read in one scan
 /// (`read_plain_motion`), which a law holds equal to the word-by-word reading.
@@ -24,6 +25,7 @@
 #include "../number.hpp"
 #include "../text.hpp"
 #include "../transmission.hpp"
+#include "../units.hpp"
 #include "lexer.hpp"
 #include "modal.hpp"
 #include "vocabulary.hpp"
@@ -85,6 +87,34 @@ inline void arc(line_parse& p, const modal_state& state, std::vector<diagnostic>
   }
 }
 
+/// G70 / G700 (inch) and G71 / G710 (mm) apply from their own block on. In an inch block the
+/// lengths (X Y Z, I J K, CR=) become millimetres (×25.4, units.hpp) and so does F under G700
+/// (in/min → mm/min; never an inverse-time F). Under G70 F stays in the control's basic unit
+/// system (SINUMERIK 802D sl manual §8.2.3: G70/G71 leave the feed alone, G700/G710 convert it
+/// too), which the program does not say: an F there is refused. kin5 reads G71 and unit-less
+/// programs as written for a control whose basic system is metric (docs/dialects/siemens.md).
+inline void units(line_parse& p, modal_state& state, std::vector<diagnostic>& errors) {
+  block& b = p.b;
+  if (b.feed_mode) state.inverse_time = *b.feed_mode == feed_unit::inverse_time;
+  if (p.unit_g) {
+    state.inch = *p.unit_g == 70 || *p.unit_g == 700;
+    state.g70 = *p.unit_g == 70;
+  }
+  if (!state.inch) return;
+  for (std::optional<double>* v : {&b.axes.x_mm, &b.axes.y_mm, &b.axes.z_mm, &p.centre_offset_mm[0],
+                                   &p.centre_offset_mm[1], &p.centre_offset_mm[2], &p.radius_mm})
+    if (*v) **v *= mm_per_inch;
+  if (!b.feed || state.inverse_time) return;
+  if (!state.g70) {
+    *b.feed *= mm_per_inch;
+    return;
+  }
+  errors.push_back({{b.where.file, b.where.line, p.feed_column + 1},
+                    "F under G70 is in the control's basic unit system, which the program does not say "
+                    "(G700 gives F in inch/min)"});
+  b.feed.reset();
+}
+
 /// M2 / M30 end the program: carried by `program_end` only, not also in `m_codes`.
 inline void program_end(block& b, const modal_state& state) {
   const bool m30 = std::find(b.m_codes.begin(), b.m_codes.end(), 30) != b.m_codes.end();
@@ -114,6 +144,11 @@ inline void finish(line_parse& p, modal_state& state, read_result& result) {
     std::stable_partition(b.kept_words.begin(), b.kept_words.end(), [](const std::string& w) { return !is_late_kept(w); });
     if (b.motion) state.motion = b.motion;
     if (p.plane) state.plane = *p.plane;
+    {
+      std::vector<diagnostic> found;
+      units(p, state, found);
+      for (auto& d : found) keep_or_count(p.errors, p.errors_not_kept, std::move(d));
+    }
     // Checks across words only on a line whose words read cleanly: one diagnostic per problem
     // (an arc word may be the one in error: the arc is then left out).
     if (p.errors.empty()) {
@@ -188,6 +223,7 @@ struct plain_motion {
 /// result is true; for any other line (or an arc in effect) nothing changes and the result is
 /// false: the full reader then reads it. A law checks that both readers agree on such lines.
 inline bool read_plain_motion(std::string_view line, block& b, modal_state& state) {
+  if (state.inch) return false;  // the full reader converts
   plain_motion words;
   std::size_t i = 0;
   for (;;) {

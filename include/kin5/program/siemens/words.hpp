@@ -36,6 +36,8 @@ struct line_parse {
   bool has_content = false;    ///< anything besides N, comments and MSG
   bool has_msg = false;
   std::optional<std::size_t> mcall_column;         ///< MCALL seen (a call after it is a modal cycle call)
+  std::optional<long long> unit_g;                 ///< G70, G71, G700 or G710 (units.hpp applies it)
+  std::size_t unit_column = 0, feed_column = 0;
   bool frame_arguments = false;  ///< RPL= and the like
   bool control = false;          ///< a jump or call refused: the line's other words are its arguments
   std::vector<std::pair<std::string, std::size_t>> frame_words;  ///< TRANS, ROT, G58, … (column)
@@ -251,6 +253,7 @@ class word_reader {
     out_.has_content = true;
     if (v < 0) return error(start, "value out of range");
     auto& field = letter == 'F' ? out_.b.feed : out_.b.spindle_rpm;
+    if (letter == 'F') out_.feed_column = start;
     if (duplicate(field.has_value(), start, std::string(1, letter))) return;
     // what the writer could not write back (`S.0101` needs a fourth decimal) is refused here
     if (auto why = unwritable_rate(v, finest_rate_decimals, letter == 'F' ? "feed" : "spindle speed"))
@@ -297,13 +300,20 @@ class word_reader {
 
   void other_g(long long g, const std::string& canonical, std::size_t start) {
     if (g == 91) error(start, "incremental positioning (G91) is not supported");
-    else if (g == 70 || g == 700) error(start, "inch programs are not supported");
-    else if (g == 71 || g == 710) out_.b.metric = true;
+    else if (g == 70 || g == 71 || g == 700 || g == 710) unit_word(g, canonical, start);
     else if (g == 53 || g == 153) out_.b.machine_coordinates = true;
     else if (g == 58 || g == 59) out_.frame_words.emplace_back(canonical, start);
     else if (g == 41 || g == 42) error(start, canonical + ": cutter radius compensation is not supported yet (the path would be off by the radius)");
     else if (g == 4) error(start, "G4: a dwell is not supported yet (the dwell would be lost)");
     else unknown(start, "unknown word '" + canonical + "'");
+  }
+
+  /// G70 / G71 / G700 / G710: in effect from this block on (finish applies it to the block).
+  void unit_word(long long g, const std::string& canonical, std::size_t start) {
+    if (conflict(out_.unit_g && *out_.unit_g != g, "G" + std::to_string(out_.unit_g.value_or(0)), canonical, start)) return;
+    out_.unit_g = g;
+    out_.unit_column = start;
+    out_.b.metric = g == 71 || g == 710;
   }
 
   void keyword(const word& w) {

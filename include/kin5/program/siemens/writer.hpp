@@ -1,10 +1,11 @@
 /// @file program/siemens/writer.hpp
 /// Blocks written as Siemens 840D text, one line per block, in the order
-/// `N  TRAORI/TRAFOOF  G71  G93/G94  kept words  SUPA  G17-G19  G0-G3  X Y Z A B C  A3= B3= C3=
+/// `N  TRAORI/TRAFOOF  G710/G700  G93/G94  kept words  SUPA  G17-G19  G0-G3  X Y Z A B C  A3= B3= C3=
 /// I J K / CR=  F  S  T  D H T="name"  M  ;comment`. Blocks read from another dialect keep their
-/// passthrough text and kept words in a comment. A block Siemens cannot express (inch units, a
-/// rapid arc, an arc without a known start point) throws `std::invalid_argument`
-/// ("file:line: reason").
+/// passthrough text and kept words in a comment. Units are written `G710` (mm) or `G700` (inch),
+/// the forms that also set the unit of F: after `G700` lengths and per-minute feeds are written in
+/// inches, with one decimal more. A block Siemens cannot express (a rapid arc, an arc without a
+/// known start point) throws `std::invalid_argument` ("file:line: reason").
 #pragma once
 
 #include <algorithm>
@@ -20,6 +21,7 @@
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
+#include "../units.hpp"
 #include "../work_offsets.hpp"
 #include "modal.hpp"
 #include "vocabulary.hpp"
@@ -147,6 +149,8 @@ class writer {
   bool ended_ = false;                       // the last block written had an M2 / M30 M function
   bool tcp_on_ = false;                      // TRAORI in effect after the last block
   std::optional<long long> selected_tool_;   // the last T written
+  bool inch_ = false;                        // G700 written: lengths and per-minute F in inches
+  bool inverse_time_ = false;                // G93 written: F is not a length
 
   [[noreturn]] static void fail(const block& b, const std::string& file, const std::string& why) {
     throw std::invalid_argument(file + ":" + std::to_string(b.where.line) + ": " + why);
@@ -155,16 +159,22 @@ class writer {
   void number(std::string& line, std::string_view address, double v, int decimals) {
     detail::append_word(line, std::string(address) + format_number(v, decimals));
   }
+  /// A length in mm, written in the program's unit (inches after G700, one decimal more).
+  void length(std::string& line, std::string_view address, double v_mm) {
+    number(line, address, inch_ ? v_mm / mm_per_inch : v_mm, linear_decimals());
+  }
+  int linear_decimals() const { return options_.linear_decimals + (inch_ ? 1 : 0); }
 
   /// `N`, TRAORI / TRAFOOF, G71, G93 / G94, kept words (same dialect), SUPA.
   void settings(std::string& line, const block& b, const std::string& file) {
     if (b.number) detail::append_code(line, 'N', *b.number);
     if (b.tcp) detail::append_word(line, *b.tcp ? "TRAORI" : "TRAFOOF");
     if (b.metric) {
-      if (!*b.metric) fail(b, file, "inch units cannot be written; kin5 writes millimetres");
-      detail::append_word(line, "G71");
+      inch_ = !*b.metric;
+      detail::append_word(line, inch_ ? "G700" : "G710");
     }
-    if (b.feed_mode) detail::append_word(line, *b.feed_mode == feed_unit::inverse_time ? "G93" : "G94");
+    if (b.feed_mode) inverse_time_ = *b.feed_mode == feed_unit::inverse_time;
+    if (b.feed_mode) detail::append_word(line, inverse_time_ ? "G93" : "G94");
     if (same_) {
       for (const auto& w : b.kept_words) {
         if (detail::is_late_kept(w)) continue;
@@ -210,9 +220,9 @@ class writer {
   /// X Y Z A B C, and A3= B3= C3= for a tool-axis vector.
   void axes(std::string& line, const block& b, const std::string& file) {
     const axis_words& a = b.axes;
-    if (a.x_mm) number(line, "X", *a.x_mm, options_.linear_decimals);
-    if (a.y_mm) number(line, "Y", *a.y_mm, options_.linear_decimals);
-    if (a.z_mm) number(line, "Z", *a.z_mm, options_.linear_decimals);
+    if (a.x_mm) length(line, "X", *a.x_mm);
+    if (a.y_mm) length(line, "Y", *a.y_mm);
+    if (a.z_mm) length(line, "Z", *a.z_mm);
     if (a.a_deg) number(line, "A", *a.a_deg, options_.angle_decimals);
     if (a.b_deg) number(line, "B", *a.b_deg, options_.angle_decimals);
     if (a.c_deg) number(line, "C", *a.c_deg, options_.angle_decimals);
@@ -229,22 +239,26 @@ class writer {
     if (b.arc && b.arc->centre_mm) {
       const auto start = written_.position();
       if (!start) fail(b, file, "arc centre needs a known start point (X Y Z)");
-      const vec3 offset = *b.arc->centre_mm - *start;
+      const vec3 offset = (*b.arc->centre_mm - *start) * (inch_ ? 1.0 / mm_per_inch : 1.0);
       const std::array<double, 3> o = {offset.x, offset.y, offset.z};
       const std::array<bool, 3> in_plane = {b.arc->plane != arc_plane::yz, b.arc->plane != arc_plane::zx,
                                             b.arc->plane != arc_plane::xy};
       for (std::size_t i = 0; i < 3; ++i) {
-        const std::string v = format_number(o[i], options_.linear_decimals);
+        const std::string v = format_number(o[i], linear_decimals());
         if (in_plane[i] || v != "0") detail::append_word(line, std::string(1, static_cast<char>('I' + i)) + v);
       }
     } else if (b.arc && b.arc->radius_mm) {
-      number(line, "CR=", *b.arc->radius_mm, options_.linear_decimals);
+      length(line, "CR=", *b.arc->radius_mm);
     }
   }
 
   /// F S T, D H T="name" (same dialect), M codes, the program end, the comment.
   void tail(std::string& line, const block& b) {
-    if (b.feed) number(line, "F", *b.feed, rate_decimals(*b.feed, options_.feed_decimals, options_.finest_feed_decimals));
+    if (b.feed) {
+      const int inch = inch_ && !inverse_time_ ? 1 : 0;  // in/min: one decimal more
+      const double f = *b.feed / (inch ? mm_per_inch : 1.0);
+      number(line, "F", f, rate_decimals(f, options_.feed_decimals + inch, options_.finest_feed_decimals + inch));
+    }
     if (b.spindle_rpm)
       number(line, "S", *b.spindle_rpm,
              rate_decimals(*b.spindle_rpm, options_.feed_decimals, options_.finest_feed_decimals, "spindle speed"));

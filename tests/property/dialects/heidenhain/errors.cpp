@@ -64,7 +64,8 @@ TEST_CASE("heidenhain: the writer names the block it cannot write") {
   b.axes.x_mm = 1;
   b.metric = false;
   p.blocks.push_back(b);
-  CHECK_THROWS_WITH(heidenhain::write(p), "part.nc:12: block cannot be written in heidenhain: inch units");
+  CHECK_THROWS_WITH(heidenhain::write(p), "part.nc:12: block cannot be written in heidenhain: inch units: a TNC "
+                                          "program says INCH in its BEGIN PGM line, and this program has none");
   p.blocks[0].metric.reset();
   p.blocks[0].feed_mode = feed_unit::inverse_time;
   CHECK_THROWS_WITH(heidenhain::write(p), "part.nc:12: block cannot be written in heidenhain: inverse-time feed (G93)");

@@ -84,7 +84,7 @@ TEST_CASE("siemens: a whole program with header, set-up, TRAORI and end", "[siem
   CHECK(siemens::write(r.parsed) ==
         "%_N_SAJO_MPF\n"
         "; $PATH=/_N_MPF_DIR\n"
-        "N10 G71 G94 G17 G90 SOFT FFWON G642\n"
+        "N10 G710 G94 G17 G90 SOFT FFWON G642\n"
         "N20 T=\"MILL_6\" D1 M6\n"
         "N30 S4000 M3\n"
         "N40 TRAORI\n"
@@ -247,7 +247,7 @@ TEST_CASE("siemens: writing another dialect's program", "[siemens][quirks]") {
   p.blocks = {begin, tcp, rapid, next, cycle, end};
   CHECK(siemens::write(p) ==
         "%_N_PART_1_MPF\n"
-        "N0 G71\n"
+        "N0 G710\n"
         "N1 TRAORI ; M126\n"
         "N2 G0 Z100\n"
         "N3 G1 X5 F500 ; cut\n"

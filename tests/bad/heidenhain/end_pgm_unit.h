@@ -1,4 +1,4 @@
-; expect: 2:15: inch programs are not supported
+; expect: 5:13: END PGM unit MM differs from BEGIN PGM's INCH
 0 BEGIN PGM T INCH
 1 M128
 2 L X+0 Y+0 Z+0 B+0 C+0 F100
