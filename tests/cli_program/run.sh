@@ -505,6 +505,49 @@ EOF
     run 1 translate --from dmu-80p --to dmu-80p --tool-length 100 -o free.h t2.h
     run 1 post --machine dmu-80p --work-offset 0,0 -o p.h "$examples/cl-path.apt"
     ;;
+  untracked)
+    # Motion without TCP read as machine coordinates (G9): an A/C trunnion program with a 3-axis
+    # section, a rotary pre-positioning, a 3+2 section, a rotary feed move, a TCP section and a
+    # park move, to the DMU 50V. Both tables of the ac-trunnion turn about lines through
+    # (0, 0, -200); with the work offset there, the part point of program point p at physical
+    # angles A, C is R_z(-C) R_x(-A) p (worked by hand below), whatever the tool length.
+    printf '%s\n' '; PART U1' 'N10 G0 X0 Y0 Z50 A0 C0' 'N20 G1 Z-2 F200' 'N30 X40 F800' 'N40 G0 Z50' \
+      'N50 A-60 C90' 'N60 G1 X10 Y20 Z30 F500' 'N70 X20' 'N80 A-30 F1000' 'N90 G0 Z100' 'N100 TRAORI' \
+      'N110 G1 X0 Y0 Z10 A-20 C0 F1000' 'N120 X10' 'N130 TRAFOOF' 'N140 G0 Z150' 'N150 A0 C0' 'N160 M30' >u.mpf
+    # Without the source's placement: refused at the first motion, nothing written.
+    run 2 translate --from ac-trunnion --to dmu-50v -o no.h u.mpf
+    grep -q '^u\.mpf:2:1: error: .*--source-work-offset and --source-tool-length' err || { report "no refusal at line 2"; show err; }
+    [ -e no.h ] && report "no.h written"
+    run 1 translate --from ac-trunnion --to dmu-50v --source-work-offset 0,0,-200 -o no.h u.mpf
+    run 0 translate --from ac-trunnion --to dmu-50v --source-work-offset 0,0,-200 --source-tool-length 100 -o u.h u.mpf
+    grep -q 'added: rotary moves without tool-tip tracking cut into pieces' err || { report "no count of added blocks"; show err; }
+    head -n 2 u.h | grep -q 'M128' || { report "TCP not switched on in the first motion"; show u.h; }
+    words u.h >w
+    # has X Y Z [B] [F]: a written motion with these values (positions to 0.001, B to 0.001).
+    has() {
+      awk -v x="$1" -v y="$2" -v z="$3" -v b="${4:-}" -v f="${5:-}" '
+        function v(n,   i) { for (i = 1; i <= NF; ++i) if (index($i, n "=") == 1) return substr($i, length(n) + 2); return "" }
+        function near(a, c) { return a != "" && (a - c < 0.0011 && c - a < 0.0011) }
+        near(v("X"), x) && near(v("Y"), y) && near(v("Z"), z) && (b == "" || near(v("B"), b)) &&
+          (f == "" || v("F") == f) { found = 1 } END { exit !found }' w || { report "no block X$1 Y$2 Z$3 B${4:-} F${5:-}"; show u.h; }
+    }
+    has 0 0 -2 0 200 && has 40 0 -2 0 800          # 3-axis: the program point is the tip
+    has -43.301 -40 25 90                            # N50 end: R_z(-90) R_x(60) (40, 0, 50); B by (K23)
+    has -15.981 -10 32.321 90 500                    # N60, one block, F kept: R_z(-90) R_x(60) (10, 20, 30)
+    has -15.981 -20 32.321 90                        # N70
+    has 2.321 -20 35.981                             # N80 end: R_z(-90) R_x(30) (20, 20, 30)
+    has 10 -48.089 142.124                           # N140: X, Y stay where TCP left the slides (10, 3.420)
+    has 10 3.42 150 0                                # N150: the zero pose
+    # N50's pieces: the tip turns about the origin, so every piece lies 64.031 mm from it, and
+    # there are more than 2 (a 60 deg and 90 deg swing of a 64 mm radius).
+    n=$(awk '/FMAX/ { x = y = z = ""; for (i = 1; i <= NF; ++i) { w = substr($i, 1, 1); v = substr($i, 2) + 0
+            if (w == "X") x = v; if (w == "Y") y = v; if (w == "Z") z = v }
+          r = sqrt(x * x + y * y + z * z); if (r > 64.02 && r < 64.04) ++n } END { print n + 0 }' u.h)
+    [ "$n" -gt 2 ] || { report "N50 not cut into pieces on its 64.031 mm sphere ($n)"; show u.h; }
+    # N80: A turns 30 deg at F1000 (deg/min): 0.03 min over an arc of 36.056 * pi / 6 = 18.879 mm,
+    # so the pieces run at 629.3 mm/min (their chords a hair shorter than the arc).
+    grep -c 'F629\.[23]' u.h | awk '{ exit !($1 > 2) }' || { report "N80 pieces not at F629.3"; show u.h; }
+    ;;
   *)
     echo "run.sh: unknown test '$name'" >&2
     exit 2

@@ -71,7 +71,8 @@ TEST_CASE("motion without TCP is an error naming the line, with the rotary messa
   CHECK(t.errors[0].message.find("without tool-tip tracking (TCP)") != std::string::npos);
   CHECK(t.errors[1].where.line == 2);
   CHECK(t.errors[1].message ==
-        "rotary motion without tool-tip tracking (TCP) needs the machine geometry, which kin5 does not model yet");
+        "rotary motion without tool-tip tracking (TCP): its tool tip depends on where the part sits and on the tool "
+        "length; give the source's --source-work-offset and --source-tool-length to read it as machine coordinates");
   CHECK(t.blocks_written == t.blocks_read - 2);  // accounted for: written or an error
 }
 

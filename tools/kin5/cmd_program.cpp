@@ -252,7 +252,11 @@ int execute(const job& j) {
   }
 
   std::cerr << prefix << result.blocks_read << " blocks read, "
-            << (committed ? result.blocks_written : 0) << " written, " << result.passed_through
+            << (committed ? result.blocks_written : 0) << " written"
+            << (committed && result.blocks_added ? " (" + std::to_string(result.blocks_added) + " added: rotary moves "
+                                                   "without tool-tip tracking cut into pieces)"
+                                                 : std::string())
+            << ", " << result.passed_through
             << " passed through; ";
   for (matchability m : {matchability::direct, matchability::other_branch, matchability::unreachable})
     std::cerr << count(m) << ' ' << name(m) << (m == matchability::unreachable ? "\n" : ", ");
@@ -297,6 +301,8 @@ struct common_arguments {
   std::optional<int> digits;
   std::vector<std::string> m_map;
   std::string tool_length, work_offset;  ///< translate and post: the target's placement
+  std::string source_tool_length, source_work_offset;  ///< translate and reverse: the source's
+  std::optional<double> tolerance_mm;
   std::vector<std::string> work_offset_map;
 };
 
@@ -330,6 +336,39 @@ bool parse_placement(std::string_view command, const common_arguments& a, common
   return true;
 }
 
+/// `c.source_placement` from --source-tool-length and --source-work-offset (both or neither)
+/// and `c.tolerance_mm` from --tolerance; false, with the reason printed, on bad input.
+bool parse_source_placement(std::string_view command, const common_arguments& a, common_options& c) {
+  if (a.tolerance_mm) {
+    if (!(*a.tolerance_mm >= 1e-6 && *a.tolerance_mm <= 10.0)) {
+      std::cerr << "kin5 " << command << ": --tolerance: give mm in [0.000001, 10]\n";
+      return false;
+    }
+    c.tolerance_mm = *a.tolerance_mm;
+  }
+  if (a.source_work_offset.empty() && a.source_tool_length.empty()) return true;
+  if (a.source_work_offset.empty() || a.source_tool_length.empty()) {
+    std::cerr << "kin5 " << command << ": --source-work-offset and --source-tool-length go together: motion without "
+                                       "tool-tip tracking is read as machine coordinates only where both are known\n";
+    return false;
+  }
+  run_inputs in;
+  const auto l = parse_real(a.source_tool_length);
+  if (!l || !(*l >= 0.0) || !prog::writable(*l)) {
+    std::cerr << "kin5 " << command << ": --source-tool-length: give a length in mm, 0 or more\n";
+    return false;
+  }
+  in.tool_length_mm = *l;
+  const auto w = parse_list(a.source_work_offset, 3);
+  if (!w || !prog::writable((*w)[0]) || !prog::writable((*w)[1]) || !prog::writable((*w)[2])) {
+    std::cerr << "kin5 " << command << ": --source-work-offset needs 3 numbers X,Y,Z (mm, within ±1e9)\n";
+    return false;
+  }
+  in.work_offset.translation_mm = {(*w)[0], (*w)[1], (*w)[2]};
+  c.source_placement = in;
+  return true;
+}
+
 /// `common_options` from `a`; prints the reason and returns nothing on bad input.
 std::optional<common_options> parse_common(std::string_view command, const common_arguments& a) {
   common_options c;
@@ -356,7 +395,7 @@ std::optional<common_options> parse_common(std::string_view command, const commo
       std::cerr << "kin5 " << command << ": --m-map: '" << entry << "' is neither N=M (rename) nor N= (drop)\n";
       return std::nullopt;
     }
-  if (!parse_placement(command, a, c)) return std::nullopt;
+  if (!parse_placement(command, a, c) || !parse_source_placement(command, a, c)) return std::nullopt;
   for (const auto& entries : a.work_offset_map)
     if (!c.work_offsets.add(entries)) {
       std::cerr << "kin5 " << command << ": --work-offset-map: '" << entries
@@ -392,6 +431,19 @@ void add_placement_options(CLI::App* sub, common_arguments& a) {
                   "Where the workpiece zero sits on the target, X,Y,Z in mm (machine coordinates at the zero pose); "
                   "given, every output block's slides are checked against the target's linear travel");
   sub->add_option("--tool-length", a.tool_length, "Tool length on the target, gauge point to tip, mm (with --work-offset; default 0)");
+}
+
+/// Adds --source-work-offset, --source-tool-length and --tolerance (motion without tool-tip
+/// tracking read as machine coordinates) to `sub`.
+void add_source_options(CLI::App* sub, common_arguments& a) {
+  sub->add_option("--source-work-offset", a.source_work_offset,
+                  "Where the workpiece zero sat on the source, X,Y,Z in mm (machine coordinates at the zero pose); "
+                  "with --source-tool-length, motion without tool-tip tracking is read as machine coordinates");
+  sub->add_option("--source-tool-length", a.source_tool_length,
+                  "Tool length on the source, gauge point to tip, mm (with --source-work-offset)");
+  sub->add_option("--tolerance", a.tolerance_mm,
+                  "How far (mm) the written tool-tip path may stray from the source's where a rotary move read as "
+                  "machine coordinates is cut into pieces (default 0.005)");
 }
 
 struct translate_arguments {
@@ -601,6 +653,7 @@ void add_program_commands(CLI::App& app, int& exit_code) {
                     "Setup translation X,Y,Z in mm: target point = R * source point + offset (default: the pair's)");
     add_common_options(sub, a->common);
     add_placement_options(sub, a->common);
+    add_source_options(sub, a->common);
     sub->add_flag("-v,--verbose", a->verbose, "Also list the blocks translated on the other solution branch");
     sub->add_option("input", a->input, "Input NC program; '-' for stdin")->required();
     sub->footer(default_dialect_table() + exit_code_footer);
@@ -613,6 +666,7 @@ void add_program_commands(CLI::App& app, int& exit_code) {
     sub->add_option("--dialect", a->dialect, "Dialect of IN (default: the machine's)")->check(dialects);
     sub->add_option("-o,--output", a->output, "Output file; '-' for stdout")->capture_default_str();
     add_common_options(sub, a->common);
+    add_source_options(sub, a->common);
     sub->add_flag("-v,--verbose", a->verbose, "Also list the blocks read on the other solution branch");
     sub->add_option("input", a->input, "Input NC program; '-' for stdin")->required();
     sub->footer(default_dialect_table() + exit_code_footer);

@@ -61,6 +61,20 @@ class cl_target {
       out.errors.push_back(at(b, "circular move cannot be written as GOTO points; kin5 does not linearise arcs"));
       return;
     }
+    if (s.rotary_moves && !s.rapid) {
+      out.errors.push_back(at(b, "feed move without tool-tip tracking whose rotary axes move: not written as APT CL "
+                                 "data (its pieces' feeds are not translated); translate it to a machine instead"));
+      return;
+    }
+    for (const tool_pose& piece : s.pieces) {  // a rapid's pieces, before its end
+      program::block p;
+      p.where = b.where;
+      p.motion = program::motion_kind::rapid;
+      p.axes.x_mm = piece.tip_mm.x, p.axes.y_mm = piece.tip_mm.y, p.axes.z_mm = piece.tip_mm.z;
+      p.axes.tool_axis = piece.axis;
+      ++out.blocks_added;
+      emit(std::move(p));
+    }
     o.text.clear();
     o.axes = {};
     o.axes.x_mm = s.tip_source_mm.x, o.axes.y_mm = s.tip_source_mm.y, o.axes.z_mm = s.tip_source_mm.z;

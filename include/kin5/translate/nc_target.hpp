@@ -95,7 +95,9 @@ class nc_target {
 
   /// First pass: the step of every block, in order.
   void plan(const source_step& s) {
-    if (s.what == source_step::kind::motion) planner_.add(normalized(target_T_source_.map_direction(s.u_source)));
+    if (s.what != source_step::kind::motion) return;
+    for (const tool_pose& piece : s.pieces) planner_.add(normalized(target_T_source_.map_direction(piece.axis)));
+    planner_.add(normalized(target_T_source_.map_direction(s.u_source)));
   }
   void finish_plan() { path_ = planner_.finish(); }
 
@@ -121,7 +123,7 @@ class nc_target {
       }
     }
     if (s.what == source_step::kind::copy) {
-      write_copy(b, std::move(o), out, emit);
+      write_copy(b, s, std::move(o), out, emit);
       return;
     }
     write_motion(b, s, std::move(o), out, emit, on_report);
@@ -137,6 +139,8 @@ class nc_target {
   rotary_path_values path_;
   std::optional<run_inputs> placement_;
   bool output_inverse_time_ = false, tcp_switched_on_ = false, inverse_time_error_ = false;
+  bool output_tcp_ = false;  // tool-tip tracking on in the output after the last block written
+  bool restate_feed_ = false;  // the F in effect in the output is a piece's, not the program's
   std::optional<std::size_t> previous_motion_;  // motion index of the last written motion
   int branch_off_pole_ = -1;                    // branch of the last written motion off a pole
   source_step previous_step_;                   // its step
@@ -145,8 +149,9 @@ class nc_target {
   /// A block that is not motion: an arc centre on its own is mapped; feed and TCP words follow
   /// the policy.
   template <class Emit>
-  void write_copy(const program::block& b, program::block&& o, translation& out, Emit&& emit) {
+  void write_copy(const program::block& b, const source_step& s, program::block&& o, translation& out, Emit&& emit) {
     if (b.arc && b.arc->centre_mm) {  // an arc centre on its own (Heidenhain CC)
+      const vec3 centre_source_mm = s.untracked ? *s.arc_source.centre_mm : *b.arc->centre_mm;
       const auto mapped = principal_plane(target_T_source_.rotation * plane_normal(b.arc->plane));
       if (!mapped) {
         out.errors.push_back(at(b, "circular move cannot be mapped: plane " + std::string(plane_name(b.arc->plane)) +
@@ -154,7 +159,7 @@ class nc_target {
         return;
       }
       o.arc->plane = mapped->first;
-      o.arc->centre_mm = target_T_source_.map_point(*b.arc->centre_mm);
+      o.arc->centre_mm = target_T_source_.map_point(centre_source_mm);
       if (!program::capabilities_of(output_language_).arc_centre_block) {  // arcs carry their own centre: a note
         const vec3 centre_target_mm = *o.arc->centre_mm;
         if (!o.comment)
@@ -167,16 +172,34 @@ class nc_target {
       o.feed.reset();
       o.feed_mode.reset();
     }
-    if (switch_tcp_on_ && tcp_switched_on_ && b.program_end) o.tcp = false;
+    if (tcp_switched_on_ && output_tcp_ && b.program_end && !o.tcp) o.tcp = false;
+    if (o.tcp) output_tcp_ = *o.tcp;
     emit(std::move(o));
+  }
+
+  /// Tool-tip tracking of motion block `o` (step `s`) in the output: on for a block written as TCP
+  /// that the source did not track (`post`'s CL data, motion read as machine coordinates).
+  void switch_tcp(const source_step& s, program::block& o) {
+    if (switch_tcp_on_ || s.untracked) {
+      if (output_tcp_) o.tcp.reset();
+      else o.tcp = true, tcp_switched_on_ = true;
+      output_tcp_ = true;
+    } else if (o.tcp) {
+      output_tcp_ = *o.tcp;
+    }
   }
 
   /// A motion block: the planned angles, the mapped tip (or arc), the feed.
   template <class Emit, class Report>
   void write_motion(const program::block& b, const source_step& s, program::block&& o, translation& out, Emit&& emit,
                     Report&& on_report) {
-    const std::size_t j = next_motion_++;
+    const std::size_t first = next_motion_;
+    next_motion_ += s.pieces.size() + 1;
+    const std::size_t j = next_motion_ - 1;  // the block's end; its pieces come before it
+    for (std::size_t k = 0; k < s.pieces.size(); ++k)
+      if (!piece_reachable(b, s, first + k, s.pieces[k].tip_mm, out)) return;
     if (!report_motion(b, s, j, out, on_report)) return;
+    for (std::size_t k = 0; k < s.pieces.size(); ++k) write_piece(b, s, k, first + k, o, out, emit);
     const kin5::rotary_values& angles_target = *path_.angles[j];
     const vec3 tip_target_mm = target_T_source_.map_point(s.tip_source_mm);
     std::array<double, 2> angles_target_deg{};
@@ -184,18 +207,95 @@ class nc_target {
 
     o.text.clear();
     o.axes = {};
-    if (switch_tcp_on_ && !tcp_switched_on_) o.tcp = true, tcp_switched_on_ = true;
+    switch_tcp(s, o);
     if (program::is_arc(s.motion)) {
       if (!write_arc(b, s, angles_target, tip_target_mm, o, out)) return;
     } else {
       o.axes.x_mm = tip_target_mm.x, o.axes.y_mm = tip_target_mm.y, o.axes.z_mm = tip_target_mm.z;
       for (std::size_t i = 0; i < to_.rotary_count; ++i) rotary_word(o.axes, to_.rotary(i).letter) = angles_target_deg[i];
     }
-    write_feed(b, s, tip_target_mm, angles_target_deg, o, out);
+    if (!s.pieces.empty()) o.number.reset(), o.comment.reset(), o.feed_mode.reset();  // on the first piece
+    if (s.rotary_moves && s.block_time_min) {
+      const vec3 start_target_mm = target_T_source_.map_point(
+          s.pieces.empty() ? *s.start_source_mm : s.pieces.back().tip_mm);
+      o.feed.reset();
+      piece_feed(b, s, s.pieces.size() + 1, tip_target_mm - start_target_mm, j, o, out);
+      restate_feed_ = true;  // the next block at the program's F says it again
+    } else {
+      if (restate_feed_ && feed_ == feed_policy::tcp && !s.rapid && !o.feed && s.feed_mm_per_min)
+        o.feed = *s.feed_mm_per_min;
+      write_feed(b, s, tip_target_mm, angles_target_deg, o, out);
+      if (!s.rapid && o.feed) restate_feed_ = false;
+    }
     warn_rotary_move(b, j, out);
     previous_motion_ = j;
     previous_step_ = s;
     emit(std::move(o));
+  }
+
+  /// Piece `k` (motion `j`) of subdivided block `b`, before its end: a straight move of the tip,
+  /// the first with the block's comment and number, each with its share of the block's time.
+  template <class Emit>
+  void write_piece(const program::block& b, const source_step& s, std::size_t k, std::size_t j,
+                   const program::block& whole, translation& out, Emit&& emit) {
+    program::block p;
+    p.where = b.where;
+    p.motion = s.motion;
+    p.feed_rapid = s.rapid && b.feed_rapid;
+    if (k == 0) p.number = whole.number, p.comment = whole.comment, p.feed_mode = whole.feed_mode;
+    switch_tcp(s, p);
+    const vec3 tip_target_mm = target_T_source_.map_point(s.pieces[k].tip_mm);
+    p.axes.x_mm = tip_target_mm.x, p.axes.y_mm = tip_target_mm.y, p.axes.z_mm = tip_target_mm.z;
+    for (std::size_t i = 0; i < to_.rotary_count; ++i)
+      rotary_word(p.axes, to_.rotary(i).letter) = to_degrees((*path_.angles[j])[i]).value;
+    const vec3 start_target_mm = target_T_source_.map_point(k == 0 ? *s.start_source_mm : s.pieces[k - 1].tip_mm);
+    if (!s.rapid) piece_feed(b, s, s.pieces.size() + 1, tip_target_mm - start_target_mm, j, p, out);
+    warn_rotary_move(b, j, out);
+    previous_motion_ = j;
+    ++out.blocks_added;
+    emit(std::move(p));
+  }
+
+  /// F of one of `n` equal pieces of an untracked block whose rotary axes move, the tip moving by
+  /// `chord_mm` into motion `j`: the piece keeps its share of the block's time T, (K15), as the
+  /// tip's speed |chord| n / T, or in inverse time n / T; a piece whose tip stands still is timed
+  /// over the target's rotary degrees, (K16).
+  void piece_feed(const program::block& b, const source_step& s, std::size_t n, const vec3& chord_mm, std::size_t j,
+                  program::block& o, translation& out) {
+    if (s.rapid) return;
+    const double time_min = *s.block_time_min / double(n);
+    if (feed_ == feed_policy::inverse_time) {
+      if (auto error = feed_refusal(feed_, output_language_)) {
+        if (!inverse_time_error_) out.errors.push_back(at(b, *error));
+        inverse_time_error_ = true;
+      }
+      o.feed = 1.0 / time_min;
+      if (!output_inverse_time_) o.feed_mode = program::feed_unit::inverse_time, output_inverse_time_ = true;
+      return;
+    }
+    double length = norm(chord_mm);
+    if (!(length > 1e-9) && j > 0 && path_.angles[j - 1]) {
+      std::array<double, 2> delta_deg{};
+      for (std::size_t i = 0; i < to_.rotary_count; ++i)
+        delta_deg[i] = to_degrees((*path_.angles[j])[i] - (*path_.angles[j - 1])[i]).value;
+      length = block_length({}, std::span<const double>(delta_deg.data(), to_.rotary_count));
+    }
+    if (length > 0.0) o.feed = length / time_min;
+  }
+
+  /// Whether piece `j` of block `b` (tip `tip_source_mm`) is within the target's reach and
+  /// travel; false, with an error, when not.
+  bool piece_reachable(const program::block& b, const source_step& s, std::size_t j, const vec3& tip_source_mm,
+                       translation& out) const {
+    std::string why;
+    if (!path_.angles[j])
+      why = "tool axis " + fixed(to_degrees(path_.gap[j]).value, 3) + "° outside the reach of " + std::string(to_.geometry.id);
+    else if (auto past = slide_past_travel(tip_source_mm, *path_.angles[j]))
+      why = past->why;
+    if (why.empty()) return true;
+    out.errors.push_back(at(b, std::string(to_.geometry.id) + " cannot reach a piece of this block (" + angles_text(s) +
+                                   "): " + why));
+    return false;
   }
 
   /// Reports motion block `b` (its `j`-th motion); false, with an error, when the target cannot
@@ -213,7 +313,7 @@ class nc_target {
       on_report(std::move(report));
       return false;
     }
-    if (auto past = slide_past_travel(s, *path_.angles[j])) {
+    if (auto past = slide_past_travel(s.tip_source_mm, *path_.angles[j])) {
       report.match = matchability::unreachable;
       report.linear_excess_mm = past->excess_mm;
       report.why = past->why;
@@ -236,12 +336,12 @@ class nc_target {
     std::string why;
   };
 
-  /// With a placement, the slides X, Y, Z (G7) of the tip of step `s` with the planned angles:
+  /// With a placement, the slides X, Y, Z (G7) of the source tip `tip_source_mm` with the planned angles:
   /// the one farthest past its travel, if any is by more than `linear_slack_mm`. An arc is
   /// checked at its end point.
-  std::optional<slide_excess> slide_past_travel(const source_step& s, const kin5::rotary_values& angles) const {
+  std::optional<slide_excess> slide_past_travel(const vec3& tip_source_mm, const kin5::rotary_values& angles) const {
     if (!placement_) return std::nullopt;
-    const vec3 tip_target_mm = target_T_source_.map_point(s.tip_source_mm);
+    const vec3 tip_target_mm = target_T_source_.map_point(tip_source_mm);
     const vec3 slides_mm = linear_axes_for(to_, angles, placement_->work_offset.map_point(tip_target_mm), *placement_);
     const std::array<double, 3> x{slides_mm.x, slides_mm.y, slides_mm.z};
     std::size_t worst = 0;

@@ -53,6 +53,13 @@ struct common_options {
   std::optional<run_inputs> placement;
   /// Work offsets mapped into another dialect's (work_offset_map.hpp).
   work_offset_map work_offsets;
+  /// Where the part sat on the source and its tool length: given, motion without tool-tip
+  /// tracking is read as machine coordinates and written as TCP (translate/untracked.hpp);
+  /// not given, it is refused.
+  std::optional<run_inputs> source_placement;
+  /// How far (mm) the written tool-tip path may stray from the source's, where a block read as
+  /// machine coordinates is cut into pieces because its rotary axes move.
+  double tolerance_mm = 0.005;
 };
 
 /// How to translate.
@@ -90,6 +97,9 @@ struct translation {
   /// Refusals the user allowed (`common_options::allow`): accepted knowingly, listed as warnings.
   std::vector<program::diagnostic> allowed;
   std::size_t blocks_read = 0, blocks_written = 0, passed_through = 0;
+  /// Blocks written in addition to the program's: pieces of blocks read as machine coordinates
+  /// whose rotary axes move (`blocks_written` counts them too).
+  std::size_t blocks_added = 0;
   /// Motion blocks per matchability class, indexed by `matchability` (direct, other branch,
   /// unreachable): complete even when `reports` keeps only the exceptions.
   std::array<std::size_t, 3> per_class{};

@@ -230,7 +230,7 @@ inline std::unique_ptr<block_translator> make_translator(const machine_model& fr
   using namespace translate_detail;
   const program::dialect out = output_dialect_of(options, to.geometry.id);
   return std::make_unique<two_pass_translator<nc_source, nc_target>>(
-      nc_source{from},
+      nc_source{from, options.common.source_placement, options.common.tolerance_mm},
       nc_target(to, options.setup.value_or(default_setup(from.geometry.id, to.geometry.id)), options.feed,
                 source_language, out, false),
       file, out, detail, translate_refusal(source_language, options.feed, out),
@@ -244,7 +244,7 @@ inline std::unique_ptr<block_translator> make_reverse(const machine_model& m, pr
                                                       const common_options& common = {}) {
   using namespace translate_detail;
   return std::make_unique<two_pass_translator<nc_source, cl_target>>(
-      nc_source{m}, cl_target(source_language), file, program::cl_data_dialect(), detail,
+      nc_source{m, common.source_placement, common.tolerance_mm}, cl_target(source_language), file, program::cl_data_dialect(), detail,
       translate_detail::is_cl_data(source_language) ? std::optional<std::string>("the input is already APT CL data")
                                                     : std::nullopt,
       source_context{source_language, {}, nullptr, "--machine"}, common);

@@ -27,12 +27,14 @@
 #include <charconv>
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
 #include "../kinematics/forward.hpp"
+#include "../kinematics/inverse_pose.hpp"
 #include "../kinematics/matchability.hpp"
 #include "../program/block.hpp"
 #include "../program/modal.hpp"
@@ -40,6 +42,7 @@
 #include "arc_plane.hpp"
 #include "options.hpp"
 #include "source_checks.hpp"
+#include "untracked.hpp"
 
 namespace kin5::translate_detail {
 
@@ -85,11 +88,13 @@ inline program::source_location feed_word_at(const program::block& b) {
 }
 
 inline constexpr std::string_view tcp_off_message =
-    "motion without tool-tip tracking (TCP): its tool tip depends on the machine geometry, which "
-    "kin5 does not model yet; switch TCP on (TRAORI, M128, G43.4) before the first motion";
+    "motion without tool-tip tracking (TCP): its tool tip depends on where the part sits and on the "
+    "tool length; give the source's --source-work-offset and --source-tool-length to read it as machine "
+    "coordinates, or switch TCP on (TRAORI, M128, G43.4) before the first motion";
 inline constexpr std::string_view rotary_tcp_off_message =
-    "rotary motion without tool-tip tracking (TCP) needs the machine geometry, which kin5 does not "
-    "model yet";
+    "rotary motion without tool-tip tracking (TCP): its tool tip depends on where the part sits and on "
+    "the tool length; give the source's --source-work-offset and --source-tool-length to read it as "
+    "machine coordinates";
 
 /// One input block after the source side: what it is and, for a motion, its pose.
 struct source_step {
@@ -107,6 +112,14 @@ struct source_step {
   std::optional<double> feed_mm_per_min;      ///< F in effect, when `feed_mode` is per minute
   std::optional<vec3> start_source_mm;        ///< tool tip before the block, when known
   arc_path arc_source;                        ///< a circular motion's arc, source frame
+  /// Read as machine coordinates (TCP off): tip and axis by (G9); the rotary axes may move.
+  bool untracked = false;
+  /// An untracked block whose rotary axes move, cut into pieces (untracked.hpp): the tip and
+  /// axis at the end of every piece but the last (whose end is the block's own), in order.
+  std::vector<tool_pose> pieces;
+  bool rotary_moves = false;  ///< an untracked block whose rotary axes move from a known start
+  /// An untracked block at a feed per minute: its time (min), (K16) over the machine axes / F.
+  std::optional<double> block_time_min;
 };
 
 /// The source pose of a motion step as a report shows it: "A=-77.954 B=3.536" (degrees, letters
@@ -124,9 +137,27 @@ inline std::string angles_text(const source_step& s) {
   return text;
 }
 
+/// What block `b` says besides its motion that takes effect at a moment of the block (tool,
+/// spindle, M functions, state words, the program end), if anything: such a block cannot be cut
+/// into pieces without choosing that moment.
+inline const char* words_of_a_whole_block(const program::block& b) {
+  if (b.program_end) return "the program end";
+  if (b.tool || b.tool_name) return "a tool";
+  if (b.spindle_rpm) return "a spindle speed";
+  if (!b.m_codes.empty()) return "an M function";
+  if (!b.state.empty()) return "a tool, spindle, coolant, offset, plane, dwell or stop word";
+  if (!b.kept_words.empty()) return "a kept word";
+  return nullptr;
+}
+
 /// Source side of an NC program of machine `from`: angles → tool axis by (G1).
 struct nc_source {
   machine_model from;
+  /// The source's work offset and tool length: given, motion without tool-tip tracking is read
+  /// as machine coordinates (untracked.hpp); empty, it is refused.
+  std::optional<run_inputs> untracked{};
+  /// How far (mm) the tip of a subdivided untracked block may stray from the source's path.
+  double tolerance_mm = 0.005;
   static constexpr bool needs_tcp = true;
   static constexpr bool has_angles = true;
   /// Values rounded into a tool axis: one per rotary axis (angle_tolerance.hpp).
@@ -204,6 +235,8 @@ class source_walker {
   /// `source_step::principal` of a motion step (else only its angles).
   source_step next(const program::block& b, translation* out, bool kinematics) {
     const report to{out, &allow_};
+    if constexpr (Source::needs_tcp)
+      if (b.tcp && *b.tcp != modal_.tcp) rebase_on_switch(*b.tcp);
     const program::modal_state before = modal_;
     modal_.apply(b);
     source_step s;
@@ -223,13 +256,18 @@ class source_walker {
       return s;
     }
     if (b.machine_coordinates || b.passthrough) {
+      last_tip_.reset();  // the tool position after it is unknown
       s.what = source_step::kind::passthrough;
       to.warn(at(b, b.machine_coordinates ? "machine-coordinate move passed through unchanged, not through "
                                             "kinematics; the tool position after it is unknown"
                                           : "block not understood: passed through unchanged"));
       return s;
     }
-    if (!b.moves()) return s;  // copy
+    if (!b.moves()) {  // copy; an arc centre on its own is mapped like the points of its arc
+      if constexpr (Source::needs_tcp)
+        if (untracked_now() && b.arc && b.arc->centre_mm && !untracked_centre(b, s, to)) s.what = source_step::kind::failed;
+      return s;
+    }
     s.what = source_step::kind::failed;
     if (!tool_tip(b, before, s, to)) return s;
     if (!s.rapid && modal_.feed == 0.0) {  // LinuxCNC: "Cannot do g1 with zero feed rate"
@@ -247,6 +285,11 @@ class source_walker {
     s.feed_mode = modal_.feed_mode;
     if (modal_.feed_mode == program::feed_unit::per_minute) s.feed_mm_per_min = modal_.feed;
     if (program::is_arc(s.motion) && !arc_of(b, before, s, to)) return s;
+    if constexpr (Source::needs_tcp) {
+      if (s.untracked && !untracked_tip(b, before, s, to)) return s;
+      if (!s.untracked && last_tip_ && last_untracked_) s.start_source_mm = last_tip_;  // TCP switched on
+    }
+    last_tip_ = s.tip_source_mm, last_untracked_ = s.untracked;
     s.what = source_step::kind::motion;
     return s;
   }
@@ -257,6 +300,10 @@ class source_walker {
   std::string warned_letters_;  // rotary axes already warned about as having no value
   source_context context_;
   allowances allow_;
+  std::optional<vec3> last_tip_;  // tip of the last motion (source workpiece frame), while known
+  bool last_untracked_ = false;   // whether that motion was read as machine coordinates
+  std::optional<std::optional<long long>> untracked_tool_;                 // tool of the first untracked motion
+  std::optional<std::optional<program::work_offset>> untracked_offset_;    // and its work offset
 
   /// Where diagnostics go: the result of the first pass, or nowhere.
   struct report {
@@ -276,7 +323,7 @@ class source_walker {
   /// Motion kind, tool tip and start point of motion block `b`; false (an error) when
   /// tool-tip tracking is off or the tip is not known.
   bool tool_tip(const program::block& b, const program::modal_state& before, source_step& s, const report& to) {
-    if (Source::needs_tcp && !modal_.tcp) {
+    if (Source::needs_tcp && !modal_.tcp && !untracked_now()) {
       to.fail(at(b, std::string(b.axes.has_rotary() || modal_.rotary_moved ? rotary_tcp_off_message
                                                                              : tcp_off_message)));
       return false;
@@ -295,6 +342,153 @@ class source_walker {
     }
     s.tip_source_mm = {*modal_.x_mm, *modal_.y_mm, *modal_.z_mm};
     if (before.x_mm && before.y_mm && before.z_mm) s.start_source_mm = vec3{*before.x_mm, *before.y_mm, *before.z_mm};
+    s.untracked = Source::needs_tcp && !modal_.tcp;
+    return true;
+  }
+
+  /// Tool-tip tracking switched on (`on`) or off: an axis the next block does not program stays
+  /// where it stands, so the modal X Y Z become the current position in the new reading — the
+  /// tip, or the program point (G8) of the slides (G7) — when motion is read both ways.
+  void rebase_on_switch(bool on) {
+    if (!source_.untracked || !last_tip_) return;
+    vec3 p = *last_tip_;
+    if (!on) {
+      const auto angles = angles_of(modal_);
+      if (!angles) return;
+      const run_inputs& in = *source_.untracked;
+      p = untracked_point(source_.from, linear_axes_for(source_.from, *angles, in.work_offset.map_point(p), in), in);
+    }
+    modal_.x_mm = p.x, modal_.y_mm = p.y, modal_.z_mm = p.z;
+  }
+
+  /// Whether motion now is read as machine coordinates: TCP off and the source's placement known.
+  bool untracked_now() const {
+    if constexpr (Source::needs_tcp) return !modal_.tcp && source_.untracked.has_value();
+    return false;
+  }
+
+  /// The commanded angles (radians, chain order) of modal state `m`, if every rotary axis has a value.
+  std::optional<kin5::rotary_values> angles_of(const program::modal_state& m) const {
+    kin5::rotary_values angles{};
+    for (std::size_t i = 0; i < source_.from.rotary_count; ++i) {
+      const auto v_deg = m.value(to_char(source_.from.rotary(i).letter));
+      if (!v_deg) return std::nullopt;
+      angles[i] = to_radians(degrees{*v_deg});
+    }
+    return angles;
+  }
+
+  /// Whether the tool and the work offset are those the source's one tool length and one work
+  /// offset were given for: the first untracked motion's, where they matter (a head turns the
+  /// tool, a table carries the part); false, with an error, when not.
+  bool same_placement(const program::block& b, const report& to) {
+    bool head = false, table = false;
+    for (std::size_t i = 0; i < source_.from.rotary_count; ++i)
+      (source_.from.rotary(i).side == mount::head ? head : table) = true;
+    if (!untracked_tool_) untracked_tool_ = modal_.active_tool, untracked_offset_ = modal_.work_offset;
+    const char* why = head && *untracked_tool_ != modal_.active_tool ? "another tool"
+                      : table && *untracked_offset_ != modal_.work_offset ? "another work offset"
+                                                                          : nullptr;
+    if (why) to.fail(at(b, std::string("motion without tool-tip tracking with ") + why +
+                               " than the first: --source-tool-length and --source-work-offset give one of each"));
+    return why == nullptr;
+  }
+
+  /// Tip and axis of untracked motion block `b` (G9), its start, its arc, its pieces when its
+  /// rotary axes move, and its time; false, with an error, when it cannot be read.
+  bool untracked_tip(const program::block& b, const program::modal_state& before, source_step& s, const report& to) {
+    const machine_model& m = source_.from;
+    const run_inputs& in = *source_.untracked;
+    if (s.rotary_count == 0) {
+      to.fail(at(b, "a tool-axis vector without tool-tip tracking cannot be read as machine coordinates"));
+      return false;
+    }
+    if (!same_placement(b, to)) return false;
+    untracked_move move;
+    move.end_mm = s.tip_source_mm;
+    for (std::size_t i = 0; i < s.rotary_count; ++i) move.end[i] = to_radians(degrees{s.rotary_source_deg[i]});
+    const auto start_angles = angles_of(before);
+    const bool start_known = last_tip_ && start_angles && s.start_source_mm;
+    if (start_known) {
+      move.start = *start_angles;
+      // After a TCP block the slides stand where its tip put them: their program point (G8).
+      move.start_mm = last_untracked_ ? *s.start_source_mm
+                                      : untracked_point(m, linear_axes_for(m, move.start, in.work_offset.map_point(*last_tip_), in), in);
+    }
+    const bool turns = !start_known || move.start != move.end;
+    const tool_pose end = untracked_pose(m, move.end_mm, move.end, in);
+    s.tip_source_mm = end.tip_mm, s.u_source = end.axis;
+    s.start_source_mm = start_known ? std::optional<vec3>(move.at(m, in, 0.0).tip_mm) : std::nullopt;
+    if (start_known && !s.rapid && s.feed_mm_per_min && *s.feed_mm_per_min > 0.0) {
+      std::array<double, 2> delta_deg{};
+      for (std::size_t i = 0; i < s.rotary_count; ++i) delta_deg[i] = to_degrees(move.end[i] - move.start[i]).value;
+      s.block_time_min = block_length(move.end_mm - move.start_mm, std::span<const double>(delta_deg.data(), s.rotary_count)) /
+                         *s.feed_mm_per_min;
+    }
+    if (program::is_arc(s.motion)) return untracked_arc(b, move.end, s, to);
+    if (!turns) return true;
+    s.rotary_moves = start_known;
+    if (!start_known) {
+      if (s.rapid) return true;  // a positioning move from an unknown place: only its end is programmed
+      to.fail(at(b, "feed move without tool-tip tracking whose rotary axes move from an unknown start: the path "
+                    "of its tool tip is not known"));
+      return false;
+    }
+    if (!s.rapid && !s.block_time_min) {
+      to.fail(at(b, "feed move without tool-tip tracking whose rotary axes move, in inverse time: its pieces' "
+                    "feeds are not translated"));
+      return false;
+    }
+    if (const char* words = words_of_a_whole_block(b)) {
+      to.fail(at(b, std::string("rotary move without tool-tip tracking that also says ") + words +
+                        ": where it takes effect among the block's pieces is not translated; give it a block of its own"));
+      return false;
+    }
+    const auto n = pieces_within(m, in, move, source_.tolerance_mm);
+    if (!n) {
+      to.fail(at(b, "rotary move without tool-tip tracking needs more than 100000 pieces to stay within --tolerance"));
+      return false;
+    }
+    for (std::size_t k = 1; k < *n; ++k) s.pieces.push_back(move.at(m, in, double(k) / double(*n)));
+    return true;
+  }
+
+  /// The arc of untracked block `b` at the fixed angles `angles`: its centre and plane carried
+  /// by the chain's rigid map (G9); false, with an error, when the plane lands on no principal one.
+  bool untracked_arc(const program::block& b, const kin5::rotary_values& angles, source_step& s, const report& to) const {
+    const machine_model& m = source_.from;
+    const run_inputs& in = *source_.untracked;
+    arc_path& arc = s.arc_source;
+    const vec3 origin = untracked_pose(m, {}, angles, in).tip_mm;
+    const auto mapped = principal_plane(untracked_pose(m, plane_normal(arc.plane), angles, in).tip_mm - origin);
+    if (!mapped) {
+      to.fail(at(b, "circular move without tool-tip tracking cannot be mapped: the rotary axes turn its plane " +
+                        std::string(plane_name(arc.plane)) + " onto no principal plane"));
+      return false;
+    }
+    if (arc.centre_mm) arc.centre_mm = untracked_pose(m, *arc.centre_mm, angles, in).tip_mm;
+    arc.plane = mapped->first;
+    if (mapped->second) {
+      arc.clockwise = !arc.clockwise;
+      s.motion = arc.clockwise ? program::motion_kind::arc_cw : program::motion_kind::arc_ccw;
+    }
+    return true;
+  }
+
+  /// An arc centre on its own (Heidenhain CC) while motion is untracked: carried like its arc's
+  /// points, in `s.arc_source.centre_mm`; false, with an error, when its plane would turn.
+  bool untracked_centre(const program::block& b, source_step& s, const report& to) const {
+    const auto angles = angles_of(modal_);
+    const machine_model& m = source_.from;
+    const run_inputs& in = *source_.untracked;
+    const vec3 n = plane_normal(b.arc->plane);
+    const bool same_plane = angles && norm(untracked_pose(m, n, *angles, in).tip_mm - untracked_pose(m, {}, *angles, in).tip_mm - n) < 1e-9;
+    if (!same_plane) {
+      to.fail(at(b, "circle centre without tool-tip tracking cannot be mapped: the rotary axes are unset or turn its plane"));
+      return false;
+    }
+    s.untracked = true;
+    s.arc_source.centre_mm = untracked_pose(m, *b.arc->centre_mm, *angles, in).tip_mm;
     return true;
   }
 
