@@ -398,6 +398,7 @@ class nc_target {
   void write_feed(const program::block& b, const source_step& s, const vec3& tip_target_mm,
                   const std::array<double, 2>& angles_target_deg, program::block& o, translation& out) {
     if (s.rapid) {
+      if (o.feed) restate_feed_ = true;  // `G0 X… F300`: F300 is for the feed moves after it
       o.feed.reset();
     } else if (s.feed_mode == program::feed_unit::inverse_time) {
       // Already inverse time: the block time is kept by construction.

@@ -117,6 +117,8 @@ class writer {
   // From a coordinate-less block of another dialect, for the next move that has no F of its own.
   std::optional<double> pending_feed_;
   bool pending_rapid_ = false;
+  // The source's motion mode is G0 (ISO, Siemens, LinuxCNC: modal; an L is one block's own).
+  bool modal_rapid_ = false;
   std::vector<std::string> lines_;  // the block's lines, reused from block to block (see `add`)
   std::size_t line_count_ = 0;
   std::string line_;                // the motion line being built
@@ -223,6 +225,7 @@ class writer {
     const bool coordless = b.axes.empty() && !b.arc;
     if (!coordless) return false;
     if (b.feed && !(b.tool || b.spindle_rpm)) pending_feed_ = b.feed;
+    if (b.motion) modal_rapid_ = *b.motion == motion_kind::rapid;
     if (b.motion == motion_kind::rapid || b.feed_rapid) pending_rapid_ = true;
     else if (b.motion || b.feed) pending_rapid_ = false;
     return b.motion || b.feed_rapid || (b.feed && !(b.tool || b.spindle_rpm));
@@ -350,8 +353,18 @@ class writer {
 
   /// ` F…`, ` FMAX`, or the F carried from a coordinate-less block.
   void feed_word(std::string& l, const block& b, std::size_t bi) {
+    // A move without a motion word of its own is at rapid traverse under a modal G0 of the
+    // source: FMAX holds for its block only, so each such block says it again.
+    if (b.motion) modal_rapid_ = *b.motion == motion_kind::rapid;
+    const bool modal_rapid = !same_ && !b.motion && modal_rapid_;
     if (b.feed && (b.feed_rapid || b.motion == motion_kind::rapid)) fail(b, bi, "block has both a feed and rapid traverse");
-    const bool rapid = b.feed_rapid || b.motion == motion_kind::rapid || (pending_rapid_ && !b.motion && !b.feed);
+    if (modal_rapid && b.feed) {  // `X10 F200` under G0: a rapid; F200 is for the next feed move
+      l += " FMAX";
+      pending_feed_ = b.feed;
+      pending_rapid_ = false;
+      return;
+    }
+    const bool rapid = b.feed_rapid || b.motion == motion_kind::rapid || modal_rapid || (pending_rapid_ && !b.motion && !b.feed);
     if (b.feed) l += " F", append_number(l, *b.feed, rate(*b.feed));
     else if (rapid) l += " FMAX";
     else if (pending_feed_) l += " F", append_number(l, *pending_feed_, rate(*pending_feed_));
