@@ -70,6 +70,17 @@ inline std::string draw_blanks() {
   return *rc::gen::element<std::string>("", "", " ", "  ", "\t");
 }
 
+/// One line of `words`: drawn blanks before, after, and (at random) between words instead of a
+/// single space, except before a `;` comment. Without its end of line.
+inline std::string draw_line(const std::vector<std::string>& words) {
+  std::string line = draw_blanks();
+  for (std::size_t k = 0; k < words.size(); ++k) {
+    if (k) line += *rc::gen::inRange(0, 3) == 0 && words[k].front() != ';' ? draw_blanks() : " ";
+    line += words[k];
+  }
+  return line + draw_blanks();
+}
+
 /// Text for a comment or name: letters, digits and inner spaces, no outer blanks.
 inline std::string draw_words(std::size_t max_words = 3) {
   const auto n = *rc::gen::inRange<std::size_t>(1, max_words + 1);

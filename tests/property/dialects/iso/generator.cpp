@@ -268,12 +268,7 @@ std::string spell(const std::vector<item>& items) {
   std::string text;
   for (const item& it : items) {
     if (*rc::gen::inRange(0, 10) == 0) text += draw_blanks() + eol;
-    std::string line = draw_blanks();
-    for (std::size_t k = 0; k < it.words.size(); ++k) {
-      if (k) line += *rc::gen::inRange(0, 3) == 0 && it.words[k].front() != ';' ? draw_blanks() : " ";
-      line += it.words[k];
-    }
-    text += line + draw_blanks() + eol;
+    text += kin5::test::draw_line(it.words) + eol;
   }
   return text;
 }

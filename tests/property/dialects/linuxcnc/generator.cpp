@@ -238,12 +238,7 @@ std::string spell(const std::vector<item>& items) {
   const std::string eol = *rc::gen::element<std::string>("\n", "\r\n");
   std::string text;
   for (const item& it : items) {
-    std::string line = draw_blanks();
-    for (std::size_t k = 0; k < it.words.size(); ++k) {
-      if (k) line += *rc::gen::inRange(0, 3) == 0 && it.words[k].front() != ';' ? draw_blanks() : " ";
-      line += it.words[k];
-    }
-    text += line + draw_blanks() + eol;
+    text += kin5::test::draw_line(it.words) + eol;
   }
   return text;
 }
