@@ -518,6 +518,14 @@ EOF
     run 2 translate --from ac-trunnion --to dmu-50v -o no.h u.mpf
     grep -q '^u\.mpf:2:1: error: .*--source-work-offset and --source-tool-length' err || { report "no refusal at line 2"; show err; }
     [ -e no.h ] && report "no.h written"
+    # The placement options are checked as the target's are: both or neither, 3 numbers, a length.
+    run 1 translate --from ac-trunnion --to dmu-50v --source-work-offset 0,0 --source-tool-length 100 -o no.h u.mpf
+    grep -q 'source-work-offset needs 3 numbers' err || { report "2 numbers accepted"; show err; }
+    run 1 translate --from ac-trunnion --to dmu-50v --source-work-offset 0,0,-200 --source-tool-length -1 -o no.h u.mpf
+    grep -q 'source-tool-length: give a length in mm, 0 or more' err || { report "negative length accepted"; show err; }
+    run 1 translate --from ac-trunnion --to dmu-50v --source-work-offset 0,0,-200 -o no.h u.mpf
+    grep -q 'source-work-offset and --source-tool-length go together' err || { report "offset alone accepted"; show err; }
+    [ -e no.h ] && report "no.h written"
     run 1 translate --from ac-trunnion --to dmu-50v --source-work-offset 0,0,-200 -o no.h u.mpf
     run 0 translate --from ac-trunnion --to dmu-50v --source-work-offset 0,0,-200 --source-tool-length 100 -o u.h u.mpf
     grep -q 'added: rotary moves without tool-tip tracking cut into pieces' err || { report "no count of added blocks"; show err; }

@@ -308,6 +308,28 @@ struct common_arguments {
 
 std::optional<std::vector<double>> parse_list(std::string_view text, std::size_t count);
 
+/// A tool length (mm, 0 or more; none: 0) and a work offset X,Y,Z (mm) from the options
+/// --PREFIXtool-length and --PREFIXwork-offset; nothing, with the reason printed, on bad input.
+std::optional<run_inputs> parse_run_inputs(std::string_view command, std::string_view prefix,
+                                           const std::string& tool_length, const std::string& work_offset) {
+  run_inputs in;
+  if (!tool_length.empty()) {
+    const auto l = parse_real(tool_length);
+    if (!l || !(*l >= 0.0) || !prog::writable(*l)) {
+      std::cerr << "kin5 " << command << ": --" << prefix << "tool-length: give a length in mm, 0 or more\n";
+      return std::nullopt;
+    }
+    in.tool_length_mm = *l;
+  }
+  const auto w = parse_list(work_offset, 3);
+  if (!w || !prog::writable((*w)[0]) || !prog::writable((*w)[1]) || !prog::writable((*w)[2])) {
+    std::cerr << "kin5 " << command << ": --" << prefix << "work-offset needs 3 numbers X,Y,Z (mm, within ±1e9)\n";
+    return std::nullopt;
+  }
+  in.work_offset.translation_mm = {(*w)[0], (*w)[1], (*w)[2]};
+  return in;
+}
+
 /// `c.placement` from --tool-length and --work-offset (the check of the target's linear travel
 /// runs when the part's place is given); false, with the reason printed, on bad input.
 bool parse_placement(std::string_view command, const common_arguments& a, common_options& c) {
@@ -317,23 +339,8 @@ bool parse_placement(std::string_view command, const common_arguments& a, common
                                        "only where the part's place on it is given\n";
     return false;
   }
-  run_inputs in;
-  if (!a.tool_length.empty()) {
-    const auto l = parse_real(a.tool_length);
-    if (!l || !(*l >= 0.0) || !prog::writable(*l)) {
-      std::cerr << "kin5 " << command << ": --tool-length: give a length in mm, 0 or more\n";
-      return false;
-    }
-    in.tool_length_mm = *l;
-  }
-  const auto w = parse_list(a.work_offset, 3);
-  if (!w || !prog::writable((*w)[0]) || !prog::writable((*w)[1]) || !prog::writable((*w)[2])) {
-    std::cerr << "kin5 " << command << ": --work-offset needs 3 numbers X,Y,Z (mm, within ±1e9)\n";
-    return false;
-  }
-  in.work_offset.translation_mm = {(*w)[0], (*w)[1], (*w)[2]};
-  c.placement = in;
-  return true;
+  c.placement = parse_run_inputs(command, "", a.tool_length, a.work_offset);
+  return c.placement.has_value();
 }
 
 /// `c.source_placement` from --source-tool-length and --source-work-offset (both or neither)
@@ -352,21 +359,8 @@ bool parse_source_placement(std::string_view command, const common_arguments& a,
                                        "tool-tip tracking is read as machine coordinates only where both are known\n";
     return false;
   }
-  run_inputs in;
-  const auto l = parse_real(a.source_tool_length);
-  if (!l || !(*l >= 0.0) || !prog::writable(*l)) {
-    std::cerr << "kin5 " << command << ": --source-tool-length: give a length in mm, 0 or more\n";
-    return false;
-  }
-  in.tool_length_mm = *l;
-  const auto w = parse_list(a.source_work_offset, 3);
-  if (!w || !prog::writable((*w)[0]) || !prog::writable((*w)[1]) || !prog::writable((*w)[2])) {
-    std::cerr << "kin5 " << command << ": --source-work-offset needs 3 numbers X,Y,Z (mm, within ±1e9)\n";
-    return false;
-  }
-  in.work_offset.translation_mm = {(*w)[0], (*w)[1], (*w)[2]};
-  c.source_placement = in;
-  return true;
+  c.source_placement = parse_run_inputs(command, "source-", a.source_tool_length, a.source_work_offset);
+  return c.source_placement.has_value();
 }
 
 /// `common_options` from `a`; prints the reason and returns nothing on bad input.
