@@ -134,7 +134,7 @@ inline std::vector<shift_constraint> shift_constraints(const machine_model& to, 
     }
   }
   std::vector<shift_constraint> out;
-  for (const auto& [key, c] : rows) out.push_back(c);
+  for (const auto& row : rows) out.push_back(row.second);
   return out;
 }
 
