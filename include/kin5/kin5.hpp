@@ -13,4 +13,5 @@
 #include "translate/feed.hpp"
 #include "translate/setup.hpp"
 #include "translate/stream.hpp"
+#include "translate/run_report.hpp"
 #include "translate/translate.hpp"

@@ -164,6 +164,27 @@ case "$name" in
     [ -s out ] && report "stdout not empty"
     [ "$fail" = 0 ] || show err
     ;;
+  unreachable-runs)
+    # Consecutive unreachable blocks are one error per run, with its worst block; a comment
+    # inside a run does not split it, a reachable block does. A > 0 on the DMU: gap A (as above).
+    {
+      printf '%s\n' 'N10 G17 G90 G94' 'N20 TRAORI' 'G1 X0 Y0 Z50 A-45 B30 F1000'
+      awk 'BEGIN { for (i = 0; i < 20000; ++i) { if (i == 10000) print "; midway"; printf "G1 X%d Y0 Z50 A%d B30\n", i % 100, 5 + i % 20 } }'
+      printf '%s\n' 'G1 X1 Y0 Z50 A-30 B30' 'G1 X2 Y0 Z50 A7 B30' 'G1 X3 Y0 Z50 A8 B30' 'G1 X4 Y0 Z50 A-30 B30' \
+        'G1 X5 Y0 Z50 A9 B30' 'N90 TRAFOOF' 'N100 M30'
+    } >runs.mpf
+    run 3 translate --from sajo-12000p --to dmu-80p -o runs.h runs.mpf
+    [ "$(wc -l <err)" = 5 ] || report "$(wc -l <err) lines on stderr, expected 5 (3 errors, summary, total)"
+    grep -qx 'runs.mpf:4:1: error: dmu-80p cannot reach the 20000 blocks of lines 4-20004; the worst, at line 23: tool axis 24.000° outside the reach of dmu-80p' err ||
+      report "run of lines 4-20004 not one error with its worst block"
+    grep -qx 'runs.mpf:20006:1: error: dmu-80p cannot reach the 2 blocks of lines 20006-20007; the worst, at line 20007: tool axis 8.000° outside the reach of dmu-80p' err ||
+      report "run of lines 20006-20007 not one error"
+    grep -Eq '^runs.mpf:20009:1: error: dmu-80p cannot reach this block \(A=9(\.0+)? B=30(\.0+)?\): tool axis 9.000° outside' err ||
+      report "a block alone is not its own error"
+    grep -q ' 3 direct, 0 other-branch, 20003 unreachable$' err || report "summary counts"
+    grep -q '^kin5 translate: 20003 blocks cannot be reached on dmu-80p; nothing written$' err || report "total"
+    [ "$fail" = 0 ] || show err
+    ;;
   no-partial)
     # A failing run leaves an existing OUT byte for byte as it was, creates no new OUT, and
     # leaves no temporary file behind; a successful one replaces OUT.
@@ -489,11 +510,11 @@ EOF
       '4 L X+10 Y+20 Z+60 B+0 C+0 F1000' '5 M129' '6 END PGM T2 MM' >t2.h
     # offset -400, tool 100: Z = -70 and -40: within.
     run 0 translate --from dmu-80p --to dmu-80p --tool-length 100 --work-offset 0,0,-400 -o ok.h t2.h
-    # offset -300: Z = 30 and 60, past 0 by 30 and 60 mm; both blocks reported, nothing written.
+    # offset -300: Z = 30 and 60, past 0 by 30 and 60 mm; both blocks reported, as one run whose
+    # worst is line 5; nothing written.
     run 3 translate --from dmu-80p --to dmu-80p --tool-length 100 --work-offset 0,0,-300 -o past.h t2.h
-    grep -q '^t2\.h:4:[0-9]*: error: .*slide Z=30\.000 mm, 30\.000 mm past its travel \[-600\.000, 0\.000\] mm' err ||
-      { report "Z 30 mm past not reported at line 4"; show err; }
-    grep -q '^t2\.h:5:[0-9]*: error: .*slide Z=60\.000 mm, 60\.000 mm past' err || { report "Z 60 mm past not reported at line 5"; show err; }
+    grep -q '^t2\.h:4:[0-9]*: error: dmu-80p cannot reach the 2 blocks of lines 4-5; the worst, at line 5: slide Z=60\.000 mm, 60\.000 mm past its travel \[-600\.000, 0\.000\] mm' err ||
+      { report "Z 30 and 60 mm past not reported as lines 4-5, worst line 5"; show err; }
     grep -q '2 unreachable' err || { report "not counted as unreachable"; show err; }
     [ -e past.h ] && report "past.h written"
     # offset -940: Z = -610 (10 mm below -600) and -580: only the first block.

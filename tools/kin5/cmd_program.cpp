@@ -10,9 +10,10 @@
 // streaming driver (translate/stream.hpp: two passes, the second over compact block records),
 // which writes each output block as it is made to OUT (a path, or '-' / nothing for stdout).
 // Everything else goes to stderr:
-//   * every diagnostic as `FILE:LINE:COL: error: ...` or `... warning: ...`, all of them;
+//   * every diagnostic as `FILE:LINE:COL: error: ...` or `... warning: ...`;
 //   * every block the target cannot reach, as an error at the block, with its source angles
-//     and the angular gap;
+//     and the angular gap; a run of consecutive ones as one error, with its worst block;
+//   * of each severity the first 100 (errors beyond them counted, in one line);
 //   * one summary line: blocks read, written, passed through, and per matchability class.
 //
 // Exit codes (commands.hpp): 0 written; 1 bad arguments; 2 the input cannot be read or
@@ -37,6 +38,7 @@
 
 #include <kin5/program/io.hpp>
 #include <kin5/program/number.hpp>
+#include <kin5/translate/run_report.hpp>
 #include <kin5/translate/translate.hpp>
 #include <kin5/translate/stream.hpp>
 
@@ -152,6 +154,31 @@ prog::diagnostic other_branch_note(const block_report& r) {
   return {r.where, text};
 }
 
+/// One error for a run of more than one unreachable block, at its first block.
+prog::diagnostic range_error(const unreachable_range& r, const std::string& target) {
+  return {r.first, target + " cannot reach the " + std::to_string(r.blocks) + " blocks of lines " +
+                       std::to_string(r.first.line) + "-" + std::to_string(r.last.line) + "; the worst, at line " +
+                       std::to_string(r.worst.line) + ": " + r.worst_why};
+}
+
+/// The errors of `t`, but each run of more than one unreachable block (`ranges`) as one error
+/// (`range_error`) in place of one per block.
+std::vector<prog::diagnostic> errors_by_run(const translation& t, const std::vector<unreachable_range>& ranges,
+                                            const std::string& target) {
+  std::vector<prog::diagnostic> out;
+  std::vector<const unreachable_range*> runs;  // of more than one block, in line order
+  for (const auto& r : ranges)
+    if (r.blocks > 1) runs.push_back(&r), out.push_back(range_error(r, target));
+  const std::string unreachable = target + " cannot reach this block (";
+  for (const auto& e : t.errors) {
+    const auto after = std::upper_bound(runs.begin(), runs.end(), e.where.line,
+                                        [](std::size_t line, const unreachable_range* r) { return line < r->first.line; });
+    const bool in_run = after != runs.begin() && e.where.line <= (*(after - 1))->last.line;
+    if (!(in_run && e.message.starts_with(unreachable))) out.push_back(e);
+  }
+  return out;
+}
+
 // ---- the common run -----------------------------------------------------------------------
 
 /// What one program subcommand does, once its arguments are checked.
@@ -216,10 +243,11 @@ int execute(const job& j) {
   const bool file_failed = run.sink_failed;                            // the output file: `out.error()` says why
 
   const translation& result = translator->result();
-  // Unreachable blocks come as errors too (with their source angles and gap), one per report.
+  // Unreachable blocks come as errors too (with their source angles and gap): one per block
+  // that stands alone, one per run of consecutive unreachable blocks (with its worst block).
   {
     std::vector<message> messages;
-    collect(messages, result.errors, "error");
+    collect(messages, errors_by_run(result, unreachable_ranges(result.reports), j.target), "error");
     collect(messages, result.warnings, "warning");
     for (auto d : result.allowed) {  // refusals the user accepted (--allow)
       d.message += " [allowed by " + d.option + "]";

@@ -86,6 +86,9 @@ struct block_report {
   std::string source_angles;  ///< the source pose as written/modal, e.g. "A=-77.954 B=3.536" (degrees)
   std::string why;            ///< the reason, when not direct
   double linear_excess_mm = 0.0;  ///< how far a slide lies past its travel, when that is why
+  /// The block's place among the motion blocks reported (from 0): consecutive unreachable blocks
+  /// are grouped by it (run_report.hpp).
+  std::size_t ordinal = 0;
 };
 
 /// The result of `translate`, `reverse` or `post`.

@@ -138,6 +138,7 @@ class two_pass_translator final : public block_translator {
           emit(std::move(o));
         },
         [&](block_report&& r) {
+          r.ordinal = result_.per_class[0] + result_.per_class[1] + result_.per_class[2];
           ++result_.per_class[static_cast<std::size_t>(r.match)];
           if (detail_ == report_detail::every_block || r.match != matchability::direct) {
             r.source_angles = angles_text(s);
