@@ -12,6 +12,7 @@ packages=(
   libtomlplusplus-dev      # machine files (TOML)
   clang libclang-rt-14-dev # libFuzzer targets
   chromium fonts-dejavu-core libpng-dev  # the sphere maps checked in a browser (tests/match)
+  python3                  # JSON reports parsed back (tests/cli_program/report.sh)
 )
 missing=()
 for p in "${packages[@]}"; do

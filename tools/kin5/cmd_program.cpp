@@ -15,6 +15,8 @@
 //     and the angular gap; a run of consecutive ones as one error, with its worst block;
 //   * of each severity the first 100 (errors beyond them counted, in one line);
 //   * one summary line: blocks read, written, passed through, and per matchability class.
+// With --report FILE.json, the account of the run as JSON (translate/run_report.hpp), written
+// whatever the exit code, as OUT is (a temporary file linked into place).
 //
 // Exit codes (commands.hpp): 0 written; 1 bad arguments; 2 the input cannot be read or
 // translated, or the output cannot be written; 3 blocks unreachable on the target. On any
@@ -166,17 +168,15 @@ prog::diagnostic range_error(const unreachable_range& r, const std::string& targ
 std::vector<prog::diagnostic> errors_by_run(const translation& t, const std::vector<unreachable_range>& ranges,
                                             const std::string& target) {
   std::vector<prog::diagnostic> out;
-  std::vector<const unreachable_range*> runs;  // of more than one block, in line order
   for (const auto& r : ranges)
-    if (r.blocks > 1) runs.push_back(&r), out.push_back(range_error(r, target));
-  const std::string unreachable = target + " cannot reach this block (";
-  for (const auto& e : t.errors) {
-    const auto after = std::upper_bound(runs.begin(), runs.end(), e.where.line,
-                                        [](std::size_t line, const unreachable_range* r) { return line < r->first.line; });
-    const bool in_run = after != runs.begin() && e.where.line <= (*(after - 1))->last.line;
-    if (!(in_run && e.message.starts_with(unreachable))) out.push_back(e);
-  }
+    if (r.blocks > 1) out.push_back(range_error(r, target));
+  for (auto& e : errors_outside_runs(t.errors, ranges, target, 2)) out.push_back(std::move(e));
   return out;
+}
+
+/// An error about a whole file (line 0), e.g. one that cannot be read or written.
+prog::diagnostic file_error(const std::string& file, std::string message) {
+  return {prog::source_location{file, 0, 0}, std::move(message)};
 }
 
 // ---- the common run -----------------------------------------------------------------------
@@ -186,47 +186,108 @@ struct job {
   std::string command;      ///< "translate", "reverse", "post": the prefix of its messages
   std::string input_path;   ///< '-' for stdin
   std::string output_path;  ///< '-' for stdout
+  std::string report_path;  ///< --report: the JSON account of the run; empty: none
   prog::dialect input_dialect{};
   bool input_dialect_given = false;  ///< false: a dialect recognised by guess_dialect wins
   prog::dialect output_dialect{};
   std::string target;       ///< what the output is for, named when blocks are unreachable
+  std::optional<std::string> from_id, to_id;  ///< the machines, for the report
   bool verbose = false;
   /// The translator for a program read in this dialect from this file.
   std::function<std::unique_ptr<block_translator>(prog::dialect, const std::string&)> make;
 };
 
-/// Reads IN, translates it in two passes (`block_translator`): the first over the text, the
-/// second over the blocks kept as compact records (`block_store`); writes OUT block by block.
-int execute(const job& j) {
-  const std::string prefix = "kin5 " + j.command + ": ";
-  output_file out(j.output_path);  // what OUT is, checked before the input is read
-  if (!out.ok()) {
-    std::cerr << prefix << "cannot write '" << j.output_path << "': " << out.error() << '\n';
-    return exit_codes::input_error;
+/// The report file (--report) of a run, written when the run ends, whatever its exit code, as
+/// OUT is: a temporary file linked into place, never half-written.
+class report_file {
+ public:
+  report_file(const job& j, const std::string& prefix) : prefix_(prefix) {
+    if (j.report_path.empty()) return;
+    std::error_code ec;
+    if (j.report_path == "-" && j.output_path == "-") usage_ = "--report - and OUT - would both be stdout";
+    else if (j.report_path == j.output_path || std::filesystem::equivalent(j.report_path, j.output_path, ec))
+      usage_ = "--report names OUT";
+    if (!usage_.empty()) return;
+    file_ = std::make_unique<output_file>(j.report_path);
+    if (!file_->ok()) refusal_ = "cannot write '" + j.report_path + "': " + file_->error();
+    path_ = j.report_path;
   }
-  std::string error;
-  auto bytes = read_bytes(j.input_path, error);
-  if (!bytes) {
-    std::cerr << prefix << "cannot read '" << j.input_path << "': " << error << '\n';
-    return exit_codes::input_error;
+  /// Why --report cannot be written (its path), or cannot be asked for (`usage`: with this OUT).
+  const std::string& refusal() const { return refusal_; }
+  const std::string& usage() const { return usage_; }
+  explicit operator bool() const { return file_ != nullptr; }
+
+  /// Writes `a` as JSON; false, with the reason printed, if it cannot. A report is written once;
+  /// a second call replaces it (a new temporary file linked over the first).
+  bool write(const run_account& a) {
+    if (!file_) return true;
+    if (failed_) return false;  // said once
+    if (committed_) file_ = std::make_unique<output_file>(path_);
+    file_->buffer() = to_json(a);
+    committed_ = file_->ok() && file_->commit();
+    failed_ = !committed_;
+    if (failed_) std::cerr << prefix_ << "cannot write the report '" << path_ << "': " << file_->error() << '\n';
+    return committed_;
   }
 
-  prog::dialect dialect = j.input_dialect;
-  if (!j.input_dialect_given) {
-    if (const auto guessed = prog::guess_dialect(*bytes); guessed && *guessed != dialect) {
-      std::cerr << prefix << "note: reading " << display_name(j.input_path) << " as " << prog::name(*guessed)
-                << " (recognised by its markers), not as " << prog::name(dialect)
-                << "; choose with --" << (j.command == "translate" ? "from-dialect" : "dialect") << '\n';
-      dialect = *guessed;
-    }
+ private:
+  std::string prefix_, path_, refusal_, usage_;
+  std::unique_ptr<output_file> file_;
+  bool committed_ = false, failed_ = false;
+};
+
+/// The part of a run's account the job gives: what was asked.
+run_account asked(const job& j, prog::dialect input_dialect) {
+  run_account a;
+  a.command = j.command;
+  a.input = display_name(j.input_path);
+  a.output = j.output_path == "-" ? "<stdout>" : j.output_path;
+  a.input_dialect = prog::name(input_dialect);
+  a.output_dialect = prog::name(j.output_dialect);
+  a.from = j.from_id, a.to = j.to_id;
+  return a;
+}
+
+/// Prints the summary line and, on failure, the line that says why nothing was written.
+void print_summary(const job& j, const translation& result, bool committed, int code) {
+  const std::string prefix = "kin5 " + j.command + ": ";
+  const auto count = [&](matchability m) { return result.per_class[static_cast<std::size_t>(m)]; };
+  std::cerr << prefix << result.blocks_read << " blocks read, " << (committed ? result.blocks_written : 0) << " written"
+            << (committed && result.blocks_added ? " (" + std::to_string(result.blocks_added) + " added: rotary moves "
+                                                   "without tool-tip tracking cut into pieces)"
+                                                 : std::string())
+            << ", " << result.passed_through << " passed through; ";
+  for (matchability m : {matchability::direct, matchability::other_branch, matchability::unreachable})
+    std::cerr << count(m) << ' ' << name(m) << (m == matchability::unreachable ? "\n" : ", ");
+  const std::size_t unreachable = count(matchability::unreachable);
+  if (code == exit_codes::input_error && !result.errors.empty()) {
+    const std::size_t n = result.errors.size();
+    std::cerr << prefix << n << (n == 1 ? " error" : " errors") << "; nothing written\n";
+  } else if (code == exit_codes::unreachable) {
+    std::cerr << prefix << unreachable << (unreachable == 1 ? " block" : " blocks") << " cannot be reached on "
+              << j.target << "; nothing written\n";
   }
+}
+
+/// The run of `execute` once OUT, the report and IN are open: translates `bytes` read in
+/// `dialect`, prints every diagnostic and the summary, commits OUT on success; fills `a`.
+int translate_and_write(const job& j, std::string bytes, prog::dialect dialect, output_file& out,
+                        report_file& report, run_account& a) {
+  const std::string prefix = "kin5 " + j.command + ": ";
   const std::string file = display_name(j.input_path);
   const std::unique_ptr<block_translator> translator = j.make(dialect, file);
+  block_accounting blocks;
 
   // Both passes (translate/stream.hpp): the output reaches OUT's temporary file while the run is
   // clean; the rest is still translated after an error, so that one run lists every error.
-  const stream_result run = stream_text(*translator, std::move(*bytes), dialect, file, j.output_dialect, out);
-  bytes.reset();
+  const stream_result run = stream_text(*translator, std::move(bytes), dialect, file, j.output_dialect, out,
+                                        report ? blocks.watch() : block_watch{});
+  const translation& result = translator->result();
+  const run_account found = account_of(result, run, blocks, j.target);
+  a.blocks = found.blocks, a.blocks_written = found.blocks_written, a.blocks_added = found.blocks_added;
+  a.motion = found.motion, a.unreachable = found.unreachable, a.allowed = found.allowed;
+  a.errors = found.errors, a.warnings = found.warnings;
+  a.errors_not_listed = found.errors_not_listed, a.warnings_not_listed = found.warnings_not_listed;
   {
     std::vector<message> messages;
     collect(messages, run.input.errors, "error");
@@ -242,12 +303,11 @@ int execute(const job& j) {
   const std::optional<prog::diagnostic>& writer_error = run.writer_error;  // a block the output dialect cannot say
   const bool file_failed = run.sink_failed;                            // the output file: `out.error()` says why
 
-  const translation& result = translator->result();
   // Unreachable blocks come as errors too (with their source angles and gap): one per block
   // that stands alone, one per run of consecutive unreachable blocks (with its worst block).
   {
     std::vector<message> messages;
-    collect(messages, errors_by_run(result, unreachable_ranges(result.reports), j.target), "error");
+    collect(messages, errors_by_run(result, a.unreachable, j.target), "error");
     collect(messages, result.warnings, "warning");
     for (auto d : result.allowed) {  // refusals the user accepted (--allow)
       d.message += " [allowed by " + d.option + "]";
@@ -258,8 +318,7 @@ int execute(const job& j) {
         if (r.match == matchability::other_branch) messages.push_back({"note", other_branch_note(r)});
     print_in_source_order(std::move(messages), prefix);
   }
-  const auto count = [&](matchability m) { return result.per_class[static_cast<std::size_t>(m)]; };
-  const std::size_t unreachable = count(matchability::unreachable);
+  const std::size_t unreachable = result.per_class[static_cast<std::size_t>(matchability::unreachable)];
 
   int code = exit_codes::ok;
   if (result.errors.size() > unreachable) {
@@ -272,31 +331,69 @@ int execute(const job& j) {
     std::cerr << d.to_string("error") << '\n';
     code = exit_codes::input_error;
   }
-  // The output is committed before the summary, which then says what OUT holds.
-  const bool committed = code == exit_codes::ok && !file_failed && out.commit();
+  // The report is written first, as for a program written: one that cannot be leaves OUT as it
+  // was. The output is committed before the summary, which then says what OUT holds.
+  bool committed = false;
+  if (code == exit_codes::ok && !file_failed) {
+    a.exit_code = code, a.written = true;
+    if (report.write(a)) committed = out.commit();
+    else code = exit_codes::input_error;  // OUT left as it was
+  }
   if (code == exit_codes::ok && !committed) {
     std::cerr << prefix << "cannot write '" << j.output_path << "': " << out.error() << '\n';
+    a.errors.push_back(file_error(a.output, "cannot write '" + j.output_path + "': " + out.error()));
     code = exit_codes::input_error;
   }
-
-  std::cerr << prefix << result.blocks_read << " blocks read, "
-            << (committed ? result.blocks_written : 0) << " written"
-            << (committed && result.blocks_added ? " (" + std::to_string(result.blocks_added) + " added: rotary moves "
-                                                   "without tool-tip tracking cut into pieces)"
-                                                 : std::string())
-            << ", " << result.passed_through
-            << " passed through; ";
-  for (matchability m : {matchability::direct, matchability::other_branch, matchability::unreachable})
-    std::cerr << count(m) << ' ' << name(m) << (m == matchability::unreachable ? "\n" : ", ");
-
-  if (code == exit_codes::input_error && !result.errors.empty()) {
-    const std::size_t n = result.errors.size();
-    std::cerr << prefix << n << (n == 1 ? " error" : " errors") << "; nothing written\n";
-  } else if (code == exit_codes::unreachable) {
-    std::cerr << prefix << unreachable << (unreachable == 1 ? " block" : " blocks") << " cannot be reached on "
-              << j.target << "; nothing written\n";
-  }
+  a.written = committed;
+  print_summary(j, result, committed, code);
   return code;
+}
+
+/// Reads IN, translates it in two passes (`block_translator`): the first over the text, the
+/// second over the blocks kept as compact records (`block_store`); writes OUT block by block,
+/// and the report (--report) whatever the outcome.
+int execute(const job& j) {
+  const std::string prefix = "kin5 " + j.command + ": ";
+  report_file report(j, prefix);  // checked, as OUT is, before the input is read
+  if (!report.usage().empty()) {
+    std::cerr << prefix << report.usage() << '\n';
+    return exit_codes::usage;
+  }
+  if (!report.refusal().empty()) {
+    std::cerr << prefix << report.refusal() << '\n';
+    return exit_codes::input_error;
+  }
+  run_account a = asked(j, j.input_dialect);
+  const auto finish = [&](int code) {
+    a.exit_code = code;
+    if (code == exit_codes::ok && a.written) return code;  // reported before OUT was committed
+    return report.write(a) || code != exit_codes::ok ? code : exit_codes::input_error;
+  };
+  output_file out(j.output_path);  // what OUT is, checked before the input is read
+  if (!out.ok()) {
+    std::cerr << prefix << "cannot write '" << j.output_path << "': " << out.error() << '\n';
+    a.errors.push_back(file_error(a.output, "cannot write '" + j.output_path + "': " + out.error()));
+    return finish(exit_codes::input_error);
+  }
+  std::string error;
+  auto bytes = read_bytes(j.input_path, error);
+  if (!bytes) {
+    std::cerr << prefix << "cannot read '" << j.input_path << "': " << error << '\n';
+    a.errors.push_back(file_error(a.input, "cannot read '" + j.input_path + "': " + error));
+    return finish(exit_codes::input_error);
+  }
+
+  prog::dialect dialect = j.input_dialect;
+  if (!j.input_dialect_given) {
+    if (const auto guessed = prog::guess_dialect(*bytes); guessed && *guessed != dialect) {
+      std::cerr << prefix << "note: reading " << display_name(j.input_path) << " as " << prog::name(*guessed)
+                << " (recognised by its markers), not as " << prog::name(dialect)
+                << "; choose with --" << (j.command == "translate" ? "from-dialect" : "dialect") << '\n';
+      dialect = *guessed;
+      a.input_dialect = prog::name(dialect);
+    }
+  }
+  return finish(translate_and_write(j, std::move(*bytes), dialect, out, report, a));
 }
 
 // ---- argument checks ----------------------------------------------------------------------
@@ -332,6 +429,7 @@ struct common_arguments {
   std::string source_tool_length, source_work_offset;  ///< translate and reverse: the source's
   std::optional<double> tolerance_mm;
   std::vector<std::string> work_offset_map;
+  std::string report;  ///< --report FILE.json
 };
 
 std::optional<std::vector<double>> parse_list(std::string_view text, std::size_t count);
@@ -441,6 +539,9 @@ void add_common_options(CLI::App* sub, common_arguments& a) {
                   "Into another dialect, write M function N as M (N=M) or drop it (N=); other M functions "
                   "whose meaning is the machine maker's are refused")
       ->allow_extra_args(false);  // one entry per option: the input file after it stays the input
+  sub->add_option("--report", a.report,
+                  "Also write the account of the run to this file as JSON (counts, every error and warning, "
+                  "unreachable blocks as runs of lines), whatever the exit code; '-' for stdout");
   sub->add_option("--work-offset-map", a.work_offset_map,
                   "Write work offset FROM as TO (G54=1: G54 selects Heidenhain preset 1; G505=G54.1P5; G54= "
                   "drops it); a work offset with no certain equivalent in the output dialect is refused")
@@ -554,6 +655,8 @@ int run_translate(const translate_arguments& a) {
   j.input_dialect_given = !a.from_dialect.empty();
   j.output_dialect = dialect_or_default(a.to_dialect, to_model.geometry.id);
   j.target = std::string(to_model.geometry.id);
+  j.from_id = std::string(from_model.geometry.id), j.to_id = j.target;
+  j.report_path = a.common.report;
   j.verbose = a.verbose;
   translate_options options;
   options.setup = parse_setup(a, from_model, to_model);
@@ -595,6 +698,8 @@ int run_reverse(const machine_arguments& a) {
   j.input_dialect_given = !a.dialect.empty();
   j.output_dialect = prog::cl_data_dialect();
   j.target = "APT CL data";
+  j.from_id = std::string(model.geometry.id);
+  j.report_path = a.common.report;
   j.verbose = a.verbose;
   const auto common = parse_common("reverse", a.common);
   if (!common) return exit_codes::usage;
@@ -617,6 +722,8 @@ int run_post(const machine_arguments& a) {
   j.input_dialect_given = true;
   j.output_dialect = dialect_or_default(a.dialect, model.geometry.id);
   j.target = std::string(model.geometry.id);
+  j.to_id = j.target;
+  j.report_path = a.common.report;
   j.verbose = a.verbose;
   const prog::dialect out = j.output_dialect;
   const auto common = parse_common("post", a.common);

@@ -60,6 +60,11 @@ struct string_sink {
 /// Reads a program: gives every block to the sink in file order, diagnostics to the result.
 using block_source = std::function<void(program::read_result& diagnostics, const program::block_sink& on_block)>;
 
+/// Sees each block once the first pass has planned it, with what the reader and the translation
+/// have found so far (e.g. `block_accounting`, run_report.hpp, which counts the refused blocks).
+using block_watch =
+    std::function<void(const program::block& b, const program::read_result& input, const translation& so_far)>;
+
 /// What a streamed run found besides the translator's own result.
 struct stream_result {
   program::read_result input;              ///< the reader's errors and warnings (`parsed` stays empty)
@@ -95,10 +100,11 @@ inline std::string not_cl_data(std::size_t not_understood, std::optional<program
 }
 
 /// Both passes of `t` over the blocks `read` gives (see the file comment); output blocks are
-/// written in `output_language` to `sink`.
+/// written in `output_language` to `sink`; `watch`, if given, sees each block of the first pass.
 template <text_sink Sink>
 stream_result stream_blocks(block_translator& t, const block_source& read, const std::string& file,
-                            program::dialect source_language, program::dialect output_language, Sink& sink) {
+                            program::dialect source_language, program::dialect output_language, Sink& sink,
+                            const block_watch& watch = {}) {
   stream_result run;
   program::block_store records(file);
   bool says_something = false;  // a block with more than blanks
@@ -110,6 +116,7 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
     moving += b.moves() ? 1 : 0;
     not_understood += b.passthrough ? 1 : 0;
     t.plan(b);
+    if (watch) watch(b, run.input, t.result());
     records.push(b, second_pass_reads_text(b));
   });
   run.record_chunks = records.chunks();
@@ -140,10 +147,11 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
 }
 
 /// Both passes of `t` over the program `text` in `source_language` (`file` names it in
-/// diagnostics); `text` is freed after the first pass. Output as `stream_blocks`.
+/// diagnostics); `text` is freed after the first pass. Output and `watch` as `stream_blocks`.
 template <text_sink Sink>
 stream_result stream_text(block_translator& t, std::string text, program::dialect source_language,
-                          const std::string& file, program::dialect output_language, Sink& sink) {
+                          const std::string& file, program::dialect output_language, Sink& sink,
+                          const block_watch& watch = {}) {
   const program::number_resolution resolution = program::scan_resolution(text, source_language);
   t.source_resolution(resolution);
   const block_source read = [&](program::read_result& diagnostics, const program::block_sink& on_block) {
@@ -156,7 +164,7 @@ stream_result stream_text(block_translator& t, std::string text, program::dialec
     if (diagnostics.resolution.empty()) diagnostics.resolution = resolution;
     std::string().swap(text);  // freed (assigning an empty string would keep the capacity)
   };
-  return stream_blocks(t, read, file, source_language, output_language, sink);
+  return stream_blocks(t, read, file, source_language, output_language, sink, watch);
 }
 
 }  // namespace kin5
