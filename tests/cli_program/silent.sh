@@ -98,6 +98,17 @@ case "$name" in
     run 0 translate --from sajo-12000p --to dmu-80p --to-dialect iso -o e.nc "$example"
     has_line e.nc 'N20 G54'
     ;;
+  # ISO output: a decimal point on every coordinate, angle, I J K, R and F (`X10` is 0.010 mm
+  # on a Fanuc control in decimal-point-input mode); S, T, M, N, H stay whole numbers.
+  iso-decimal-point)
+    printf '%s\n' 'N10 T1 M6' 'N20 S4000 M3' 'N30 TRAORI' 'N40 G1 X10 Y0 Z50 A-30 B10 F500' \
+      'N50 G2 X20 Y0 I5 J0' 'N60 TRAFOOF' 'N70 M30' >d.mpf
+    run 0 translate --from sajo-12000p --to sajo-12000p --to-dialect iso -o d.nc d.mpf
+    has_line d.nc 'N20 S4000 M3'
+    has_line d.nc 'N40 G1 X10\. Y0\. Z50\. A-30\. B10\. F500\.'
+    has_line d.nc 'N50 G2 X20\. Y0\. I5\. J0\.'
+    no_line d.nc '(.* )?[XYZABCIJKRF][-+]?[0-9]+( .*)?'
+    ;;
   # Cutter radius compensation is refused at the word (a comment would leave the cut off by
   # the radius).
   compensation-rl)

@@ -228,7 +228,7 @@ TEST_CASE("a program end is written once in every dialect") {
   // Heidenhain: M30 is an M function, END PGM the end; M91 is machine coordinates (G53, SUPA).
   const auto h = heidenhain::read("0 BEGIN PGM P MM\n1 L Z+0 FMAX M91\n2 M30\n3 END PGM P MM\n", "end.h");
   REQUIRE(h.ok());
-  CHECK(iso::write(h.parsed) == "N0 G21 (program P)\nN1 G53 G0 Z0\nN2 M30\nN3 G21\n");
+  CHECK(iso::write(h.parsed) == "N0 G21 (program P)\nN1 G53 G0 Z0.\nN2 M30\nN3 G21\n");
   CHECK(siemens::write(h.parsed) == "%_N_P_MPF\nN0 G710\nN1 SUPA G0 Z0\nN2 M30\nN3 G710\n");
 
   // A tool change is written once: TOOL CALL and LOADTL are the change, no M6 beside them.
@@ -263,7 +263,7 @@ TEST_CASE("APT feed-only, rapid-only and units blocks in the G-code and Heidenha
   CHECK(siemens::write(a.parsed) ==
         "%_N_X_MPF\nG710\nG94 F800\nG0\nG0 X1 Y2 Z3\nG1 X4 Y5 Z6\nG1 X7 Y8 Z9\nM30\n");
   CHECK(iso::write(a.parsed) ==
-        "(program X)\nG21\nG94 F800\nG0\nG0 X1 Y2 Z3\nG1 X4 Y5 Z6\nG1 X7 Y8 Z9\nM30\n");
+        "(program X)\nG21\nG94 F800.\nG0\nG0 X1. Y2. Z3.\nG1 X4. Y5. Z6.\nG1 X7. Y8. Z9.\nM30\n");
   const auto back = heidenhain::read(heidenhain::write(a.parsed), "a.h");
   CHECK(back.ok());
 

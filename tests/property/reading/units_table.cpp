@@ -51,7 +51,7 @@ TEST_CASE("units: ISO G20 programs are read in millimetres and written back in i
   CHECK(near(b[6].feed, 2.5));  // inverse time: 1/min, not a length
   CHECK(near(b[6].axes.x_mm, 101.6));
   round_trip(id_of<iso::dialect>(), text, id_of<iso::dialect>(),
-             "%\nO1000\nG17 G20\nG0 X1.2345 Y-0.5 Z2\nG1 X2 F9.8\nG2 X3 Y-0.5 I0.5 J0 F10\nG1 G93 X4 F2.5\nM30\n%\n");
+             "%\nO1000\nG17 G20\nG0 X1.2345 Y-0.5 Z2.\nG1 X2. F9.8\nG2 X3. Y-0.5 I0.5 J0. F10.\nG1 G93 X4. F2.5\nM30\n%\n");
 }
 
 TEST_CASE("units: APT UNITS/INCHES and FEDRAT/IPM are read in millimetres and written back in inches") {
@@ -157,7 +157,7 @@ TEST_CASE("units: Heidenhain INCH programs are read in millimetres, F in 1/10 in
 TEST_CASE("units: inch programs between dialects keep their inch values") {
   // Heidenhain INCH → ISO G20: F98 (1/10 inch/min) is F9.8 inch/min.
   round_trip(id_of<heidenhain::dialect>(), "0 BEGIN PGM P INCH\n1 L X+1.2345 Y-0.5 Z+2 F98\n2 END PGM P INCH\n",
-             id_of<iso::dialect>(), "N0 G20 (program P)\nN1 G1 X1.2345 Y-0.5 Z2 F9.8\nN2 G20 M30\n");
+             id_of<iso::dialect>(), "N0 G20 (program P)\nN1 G1 X1.2345 Y-0.5 Z2. F9.8\nN2 G20 M30\n");
   round_trip(id_of<iso::dialect>(), "G20\nG1 X1.2345 Y2. Z3. F10.\n", id_of<siemens::dialect>(),
              "G700\nG1 X1.2345 Y2 Z3 F10\n");
   // The unit Siemens states after its header is the BEGIN PGM's (program_unit).

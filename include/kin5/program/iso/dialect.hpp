@@ -6,7 +6,7 @@
 /// ```cpp
 /// namespace iso = kin5::program::iso;
 /// auto r = iso::read("N10 G1 Y9.1 Z118.5 B3.5 C-77.9 F1091\n", "part.nc");
-/// if (r.ok()) std::string text = iso::write(r.parsed);  // "N10 G1 Y9.1 … F1091\n"
+/// if (r.ok()) std::string text = iso::write(r.parsed);  // "N10 G1 Y9.1 … F1091.\n"
 /// ```
 #pragma once
 

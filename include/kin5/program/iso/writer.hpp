@@ -2,7 +2,8 @@
 /// Blocks written as ISO / Fanuc G code, one block per line, words in the order
 /// `N  kept G  G0-G3  G43.4/G43.5/G49  G93/G94  G21/G20  X Y Z A B C  I J K  R  F S T M  kept  (comment)`.
 /// After a block that says inch (`metric == false`, written G20) lengths and per-minute feeds are
-/// written in inches with one decimal more. A block ISO cannot express (a tool-axis vector outside
+/// written in inches with one decimal more. Every coordinate, angle, I J K, R and F has a decimal
+/// point (`X10.`, `write_options::decimal_point`). A block ISO cannot express (a tool-axis vector outside
 /// G43.5 or with an arc)
 /// throws `std::invalid_argument` naming the block's `file:line`.
 #pragma once
@@ -34,6 +35,11 @@ struct write_options {
   int feed_decimals = 1;     ///< F (mm/min or 1/min) and S (1/min)
   int finest_feed_decimals = detail::finest_rate_decimals;  ///< more decimals for a small F or S, up to these (rate_decimals)
   int vector_decimals = 7;   ///< tool-axis I J K under G43.5
+  /// A decimal point on every coordinate, angle, I J K, R and F (`X10.`): a Fanuc control in
+  /// its usual input mode reads `X10` as ten least input increments, 0.010 mm (Fanuc
+  /// 30i/31i/32i-B Operator's Manual, "Decimal point programming"). LinuxCNC's writer, whose
+  /// controller reads `X10` as 10 mm, turns it off.
+  bool decimal_point = true;
 };
 
 namespace detail {
@@ -127,7 +133,12 @@ class writer {
     throw std::invalid_argument(b.where.file + ":" + std::to_string(b.where.line) + ": block cannot be written in ISO: " + why);
   }
 
-  void put(char letter, double v, int decimals) { words_.push_back(letter + format_number(v, decimals)); }
+  /// A coordinate, angle, I J K, R or F word: with a decimal point (`decimal_point`).
+  void put(char letter, double v, int decimals) {
+    std::string w = letter + format_number(v, decimals);
+    if (options_.decimal_point && w.find('.') == std::string::npos) w += '.';
+    words_.push_back(std::move(w));
+  }
   void note(std::string_view text) {
     if (!notes_.empty()) notes_ += ' ';
     notes_ += text;
@@ -241,8 +252,10 @@ class writer {
   void codes(const block& b) {
     const int inch = inch_ && !inverse_time_ ? 1 : 0;
     if (b.feed) put('F', *b.feed, rate_decimals(*b.feed, options_.feed_decimals + inch, options_.finest_feed_decimals + inch));
-    if (b.spindle_rpm)
-      put('S', *b.spindle_rpm, rate_decimals(*b.spindle_rpm, options_.feed_decimals, options_.finest_feed_decimals, "spindle speed"));
+    if (b.spindle_rpm) {  // S takes no decimal point on a Fanuc control: as short as it reads
+      const int d = rate_decimals(*b.spindle_rpm, options_.feed_decimals, options_.finest_feed_decimals, "spindle speed");
+      words_.push_back('S' + format_number(*b.spindle_rpm, d));
+    }
     if (b.tool) words_.push_back(code('T', *b.tool));
     bool ends = false;  // an M2 / M30 written in this block
     for (int m : b.m_codes) {

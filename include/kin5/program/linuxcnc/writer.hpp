@@ -43,7 +43,7 @@ class writer {
   /// `%` lines back as they are, another dialect's as comments.
   explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
       : same_(source == id_of<dialect>()),
-        iso_(same_ ? id_of<iso::dialect>() : id_of<dialect>(), std::move(file), chosen) {}
+        iso_(same_ ? id_of<iso::dialect>() : id_of<dialect>(), std::move(file), without_decimal_point(chosen)) {}
 
   /// Appends the lines of block `b` to `out`; throws `std::invalid_argument` naming the block
   /// when LinuxCNC cannot say it.
@@ -70,6 +70,12 @@ class writer {
   bool tracking_ = false;                 // M428 in effect after the last block
   bool length_of_loaded_ = false;         // G43 holds the loaded tool's length
   std::optional<long long> selected_, loaded_;
+
+  /// LinuxCNC reads `X10` as 10 mm (LinuxCNC Manual, "G-Code Overview", numbers): no point needed.
+  static iso::write_options without_decimal_point(iso::write_options o) {
+    o.decimal_point = false;
+    return o;
+  }
 
   [[noreturn]] static void fail(const block& b, const std::string& why) {
     throw std::invalid_argument(b.where.file + ":" + std::to_string(b.where.line) +

@@ -113,11 +113,11 @@ TEST_CASE("iso: G43.5 vectors, arcs inside G43.5, other planes") {
   CHECK((b[4].arc->plane == arc_plane::yz && b[4].arc->radius_mm == 7.0));
   // Written back: G43.5 because vectors follow, arcs in their planes.
   CHECK(iso::write(r.parsed) ==
-        "G43.5 I0 J0 K1 H2\n"
-        "G1 X10 Y0 Z5 I0 J-0.6 K0.8 F1000\n"
-        "G2 X20 Y0 I5 J0\n"
-        "G18 G3 X30 Z5 I5 K-1\n"
-        "G19 G2 Y5 Z10 R7\n"
+        "G43.5 I0. J0. K1. H2\n"
+        "G1 X10. Y0. Z5. I0. J-0.6 K0.8 F1000.\n"
+        "G2 X20. Y0. I5. J0.\n"
+        "G18 G3 X30. Z5. I5. K-1.\n"
+        "G19 G2 Y5. Z10. R7.\n"
         "G49\n");
 }
 
@@ -145,7 +145,7 @@ TEST_CASE("iso: blocks from another dialect") {
   k.text = "BLK FORM 0.1 Z";
   k.kept_words = {"BLK FORM 0.1 Z"};
   p.blocks = {l, cyc, k};
-  CHECK(iso::write(p) == "G53 G0 X1 Y2\n;CYCL DEF 7.0 (DATUM)\n(BLK FORM 0.1 Z)\n");
+  CHECK(iso::write(p) == "G53 G0 X1. Y2.\n;CYCL DEF 7.0 (DATUM)\n(BLK FORM 0.1 Z)\n");
 }
 
 TEST_CASE("iso: a line not understood is refused and changes nothing, spaced kept words write back as they were") {
@@ -160,5 +160,5 @@ TEST_CASE("iso: a line not understood is refused and changes nothing, spaced kep
   CHECK(b[4].program_begin == "004200404");
   const read_result ok = iso::read("G0 X0 Y0 Z0\nG 28 Z0\nO004200404\n", "p.nc");
   REQUIRE(ok.ok());
-  CHECK(iso::write(ok.parsed) == "G0 X0 Y0 Z0\nG 28 Z0\nO004200404\n");
+  CHECK(iso::write(ok.parsed) == "G0 X0. Y0. Z0.\nG 28 Z0.\nO004200404\n");
 }
