@@ -1,6 +1,7 @@
 // translate/run_report.hpp: unreachable blocks grouped into runs of consecutive motion blocks,
 // checked against runs found another way (maximal stretches of a list of flags), on made-up
-// reports and on real translations whose unreachable blocks are known in advance.
+// reports and on real translations whose unreachable blocks are known in advance; and every
+// block of a run accounted for (block_accounting), against what each line was made to be.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -129,5 +130,40 @@ TEST_CASE("unreachable runs are the maximal stretches of consecutive unreachable
       RC_ASSERT(ranges[k].worst.line == m[worst_of(m, first, last)].line);
       RC_ASSERT(std::abs(ranges[k].worst_gap.value - m[worst_of(m, first, last)].gap_tenths_deg / 10.0) < 1e-6);
     }
+  });
+}
+
+TEST_CASE("every block is counted once: translated, comment only or refused, as each line was made") {
+  rc::prop("SAJO 12000P programs on the DMU 80P with comments, bad words, words the source lacks, unreachable poses", [] {
+    enum kind { reachable, comment, unreachable, lacks_axis, bad_word };
+    const auto kinds = *rc::gen::container<std::vector<int>>(rc::gen::inRange(0, 5));
+    const bool with_bad = *rc::gen::arbitrary<bool>();
+    std::string text = "N10 G17 G90 G94\nN20 TRAORI\nG1 X0 Y0 Z50 A-45 B30 F1000\n";
+    std::size_t read = 5, comments = 0, bad = 0, refused = 0;  // 5: the lines around
+    for (int k : kinds) {
+      ++read;
+      if (k == bad_word && !with_bad) k = reachable;
+      switch (k) {
+        case reachable: text += "G1 X1 Y0 Z50 A-30 B30\n"; break;
+        case comment: text += "; a comment\n", ++comments; break;
+        case unreachable: text += "G1 X2 Y0 Z50 A12 B30\n", ++refused; break;
+        case lacks_axis: text += "G1 X3 Y0 Z50 A-30 B30 C10\n", ++refused; break;
+        default: text += "G1 X4 YY2\n", ++bad; break;
+      }
+    }
+    text += "N90 TRAFOOF\nN100 M30\n";
+    const auto siemens = program::id_of<program::siemens::dialect>();
+    translate_options options;
+    options.output_dialect = siemens;
+    const auto t = make_translator<machines::sajo_12000p, machines::dmu_80p>(siemens, "p.mpf", options,
+                                                                             report_detail::exceptions_only);
+    string_sink out;
+    block_accounting blocks;
+    const auto run = stream_text(*t, text, siemens, "p.mpf", siemens, out, blocks.watch());
+    const block_counts c = account_of(t->result(), run, blocks, "dmu-80p").blocks;
+    RC_ASSERT(c.read == read);
+    RC_ASSERT(c.read == c.translated + c.comment_only + c.refused);
+    RC_ASSERT(c.comment_only == comments);
+    RC_ASSERT(c.refused == (bad > 0 ? bad : refused));  // read errors: nothing else counts
   });
 }

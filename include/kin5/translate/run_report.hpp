@@ -188,10 +188,11 @@ struct run_account {
   block_counts blocks;
   std::size_t blocks_written = 0, blocks_added = 0;
   std::array<std::size_t, 3> motion{};    ///< motion blocks by `matchability`
-  /// Errors, warnings and refusals allowed by the user, each listed once; the per-block errors
-  /// of unreachable blocks are listed as `unreachable` runs instead.
+  /// Errors, warnings and refusals allowed by the user, each listed once (`account_of`: the
+  /// first 1,000 errors and warnings); the per-block errors of unreachable blocks are listed as
+  /// `unreachable` runs instead.
   std::vector<program::diagnostic> errors, warnings, allowed;
-  std::size_t errors_not_listed = 0, warnings_not_listed = 0;  ///< found by a reader beyond what it keeps
+  std::size_t errors_not_listed = 0, warnings_not_listed = 0;  ///< found but not listed (beyond the first 1,000)
   std::vector<unreachable_range> unreachable;
   /// Every error found: `errors`, those not listed, and one per unreachable block.
   std::size_t error_count() const {
@@ -201,9 +202,29 @@ struct run_account {
   }
 };
 
+/// Diagnostics in source order (line, then column; ties as given).
+inline std::vector<program::diagnostic> in_source_order(std::vector<program::diagnostic> ds) {
+  std::stable_sort(ds.begin(), ds.end(), [](const program::diagnostic& a, const program::diagnostic& b) {
+    return a.where.line != b.where.line ? a.where.line < b.where.line : a.where.column < b.where.column;
+  });
+  return ds;
+}
+
+/// The first `max_kept_diagnostics` of `ds` in source order; the others counted in `more`.
+inline std::vector<program::diagnostic> first_in_source_order(std::vector<program::diagnostic> ds, std::size_t& more) {
+  ds = in_source_order(std::move(ds));
+  if (ds.size() > program::max_kept_diagnostics) {
+    more += ds.size() - program::max_kept_diagnostics;
+    ds.resize(program::max_kept_diagnostics);
+  }
+  return ds;
+}
+
 /// The account of translation `t` to `target_id` streamed as `run`, its blocks counted by
 /// `blocks`; the caller fills in what was asked, the exit code and whether OUT was written.
 /// When the reader found errors nothing was translated, and only the reader's errors count.
+/// Errors and warnings are listed up to `max_kept_diagnostics` each, the first in source order
+/// (500,000 refused blocks would list 100 MB), and the rest counted.
 inline run_account account_of(const translation& t, const stream_result& run, const block_accounting& blocks,
                               std::string_view target_id) {
   run_account a;
@@ -211,12 +232,14 @@ inline run_account account_of(const translation& t, const stream_result& run, co
   a.blocks_written = t.blocks_written, a.blocks_added = t.blocks_added, a.motion = t.per_class;
   a.errors = run.input.errors, a.warnings = run.input.warnings;
   a.errors_not_listed = run.input.errors_not_kept, a.warnings_not_listed = run.input.warnings_not_kept;
-  if (!run.input.ok()) return a;  // nothing translated: the reader's account only
+  if (!run.input.ok()) return a;  // nothing translated: the reader's account only (its first 1,000)
   a.unreachable = unreachable_ranges(t.reports);
   for (auto& e : errors_outside_runs(t.errors, a.unreachable, target_id, 1)) a.errors.push_back(std::move(e));
   if (run.writer_error) a.errors.push_back(*run.writer_error);
   a.warnings.insert(a.warnings.end(), t.warnings.begin(), t.warnings.end());
   a.allowed = t.allowed;
+  a.errors = first_in_source_order(std::move(a.errors), a.errors_not_listed);
+  a.warnings = first_in_source_order(std::move(a.warnings), a.warnings_not_listed);
   return a;
 }
 
@@ -300,14 +323,6 @@ inline std::string range(const unreachable_range& r) {
 }
 
 }  // namespace json_detail
-
-/// Diagnostics in source order (line, then column; ties as given).
-inline std::vector<program::diagnostic> in_source_order(std::vector<program::diagnostic> ds) {
-  std::stable_sort(ds.begin(), ds.end(), [](const program::diagnostic& a, const program::diagnostic& b) {
-    return a.where.line != b.where.line ? a.where.line < b.where.line : a.where.column < b.where.column;
-  });
-  return ds;
-}
 
 /// `a` as one JSON object (docs/user-guide.md, "The report"); lists in source order.
 inline std::string to_json(const run_account& a) {
