@@ -540,8 +540,8 @@ void add_common_options(CLI::App* sub, common_arguments& a) {
                   "whose meaning is the machine maker's are refused")
       ->allow_extra_args(false);  // one entry per option: the input file after it stays the input
   sub->add_option("--report", a.report,
-                  "Also write the account of the run to this file as JSON (counts, every error and warning, "
-                  "unreachable blocks as runs of lines), whatever the exit code; '-' for stdout");
+                  "Also write the account of the run to this file as JSON (exact counts, the first 1,000 errors and "
+                  "warnings, unreachable blocks as runs of lines), whatever the exit code; '-' for stdout");
   sub->add_option("--work-offset-map", a.work_offset_map,
                   "Write work offset FROM as TO (G54=1: G54 selects Heidenhain preset 1; G505=G54.1P5; G54= "
                   "drops it); a work offset with no certain equivalent in the output dialect is refused")
