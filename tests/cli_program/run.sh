@@ -577,6 +577,48 @@ EOF
     # so the pieces run at 629.3 mm/min (their chords a hair shorter than the arc).
     grep -c 'F629\.[23]' u.h | awk '{ exit !($1 > 2) }' || { report "N80 pieces not at F629.3"; show u.h; }
     ;;
+  machine-output)
+    # Output in machine coordinates (G10) on the ac-trunnion: both tables turn about lines through
+    # (0, 0, -200), so with the work offset there the part point of program point p at physical
+    # angles A, C is R_z(-C) R_x(-A) p (worked by hand in 'untracked'), whatever the tool length:
+    # a tip held at (10, 0, 0) at A-30 while C turns 0 -> 90 is written p = R_x(-30) R_z(C)
+    # (10, 0, 0), on the sphere of radius 10 about the origin, ending at (0, 8.660, -5).
+    printf '%s\n' 'N10 T1 M6' 'N20 TRAORI' 'N30 G0 X10 Y0 Z0 A-30 C0' 'N40 G1 C90 F1000' 'N50 X20' 'N60 TRAFOOF' \
+      'N70 M30' >m.mpf
+    run 1 translate --from ac-trunnion --to ac-trunnion --output-mode machine -o no.mpf m.mpf
+    grep -q 'output-mode machine writes .*--work-offset' err || { report "no placement accepted"; show err; }
+    run 1 reverse --machine ac-trunnion --output-mode machine -o no.apt m.mpf
+    grep -q 'not machine coordinates' err || { report "reverse accepted machine"; show err; }
+    run 1 translate --from ac-trunnion --to ac-trunnion --output-mode joints --work-offset 0,0,-200 -o no.mpf m.mpf
+    [ -e no.mpf ] && report "no.mpf written"
+    [ -e no.apt ] && report "no.apt written"
+    run 0 translate --from ac-trunnion --to ac-trunnion --output-mode machine --work-offset 0,0,-200 \
+      --tool-length 50 -o m.out m.mpf
+    grep -q 'TRAORI\|TRAFOOF' m.out && { report "TCP words written"; show m.out; }
+    grep -q 'added: ' err || { report "no count of added blocks"; show err; }
+    words m.out >w
+    # N40: the C pieces all on the sphere of radius 10, more than 2 of them, ending at (0, 8.660, -5);
+    # 90 deg at F1000 is 0.09 min, and in inverse time the pieces' 1/F add up to it (F to 0.1).
+    awk '{ delete v; for (i = 1; i <= NF; ++i) { split($i, kv, "="); v[kv[1]] = kv[2] }
+           r = sqrt(v["X"] ^ 2 + v["Y"] ^ 2 + v["Z"] ^ 2)
+           if (v["C"] > 0 && r < 15) { if (r < 9.999 || r > 10.001) bad = 1; ++n; t += 1 / v["F"] } }
+         END { exit !(n > 2 && !bad && t > 0.0899 && t < 0.0901) }' w ||
+      { report "N40 pieces not on the sphere of radius 10 or not 0.09 min"; show m.out; }
+    grep -q 'G93' m.out || { report "N40 not in inverse time"; show m.out; }
+    line=$(line_with m.out C 90)
+    near "$(value "$line" X)" 0 0.001 && near "$(value "$line" Y)" 8.66 0.001 && near "$(value "$line" Z)" -5 0.001 ||
+      { report "N40 end not (0, 8.660, -5)"; show m.out; }
+    # N50: the angles stand, so X20 is R_x(-30) R_z(90) (20, 0, 0) = (0, 17.321, -10) at F1000 again.
+    grep -q 'G94' m.out || { report "no G94 after the pieces"; show m.out; }
+    line=$(line_with m.out Z -10)
+    near "$(value "$line" X)" 0 0.001 && near "$(value "$line" Y)" 17.321 0.001 && [ "$(value "$line" F)" = 1000 ] ||
+      { report "N50 not X0 Y17.321 Z-10 F1000"; show m.out; }
+    # ISO: the TCP switch becomes the tool's length compensation.
+    run 0 translate --from ac-trunnion --to ac-trunnion --to-dialect iso --output-mode machine --work-offset 0,0,-200 \
+      -o m.nc m.mpf
+    grep -q 'N20 G43 H1$' m.nc || { report "no G43 H1 for TRAORI"; show m.nc; }
+    grep -q 'G43\.4\|G49' m.nc && { report "TCP words in ISO"; show m.nc; }
+    ;;
   *)
     echo "run.sh: unknown test '$name'" >&2
     exit 2

@@ -430,6 +430,7 @@ struct common_arguments {
   std::optional<double> tolerance_mm;
   std::vector<std::string> work_offset_map;
   std::string report;  ///< --report FILE.json
+  std::string output_mode;  ///< tcp | machine; empty: the output dialect's
 };
 
 std::optional<std::vector<double>> parse_list(std::string_view text, std::size_t count);
@@ -516,6 +517,13 @@ std::optional<common_options> parse_common(std::string_view command, const commo
       return std::nullopt;
     }
   if (!parse_placement(command, a, c) || !parse_source_placement(command, a, c)) return std::nullopt;
+  if (!a.output_mode.empty()) {
+    c.coordinates = parse_output_mode(a.output_mode);
+    if (!c.coordinates) {
+      std::cerr << "kin5 " << command << ": --output-mode: give tcp or machine\n";
+      return std::nullopt;
+    }
+  }
   for (const auto& entries : a.work_offset_map)
     if (!c.work_offsets.add(entries)) {
       std::cerr << "kin5 " << command << ": --work-offset-map: '" << entries
@@ -546,6 +554,11 @@ void add_common_options(CLI::App* sub, common_arguments& a) {
                   "Write work offset FROM as TO (G54=1: G54 selects Heidenhain preset 1; G505=G54.1P5; G54= "
                   "drops it); a work offset with no certain equivalent in the output dialect is refused")
       ->allow_extra_args(false);
+  sub->add_option("--output-mode", a.output_mode,
+                  "tcp: motion as the tool tip under tool-tip tracking; machine: as the target's axis values, without "
+                  "it (needs --work-offset; pieces within --tolerance). Default: tcp where the output dialect switches "
+                  "tool-tip tracking")
+      ->check(CLI::IsMember({"tcp", "machine"}));
 }
 
 /// Adds --tool-length and --work-offset (the target's placement) to `sub`.
@@ -556,6 +569,13 @@ void add_placement_options(CLI::App* sub, common_arguments& a) {
   sub->add_option("--tool-length", a.tool_length, "Tool length on the target, gauge point to tip, mm (with --work-offset; default 0)");
 }
 
+/// Adds --tolerance to `sub`.
+void add_tolerance_option(CLI::App* sub, common_arguments& a) {
+  sub->add_option("--tolerance", a.tolerance_mm,
+                  "How far (mm) the written tool-tip path may stray from the source's where a rotary move read or "
+                  "written in machine coordinates is cut into pieces (default 0.005)");
+}
+
 /// Adds --source-work-offset, --source-tool-length and --tolerance (motion without tool-tip
 /// tracking read as machine coordinates) to `sub`.
 void add_source_options(CLI::App* sub, common_arguments& a) {
@@ -564,9 +584,7 @@ void add_source_options(CLI::App* sub, common_arguments& a) {
                   "with --source-tool-length, motion without tool-tip tracking is read as machine coordinates");
   sub->add_option("--source-tool-length", a.source_tool_length,
                   "Tool length on the source, gauge point to tip, mm (with --source-work-offset)");
-  sub->add_option("--tolerance", a.tolerance_mm,
-                  "How far (mm) the written tool-tip path may stray from the source's where a rotary move read as "
-                  "machine coordinates is cut into pieces (default 0.005)");
+  add_tolerance_option(sub, a);
 }
 
 struct translate_arguments {
@@ -679,6 +697,10 @@ int run_translate(const translate_arguments& a) {
   const auto common = parse_common("translate", a.common);
   if (!common) return exit_codes::usage;
   options.common = *common;
+  if (const auto why = translate_detail::output_mode_refusal(options.common, j.output_dialect)) {
+    std::cerr << "kin5 translate: " << *why << '\n';
+    return exit_codes::usage;
+  }
   j.make = [&from_model, &to_model, options](prog::dialect d, const std::string& file) {
     return kin5::make_translator(from_model, to_model, d, file, options, report_detail::exceptions_only);
   };
@@ -703,6 +725,11 @@ int run_reverse(const machine_arguments& a) {
   j.verbose = a.verbose;
   const auto common = parse_common("reverse", a.common);
   if (!common) return exit_codes::usage;
+  if (common->coordinates == output_mode::machine) {
+    std::cerr << "kin5 reverse: --output-mode machine: APT CL data holds the tool tip and axis, not machine "
+                 "coordinates\n";
+    return exit_codes::usage;
+  }
   j.make = [&model, common](prog::dialect d, const std::string& file) {
     return kin5::make_reverse(model, d, file, report_detail::exceptions_only, *common);
   };
@@ -728,6 +755,10 @@ int run_post(const machine_arguments& a) {
   const prog::dialect out = j.output_dialect;
   const auto common = parse_common("post", a.common);
   if (!common) return exit_codes::usage;
+  if (const auto why = translate_detail::output_mode_refusal(*common, out)) {
+    std::cerr << "kin5 post: " << *why << '\n';
+    return exit_codes::usage;
+  }
   j.make = [&model, out, common](prog::dialect d, const std::string& file) {
     return kin5::make_post(model, d, out, file, report_detail::exceptions_only, *common);
   };
@@ -809,6 +840,7 @@ void add_program_commands(CLI::App& app, int& exit_code) {
     sub->add_option("-o,--output", a->output, "Output file; '-' for stdout")->capture_default_str();
     add_common_options(sub, a->common);
     add_placement_options(sub, a->common);
+    add_tolerance_option(sub, a->common);
     sub->add_flag("-v,--verbose", a->verbose, "Also list the blocks posted on the other solution branch");
     sub->add_option("input", a->input, "Input APT CL file; '-' for stdin")->required();
     sub->footer(default_dialect_table() + exit_code_footer);

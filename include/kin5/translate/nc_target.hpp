@@ -34,6 +34,7 @@
 #include "../program/modal.hpp"
 #include "carry_over.hpp"
 #include "feed.hpp"
+#include "machine_output.hpp"
 #include "options.hpp"
 #include "source_walk.hpp"
 
@@ -93,6 +94,15 @@ class nc_target {
   /// target's linear travel (`common_options::placement`); before the first `write`.
   void set_placement(const std::optional<run_inputs>& placement) { placement_ = placement; }
 
+  /// Motion as TCP or in machine coordinates (`mode`, else the dialect's; machine coordinates
+  /// need the placement), pieces within `tolerance_mm`; after `set_placement`.
+  void set_output(std::optional<output_mode> mode, double tolerance_mm) {
+    machine_mode_ = mode.value_or(default_output_mode(output_language_)) == output_mode::machine && placement_;
+    if (machine_mode_)
+      machine_ = machine_writer(to_, *placement_, tolerance_mm, supports_inverse_time(output_language_),
+                                feed_ == feed_policy::inverse_time);
+  }
+
   /// First pass: the step of every block, in order.
   void plan(const source_step& s) {
     if (s.what != source_step::kind::motion) return;
@@ -108,6 +118,7 @@ class nc_target {
     if (s.what == source_step::kind::passthrough) {
       emit(carried_over(b, source_language_, output_language_));
       ++out.passed_through;
+      machine_.forget();
       return;
     }
     program::block o = b;
@@ -126,6 +137,7 @@ class nc_target {
       write_copy(b, s, std::move(o), out, emit);
       return;
     }
+    if (machine_mode_) return write_machine(b, s, std::move(o), out, emit, on_report);
     write_motion(b, s, std::move(o), out, emit, on_report);
   }
 
@@ -138,6 +150,9 @@ class nc_target {
   rotary_planner_values planner_;
   rotary_path_values path_;
   std::optional<run_inputs> placement_;
+  bool machine_mode_ = false;  // motion written in machine coordinates (machine_output.hpp)
+  bool length_switched_on_ = false;  // machine coordinates: length compensation said for `post`
+  machine_writer machine_;
   bool output_inverse_time_ = false, tcp_switched_on_ = false, inverse_time_error_ = false;
   bool output_tcp_ = false;  // tool-tip tracking on in the output after the last block written
   bool restate_feed_ = false;  // the F in effect in the output is a piece's, not the program's
@@ -150,16 +165,24 @@ class nc_target {
   /// the policy.
   template <class Emit>
   void write_copy(const program::block& b, const source_step& s, program::block&& o, translation& out, Emit&& emit) {
+    if (machine_mode_) machine_writer::without_tcp(o), o.feed.reset(), o.feed_mode.reset();
     if (b.arc && b.arc->centre_mm) {  // an arc centre on its own (Heidenhain CC)
       const vec3 centre_source_mm = s.untracked ? *s.arc_source.centre_mm : *b.arc->centre_mm;
-      const auto mapped = principal_plane(target_T_source_.rotation * plane_normal(b.arc->plane));
+      if (machine_mode_ && !machine_.last()) {
+        out.errors.push_back(at(b, "circle centre in machine coordinates while the rotary axes' position is not known"));
+        return;
+      }
+      const rigid_transform frame_T_source =
+          machine_mode_ ? program_T_work(to_, machine_.last()->angles, machine_.placement()) * target_T_source_
+                        : target_T_source_;
+      const auto mapped = principal_plane(frame_T_source.rotation * plane_normal(b.arc->plane));
       if (!mapped) {
         out.errors.push_back(at(b, "circular move cannot be mapped: plane " + std::string(plane_name(b.arc->plane)) +
                                        " has no principal image on the target"));
         return;
       }
       o.arc->plane = mapped->first;
-      o.arc->centre_mm = target_T_source_.map_point(centre_source_mm);
+      o.arc->centre_mm = frame_T_source.map_point(centre_source_mm);
       if (!program::capabilities_of(output_language_).arc_centre_block) {  // arcs carry their own centre: a note
         const vec3 centre_target_mm = *o.arc->centre_mm;
         if (!o.comment)
@@ -209,7 +232,7 @@ class nc_target {
     o.axes = {};
     switch_tcp(s, o);
     if (program::is_arc(s.motion)) {
-      if (!write_arc(b, s, angles_target, tip_target_mm, o, out)) return;
+      if (!write_arc(b, s, angles_target, target_T_source_, o, out)) return;
     } else {
       o.axes.x_mm = tip_target_mm.x, o.axes.y_mm = tip_target_mm.y, o.axes.z_mm = tip_target_mm.z;
       for (std::size_t i = 0; i < to_.rotary_count; ++i) rotary_word(o.axes, to_.rotary(i).letter) = angles_target_deg[i];
@@ -231,6 +254,89 @@ class nc_target {
     previous_motion_ = j;
     previous_step_ = s;
     emit(std::move(o));
+  }
+
+  /// A motion block in machine coordinates (machine_output.hpp): each pose it reaches (its
+  /// source pieces' ends, then its own) from the pose written last, in the pieces (G10) needs,
+  /// each with its share of the block's time.
+  template <class Emit, class Report>
+  void write_machine(const program::block& b, const source_step& s, program::block&& o, translation& out, Emit&& emit,
+                     Report&& on_report) {
+    const std::size_t first = next_motion_, count = s.pieces.size() + 1;
+    next_motion_ += count;
+    for (std::size_t k = 0; k + 1 < count; ++k)
+      if (!piece_reachable(b, s, first + k, s.pieces[k].tip_mm, out)) return;
+    if (!report_motion(b, s, first + count - 1, out, on_report)) return;
+    o.text.clear();
+    machine_writer::without_tcp(o);
+    if (switch_tcp_on_ && !length_switched_on_) o.state.length_compensation = true;  // post: the tool's length
+    length_switched_on_ = true;
+    if (!s.start_source_mm) machine_.forget();
+    const std::optional<double> time_min = machine_time(b, s, out);
+    if (!s.rapid && !time_min && s.start_source_mm) return;  // refused
+    if (program::is_arc(s.motion)) return write_machine_arc(b, s, std::move(o), first, out, emit);
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::size_t j = first + k;
+      const written_pose pose{target_T_source_.map_point(k + 1 < count ? s.pieces[k].tip_mm : s.tip_source_mm),
+                              *path_.angles[j]};
+      const auto n = machine_.pieces_to(pose);
+      const char* words = n && *n > 1 ? words_of_a_whole_block(b) : nullptr;
+      if (!n || words)
+        return out.errors.push_back(at(b, !n ? std::string(machine_too_many) : std::string(machine_whole_block) + words));
+      for (std::size_t i = 1; i <= *n; ++i) {
+        const bool end = k + 1 == count && i == *n;
+        program::block p;
+        if (end) p = std::move(o);
+        else p.where = b.where, p.motion = s.motion, p.feed_rapid = s.rapid && b.feed_rapid, p.number = o.number,
+             p.comment = o.comment, o.number.reset(), o.comment.reset();  // the first piece's
+        machine_.piece(p, pose, i, *n, time_min ? std::optional<double>(*time_min / double(count)) : std::nullopt,
+                       s.feed_mm_per_min, s.rapid);
+        const vec3 xyz_mm{*p.axes.x_mm, *p.axes.y_mm, *p.axes.z_mm};
+        if (auto past = slides_past_travel(axes_for_untracked_point(to_, xyz_mm, machine_.placement())))
+          return out.errors.push_back(at(b, std::string(to_.geometry.id) + " cannot reach a piece of this block (" +
+                                                angles_text(s) + "): " + past->why));
+        if (!end) ++out.blocks_added;
+        emit(std::move(p));
+      }
+      warn_rotary_move(b, j, out);
+      previous_motion_ = j;
+      machine_.arrive(pose);
+    }
+    previous_step_ = s;
+  }
+
+  /// An arc in machine coordinates: at fixed angles the program point is a rigid map of the tip,
+  /// so the arc is mapped like the setup's (its plane through the map) and keeps its F.
+  template <class Emit>
+  void write_machine_arc(const program::block& b, const source_step& s, program::block&& o, std::size_t j,
+                         translation& out, Emit&& emit) {
+    const kin5::rotary_values& angles = *path_.angles[j];
+    o.axes = {};
+    if (!write_arc(b, s, angles, program_T_work(to_, angles, machine_.placement()) * target_T_source_, o, out)) return;
+    const bool inverse = s.feed_mode == program::feed_unit::inverse_time;
+    machine_.keep_feed(o, inverse ? b.feed : s.feed_mm_per_min, s.feed_mode);
+    warn_rotary_move(b, j, out);
+    previous_motion_ = j;
+    previous_step_ = s;
+    machine_.arrive({target_T_source_.map_point(s.tip_source_mm), angles});
+    emit(std::move(o));
+  }
+
+  /// The time (min) of feed move `b` (step `s`) on the source: its own in inverse time, the
+  /// (K16) time of a block read as machine coordinates, else its tip path over F. Empty for a
+  /// rapid or a move from an unknown start; empty, with an error, when F is not known.
+  std::optional<double> machine_time(const program::block& b, const source_step& s, translation& out) const {
+    if (s.rapid || !s.start_source_mm) return std::nullopt;
+    if (s.feed_mode == program::feed_unit::inverse_time) {
+      if (b.feed && *b.feed > 0.0) return 1.0 / *b.feed;
+      out.errors.push_back(at(b, "inverse-time feed move without its own F: its time is not known"));
+      return std::nullopt;
+    }
+    if (s.block_time_min) return s.block_time_min;
+    const double length = path_length(s);
+    if (s.feed_mm_per_min && *s.feed_mm_per_min > 0.0) return length / *s.feed_mm_per_min;
+    out.errors.push_back(at(b, "feed move at no known feed: its time in machine coordinates is not known"));
+    return std::nullopt;
   }
 
   /// Piece `k` (motion `j`) of subdivided block `b`, before its end: a straight move of the tip,
@@ -342,7 +448,13 @@ class nc_target {
   std::optional<slide_excess> slide_past_travel(const vec3& tip_source_mm, const kin5::rotary_values& angles) const {
     if (!placement_) return std::nullopt;
     const vec3 tip_target_mm = target_T_source_.map_point(tip_source_mm);
-    const vec3 slides_mm = linear_axes_for(to_, angles, placement_->work_offset.map_point(tip_target_mm), *placement_);
+    return slides_past_travel(linear_axes_for(to_, angles, placement_->work_offset.map_point(tip_target_mm), *placement_));
+  }
+
+  /// With a placement, the slide of `slides_mm` farthest past its travel, if any is by more
+  /// than `linear_slack_mm`.
+  std::optional<slide_excess> slides_past_travel(const vec3& slides_mm) const {
+    if (!placement_) return std::nullopt;
     const std::array<double, 3> x{slides_mm.x, slides_mm.y, slides_mm.z};
     std::size_t worst = 0;
     double excess = 0.0;
@@ -363,9 +475,10 @@ class nc_target {
   /// source plane onto; false, with an error, when that is no principal plane or the target's
   /// rotary axes would move during the arc.
   bool write_arc(const program::block& b, const source_step& s, const kin5::rotary_values& angles_target,
-                 const vec3& tip_target_mm, program::block& o, translation& out) const {
+                 const rigid_transform& frame_T_source, program::block& o, translation& out) const {
     const arc_path& arc_source = s.arc_source;
-    const auto mapped = principal_plane(target_T_source_.rotation * plane_normal(arc_source.plane));
+    const vec3 tip_target_mm = frame_T_source.map_point(s.tip_source_mm);
+    const auto mapped = principal_plane(frame_T_source.rotation * plane_normal(arc_source.plane));
     if (!mapped) {
       out.errors.push_back(at(b, "circular move cannot be mapped: plane " + std::string(plane_name(arc_source.plane)) +
                                      " maps to a plane that is not XY, ZX or YZ on the target"));
@@ -377,7 +490,7 @@ class nc_target {
       return false;
     }
     const auto [plane_target, flipped] = *mapped;
-    const vec3 start_target_mm = target_T_source_.map_point(*s.start_source_mm);
+    const vec3 start_target_mm = frame_T_source.map_point(*s.start_source_mm);
     for (program::arc_plane plane : {program::arc_plane::yz, program::arc_plane::zx, program::arc_plane::xy}) {
       const double v_mm = normal_component(tip_target_mm, plane);  // yz → x, zx → y, xy → z
       std::optional<double>& word = plane == program::arc_plane::yz   ? o.axes.x_mm
@@ -388,7 +501,7 @@ class nc_target {
     using program::motion_kind;
     o.motion = flipped ? (s.motion == motion_kind::arc_cw ? motion_kind::arc_ccw : motion_kind::arc_cw) : s.motion;
     program::arc_words arc_target{plane_target, std::nullopt, arc_source.radius_mm};
-    if (arc_source.centre_mm) arc_target.centre_mm = target_T_source_.map_point(*arc_source.centre_mm);
+    if (arc_source.centre_mm) arc_target.centre_mm = frame_T_source.map_point(*arc_source.centre_mm);
     o.arc = arc_target;
     return true;
   }

@@ -28,6 +28,7 @@
 #include "../program/dialect.hpp"
 #include "allowances.hpp"
 #include "feed.hpp"
+#include "machine_output.hpp"
 #include "m_codes.hpp"
 #include "work_offset_map.hpp"
 
@@ -60,6 +61,10 @@ struct common_options {
   /// How far (mm) the written tool-tip path may stray from the source's, where a block read as
   /// machine coordinates is cut into pieces because its rotary axes move.
   double tolerance_mm = 0.005;
+  /// What the output's motion blocks say: the tool tip under TCP, or the target's axis values
+  /// (machine_output.hpp; needs `placement`). Empty: what the output dialect does
+  /// (`default_output_mode`). `tolerance_mm` also bounds the tip's path between such blocks.
+  std::optional<output_mode> coordinates;
 };
 
 /// How to translate.

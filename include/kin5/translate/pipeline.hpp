@@ -179,6 +179,8 @@ class two_pass_translator final : public block_translator {
     second_.configure(source_, common_.allow);
     target_.set_tool_axis_tolerance(tool_axis_tolerance(source_.tolerance, first_.source().rounded_values()));
     target_.set_placement(common_.placement);
+    if constexpr (requires { target_.set_output(common_.coordinates, common_.tolerance_mm); })
+      target_.set_output(common_.coordinates, common_.tolerance_mm);
   }
 };
 
@@ -192,6 +194,15 @@ inline std::optional<std::string> translate_refusal(program::dialect source_lang
   if (is_cl_data(source_language)) return "APT CL data names no machine axes: use post, not translate";
   if (is_cl_data(output_dialect)) return "translate writes NC; for APT CL data use reverse";
   return feed_refusal(feed, output_dialect);
+}
+
+/// Why motion cannot be written as `common` asks in `output_dialect`, if it cannot: machine
+/// coordinates depend on where the part sits and on the tool length.
+inline std::optional<std::string> output_mode_refusal(const common_options& common, program::dialect output_dialect) {
+  if (common.coordinates.value_or(default_output_mode(output_dialect)) != output_mode::machine || common.placement)
+    return std::nullopt;
+  return "--output-mode machine writes the target's axis values, which depend on where the part sits and on the "
+         "tool length: give --work-offset (and --tool-length)";
 }
 
 /// Both passes of `t` over a whole program; the output program collects the emitted blocks.
@@ -234,7 +245,9 @@ inline std::unique_ptr<block_translator> make_translator(const machine_model& fr
       nc_source{from, options.common.source_placement, options.common.tolerance_mm},
       nc_target(to, options.setup.value_or(default_setup(from.geometry.id, to.geometry.id)), options.feed,
                 source_language, out, false),
-      file, out, detail, translate_refusal(source_language, options.feed, out),
+      file, out, detail,
+      translate_refusal(source_language, options.feed, out) ? translate_refusal(source_language, options.feed, out)
+                                                            : output_mode_refusal(options.common, out),
       source_context{source_language, {}, nullptr, "--from"}, options.common);
 }
 
@@ -246,8 +259,12 @@ inline std::unique_ptr<block_translator> make_reverse(const machine_model& m, pr
   using namespace translate_detail;
   return std::make_unique<two_pass_translator<nc_source, cl_target>>(
       nc_source{m, common.source_placement, common.tolerance_mm}, cl_target(source_language), file, program::cl_data_dialect(), detail,
-      translate_detail::is_cl_data(source_language) ? std::optional<std::string>("the input is already APT CL data")
-                                                    : std::nullopt,
+      translate_detail::is_cl_data(source_language)
+          ? std::optional<std::string>("the input is already APT CL data")
+      : common.coordinates == output_mode::machine
+          ? std::optional<std::string>("reverse writes APT CL data, the tool tip and axis: it has no machine "
+                                       "coordinates (--output-mode machine is for translate and post)")
+          : std::nullopt,
       source_context{source_language, {}, nullptr, "--machine"}, common);
 }
 
@@ -263,7 +280,7 @@ inline std::unique_ptr<block_translator> make_post(const machine_model& m, progr
       translate_detail::is_cl_data(output_dialect)
           ? std::optional<std::string>("post writes NC: choose " +
                                        one_of(dialect_names([](const program::capabilities& can) { return !can.cl_data; })))
-          : std::nullopt,
+          : output_mode_refusal(common, output_dialect),
       source_context{source_language, {}, nullptr, "--machine"}, common);
 }
 

@@ -199,7 +199,7 @@ class writer {
     return g == 530 || g == 280 || g == 300;
   }
 
-  /// G0–G3, G43.4 / G43.5 / G49, G93 / G94, G21.
+  /// G0–G3, G43.4 / G43.5 / G49, G43 [H] (length compensation without tracking), G93 / G94, G21.
   void modes(const block& b, bool vector_tcp_ahead) {
     if (b.motion || b.feed_rapid) {
       const motion_kind m = b.feed_rapid ? motion_kind::rapid : *b.motion;
@@ -211,6 +211,14 @@ class writer {
       // Another dialect's TCP uses the active tool's own length: H is that tool's register (the
       // offset number equal to the tool number, as tool-change macros set it).
       if (*b.tcp && !same_ && active_tool_) words_.push_back(code('H', *active_tool_));
+    }
+    if (b.state.length_compensation && !b.tcp) {  // without tool-tip tracking: G43 [H n] / G49
+      words_.push_back(*b.state.length_compensation ? "G43" : "G49");
+      const auto h = *b.state.length_compensation ? b.state.length_register ? b.state.length_register
+                                                    : same_                 ? std::nullopt
+                                                                            : active_tool_
+                                                  : std::nullopt;
+      if (h) words_.push_back(code('H', *h));
     }
     if (b.feed_mode) words_.push_back(*b.feed_mode == feed_unit::inverse_time ? "G93" : "G94");
     if (b.metric) words_.push_back(*b.metric ? "G21" : "G20");
