@@ -53,6 +53,22 @@ std::size_t worst_of(const std::vector<motion>& m, std::size_t first, std::size_
   return static_cast<std::size_t>(by_excess - m.begin());
 }
 
+/// The runs found by the library are the stretches of `m`: same count, first and last lines,
+/// block counts, worst block and its gap.
+void check_runs(const std::vector<unreachable_range>& ranges, const std::vector<motion>& m) {
+  const auto expected = stretches(m);
+  RC_ASSERT(ranges.size() == expected.size());
+  for (std::size_t k = 0; k < ranges.size(); ++k) {
+    const auto [first, last] = expected[k];
+    RC_ASSERT(ranges[k].first.line == m[first].line);
+    RC_ASSERT(ranges[k].last.line == m[last].line);
+    RC_ASSERT(ranges[k].blocks == last - first + 1);
+    const std::size_t worst = worst_of(m, first, last);
+    RC_ASSERT(ranges[k].worst.line == m[worst].line);
+    RC_ASSERT(std::abs(ranges[k].worst_gap.value - m[worst].gap_tenths_deg / 10.0) < 1e-6);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("unreachable runs are the maximal stretches of consecutive unreachable motion blocks") {
@@ -81,16 +97,11 @@ TEST_CASE("unreachable runs are the maximal stretches of consecutive unreachable
       reports.push_back(r);
     }
     const auto ranges = unreachable_ranges(reports);
+    check_runs(ranges, m);
     const auto expected = stretches(m);
-    RC_ASSERT(ranges.size() == expected.size());
     for (std::size_t k = 0; k < ranges.size(); ++k) {
       const auto [first, last] = expected[k];
-      RC_ASSERT(ranges[k].first.line == m[first].line);
-      RC_ASSERT(ranges[k].last.line == m[last].line);
-      RC_ASSERT(ranges[k].blocks == last - first + 1);
-      const std::size_t worst = worst_of(m, first, last);
-      RC_ASSERT(ranges[k].worst.line == m[worst].line);
-      RC_ASSERT(ranges[k].worst_why == "block " + std::to_string(worst));
+      RC_ASSERT(ranges[k].worst_why == "block " + std::to_string(worst_of(m, first, last)));
       int gap = 0, excess = 0;
       for (std::size_t i = first; i <= last; ++i)
         gap = std::max(gap, m[i].gap_tenths_deg), excess = std::max(excess, m[i].excess_tenths_mm);
@@ -119,17 +130,7 @@ TEST_CASE("unreachable runs are the maximal stretches of consecutive unreachable
                                                                              report_detail::exceptions_only);
     string_sink out;
     (void)stream_text(*t, text, siemens, "p.mpf", siemens, out);
-    const auto ranges = unreachable_ranges(t->result().reports);
-    const auto expected = stretches(m);
-    RC_ASSERT(ranges.size() == expected.size());
-    for (std::size_t k = 0; k < ranges.size(); ++k) {
-      const auto [first, last] = expected[k];
-      RC_ASSERT(ranges[k].first.line == m[first].line);
-      RC_ASSERT(ranges[k].last.line == m[last].line);
-      RC_ASSERT(ranges[k].blocks == last - first + 1);
-      RC_ASSERT(ranges[k].worst.line == m[worst_of(m, first, last)].line);
-      RC_ASSERT(std::abs(ranges[k].worst_gap.value - m[worst_of(m, first, last)].gap_tenths_deg / 10.0) < 1e-6);
-    }
+    check_runs(unreachable_ranges(t->result().reports), m);
   });
 }
 

@@ -16,20 +16,14 @@
 #include <kin5/machines/every_machine.hpp>
 
 #include "generators.hpp"
+#include "segment_distance.hpp"
 
 namespace {
 
 using namespace kin5;
 
-double distance(const vec3& a, const vec3& b) { return std::sqrt(squared_norm(a - b)); }
-
-/// Distance from p to the segment a–b, written out here.
-double to_segment(const vec3& p, const vec3& a, const vec3& b) {
-  const vec3 ab = b - a;
-  const double l2 = dot(ab, ab);
-  const double t = l2 > 0.0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
-  return distance(p, a + t * ab);
-}
+using test::distance;
+using test::to_segment;
 
 /// The Eigen chain's tool pose for slides `x` and angles `rotary`.
 template <machine M>
