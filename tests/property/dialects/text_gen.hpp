@@ -49,7 +49,7 @@ inline std::string draw_spelling(double value, int decimals) {
   const bool negative = s.front() == '-';
   std::string digits = negative ? s.substr(1) : s;
   if (digits.find('.') == std::string::npos && *rc::gen::arbitrary<bool>()) digits += '.';
-  if (digits.rfind("0.", 0) == 0 && *rc::gen::arbitrary<bool>()) digits.erase(0, 1);
+  if (digits.rfind("0.", 0) == 0 && digits.size() > 2 && *rc::gen::arbitrary<bool>()) digits.erase(0, 1);  // never a bare "."
   if (digits.find('.') != std::string::npos && *rc::gen::arbitrary<bool>()) digits += "00";
   const std::string sign = negative ? "-" : (*rc::gen::arbitrary<bool>() ? "+" : "");
   return sign + digits;
