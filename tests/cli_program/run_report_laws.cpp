@@ -53,6 +53,15 @@ std::size_t worst_of(const std::vector<motion>& m, std::size_t first, std::size_
   return static_cast<std::size_t>(by_excess - m.begin());
 }
 
+/// A SAJO 12000P -> DMU 80P translator of Siemens text into Siemens, keeping the exceptions only.
+auto sajo_to_dmu_in_siemens() {
+  const auto siemens = program::id_of<program::siemens::dialect>();
+  translate_options options;
+  options.output_dialect = siemens;
+  return make_translator<machines::sajo_12000p, machines::dmu_80p>(siemens, "p.mpf", options,
+                                                                   report_detail::exceptions_only);
+}
+
 /// The runs found by the library are the stretches of `m`: same count, first and last lines,
 /// block counts, worst block and its gap.
 void check_runs(const std::vector<unreachable_range>& ranges, const std::vector<motion>& m) {
@@ -124,10 +133,7 @@ TEST_CASE("unreachable runs are the maximal stretches of consecutive unreachable
     }
     text += "N90 TRAFOOF\nN100 M30\n";
     const auto siemens = program::id_of<program::siemens::dialect>();
-    translate_options options;
-    options.output_dialect = siemens;
-    const auto t = make_translator<machines::sajo_12000p, machines::dmu_80p>(siemens, "p.mpf", options,
-                                                                             report_detail::exceptions_only);
+    const auto t = sajo_to_dmu_in_siemens();
     string_sink out;
     (void)stream_text(*t, text, siemens, "p.mpf", siemens, out);
     check_runs(unreachable_ranges(t->result().reports), m);
@@ -154,10 +160,7 @@ TEST_CASE("every block is counted once: translated, comment only or refused, as 
     }
     text += "N90 TRAFOOF\nN100 M30\n";
     const auto siemens = program::id_of<program::siemens::dialect>();
-    translate_options options;
-    options.output_dialect = siemens;
-    const auto t = make_translator<machines::sajo_12000p, machines::dmu_80p>(siemens, "p.mpf", options,
-                                                                             report_detail::exceptions_only);
+    const auto t = sajo_to_dmu_in_siemens();
     string_sink out;
     block_accounting blocks;
     const auto run = stream_text(*t, text, siemens, "p.mpf", siemens, out, blocks.watch());

@@ -65,6 +65,12 @@ inline std::string draw_case(std::string word) {
   return word;
 }
 
+/// An address word: `letter` in random case, then `value` spelled as `draw_spelling` does, at
+/// random with a blank between (`X 5.`).
+inline std::string spell_word(char letter, double value, int decimals) {
+  return draw_case(std::string(1, letter)) + (*rc::gen::inRange(0, 6) == 0 ? " " : "") + draw_spelling(value, decimals);
+}
+
 /// Zero to two spaces or tabs.
 inline std::string draw_blanks() {
   return *rc::gen::element<std::string>("", "", " ", "  ", "\t");

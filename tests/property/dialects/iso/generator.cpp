@@ -19,6 +19,7 @@ using kin5::test::draw_case;
 using kin5::test::draw_decimal;
 using kin5::test::draw_direction;
 using kin5::test::draw_spelling;
+using kin5::test::spell_word;
 using kin5::test::draw_words;
 
 struct item {
@@ -33,11 +34,6 @@ struct state {
   bool vector_tcp = false;
   std::optional<double> last[3];
 };
-
-/// `letter` + value as NC programs spell it, with an optional blank between.
-std::string spell_word(char letter, double v, int decimals) {
-  return draw_case(std::string(1, letter)) + (*rc::gen::inRange(0, 6) == 0 ? " " : "") + draw_spelling(v, decimals);
-}
 
 /// A whole code (`G1`, `M03`): random case and leading zero.
 std::string spell_code(char letter, int v) {

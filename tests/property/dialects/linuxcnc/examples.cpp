@@ -9,6 +9,8 @@
 #include <kin5/program/io.hpp>
 #include <kin5/program/linuxcnc/dialect.hpp>
 
+#include "../example.hpp"
+
 using namespace kin5::program;
 
 namespace {
@@ -36,10 +38,7 @@ TEST_CASE("linuxcnc: a trt program: M428/M429, G43 without H, G59.1, G93, G4 P i
       "G13.1\n"
       "M2\n"
       "%\n";
-  const read_result r = linuxcnc::read(text, "l.ngc");
-  REQUIRE(r.errors.empty());
-  const auto& b = r.parsed.blocks;
-  REQUIRE(b.size() == 19);
+  const auto b = kin5::test::read_example<linuxcnc::dialect>(text, "l.ngc", 19);
   CHECK(b[0].passthrough);
   CHECK(b[1].comment == "MSG, load the fixture");
   CHECK(b[2].kept_words == strings{"g91.1", "g17", "g90", "g40", "g64", "p0.01"});

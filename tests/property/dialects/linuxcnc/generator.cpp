@@ -20,6 +20,7 @@ using kin5::test::draw_blanks;
 using kin5::test::draw_case;
 using kin5::test::draw_decimal;
 using kin5::test::draw_spelling;
+using kin5::test::spell_word;
 using kin5::test::draw_words;
 
 struct item {
@@ -34,10 +35,6 @@ struct state {
   std::optional<double> last[3];
   bool tracking = false, length = false;  // M428 on; G43 holds the loaded tool's length
 };
-
-std::string spell_word(char letter, double v, int decimals) {
-  return draw_case(std::string(1, letter)) + (*rc::gen::inRange(0, 6) == 0 ? " " : "") + draw_spelling(v, decimals);
-}
 
 std::string spell_code(char letter, int v) {
   return draw_case(std::string(1, letter)) + (v < 10 && *rc::gen::arbitrary<bool>() ? "0" : "") + std::to_string(v);
