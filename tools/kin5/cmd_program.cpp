@@ -283,11 +283,7 @@ int translate_and_write(const job& j, std::string bytes, prog::dialect dialect, 
   const stream_result run = stream_text(*translator, std::move(bytes), dialect, file, j.output_dialect, out,
                                         report ? blocks.watch() : block_watch{});
   const translation& result = translator->result();
-  const run_account found = account_of(result, run, blocks, j.target);
-  a.blocks = found.blocks, a.blocks_written = found.blocks_written, a.blocks_added = found.blocks_added;
-  a.motion = found.motion, a.unreachable = found.unreachable, a.allowed = found.allowed;
-  a.errors = found.errors, a.warnings = found.warnings;
-  a.errors_not_listed = found.errors_not_listed, a.warnings_not_listed = found.warnings_not_listed;
+  a = account_of(result, run, blocks, j.target, std::move(a));
   {
     std::vector<message> messages;
     collect(messages, run.input.errors, "error");

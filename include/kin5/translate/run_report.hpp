@@ -221,13 +221,14 @@ inline std::vector<program::diagnostic> first_in_source_order(std::vector<progra
 }
 
 /// The account of translation `t` to `target_id` streamed as `run`, its blocks counted by
-/// `blocks`; the caller fills in what was asked, the exit code and whether OUT was written.
+/// `blocks`, completing `asked` (what the job asked: command, files, dialects, machines); the
+/// caller fills in the exit code and whether OUT was written.
 /// When the reader found errors nothing was translated, and only the reader's errors count.
 /// Errors and warnings are listed up to `max_kept_diagnostics` each, the first in source order
 /// (500,000 refused blocks would list 100 MB), and the rest counted.
 inline run_account account_of(const translation& t, const stream_result& run, const block_accounting& blocks,
-                              std::string_view target_id) {
-  run_account a;
+                              std::string_view target_id, run_account asked = {}) {
+  run_account a = std::move(asked);
   a.blocks = blocks.counts(t, run);
   a.blocks_written = t.blocks_written, a.blocks_added = t.blocks_added, a.motion = t.per_class;
   a.errors = run.input.errors, a.warnings = run.input.warnings;
