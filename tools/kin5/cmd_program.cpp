@@ -174,9 +174,11 @@ std::vector<prog::diagnostic> errors_by_run(const translation& t, const std::vec
   return out;
 }
 
-/// An error about a whole file (line 0), e.g. one that cannot be read or written.
-prog::diagnostic file_error(const std::string& file, std::string message) {
-  return {prog::source_location{file, 0, 0}, std::move(message)};
+/// Says on stderr that a file cannot be read or written, and records it in `a` as an error about
+/// the whole `file` (line 0; `file` as the report names it).
+void file_failure(run_account& a, const std::string& prefix, const std::string& file, std::string message) {
+  std::cerr << prefix << message << '\n';
+  a.errors.push_back({prog::source_location{file, 0, 0}, std::move(message)});
 }
 
 // ---- the common run -----------------------------------------------------------------------
@@ -336,8 +338,7 @@ int translate_and_write(const job& j, std::string bytes, prog::dialect dialect, 
     else code = exit_codes::input_error;  // OUT left as it was
   }
   if (code == exit_codes::ok && !committed) {
-    std::cerr << prefix << "cannot write '" << j.output_path << "': " << out.error() << '\n';
-    a.errors.push_back(file_error(a.output, "cannot write '" + j.output_path + "': " + out.error()));
+    file_failure(a, prefix, a.output, "cannot write '" + j.output_path + "': " + out.error());
     code = exit_codes::input_error;
   }
   a.written = committed;
@@ -367,15 +368,13 @@ int execute(const job& j) {
   };
   output_file out(j.output_path);  // what OUT is, checked before the input is read
   if (!out.ok()) {
-    std::cerr << prefix << "cannot write '" << j.output_path << "': " << out.error() << '\n';
-    a.errors.push_back(file_error(a.output, "cannot write '" + j.output_path + "': " + out.error()));
+    file_failure(a, prefix, a.output, "cannot write '" + j.output_path + "': " + out.error());
     return finish(exit_codes::input_error);
   }
   std::string error;
   auto bytes = read_bytes(j.input_path, error);
   if (!bytes) {
-    std::cerr << prefix << "cannot read '" << j.input_path << "': " << error << '\n';
-    a.errors.push_back(file_error(a.input, "cannot read '" + j.input_path + "': " + error));
+    file_failure(a, prefix, a.input, "cannot read '" + j.input_path + "': " + error);
     return finish(exit_codes::input_error);
   }
 
