@@ -49,8 +49,11 @@ class cl_target {
       if (!o.comment) o.comment = *o.tcp ? "tool-tip tracking on" : "tool-tip tracking off";
       o.tcp.reset();
     }
+    if (b.feed_mode) source_inverse_time_ = *b.feed_mode == program::feed_unit::inverse_time;
     if (s.what == source_step::kind::copy) {
       o.arc.reset();
+      if (o.feed_mode) inverse_time_ = *o.feed_mode == program::feed_unit::inverse_time;
+      else if (o.feed) restore_unit(o, std::nullopt);
       emit(std::move(o));
       return;
     }
@@ -61,17 +64,21 @@ class cl_target {
       out.errors.push_back(at(b, "circular move cannot be written as GOTO points; kin5 does not linearise arcs"));
       return;
     }
-    if (s.rotary_moves && !s.rapid) {
-      out.errors.push_back(at(b, "feed move without tool-tip tracking whose rotary axes move: not written as APT CL "
-                                 "data (its pieces' feeds are not translated); translate it to a machine instead"));
+    // A rotary feed move read as machine coordinates: each piece keeps its share of the block's
+    // time T, (K15) = Tian et al. 2010, eq. (20), as FEDRAT/INVERS n/T (its tip may stand still).
+    const bool timed = s.rotary_moves && !s.rapid;
+    if (timed && !s.block_time_min) {
+      out.errors.push_back(at(b, "feed move without tool-tip tracking whose rotary axes move: its time is not known"));
       return;
     }
-    for (const tool_pose& piece : s.pieces) {  // a rapid's pieces, before its end
+    const double pieces_per_min = timed ? double(s.pieces.size() + 1) / *s.block_time_min : 0.0;
+    for (const tool_pose& piece : s.pieces) {  // the pieces before the block's end
       program::block p;
       p.where = b.where;
-      p.motion = program::motion_kind::rapid;
+      p.motion = s.rapid ? program::motion_kind::rapid : program::motion_kind::linear;
       p.axes.x_mm = piece.tip_mm.x, p.axes.y_mm = piece.tip_mm.y, p.axes.z_mm = piece.tip_mm.z;
       p.axes.tool_axis = piece.axis;
+      if (timed) feed_in(p, pieces_per_min, program::feed_unit::inverse_time);
       ++out.blocks_added;
       emit(std::move(p));
     }
@@ -81,11 +88,31 @@ class cl_target {
     o.axes.tool_axis = s.u_source;
     o.motion = s.rapid ? program::motion_kind::rapid : program::motion_kind::linear;
     if (s.rapid) o.feed.reset();
+    o.feed_mode.reset();
+    if (timed) feed_in(o, pieces_per_min, program::feed_unit::inverse_time);
+    else if (!s.rapid) restore_unit(o, s.feed_mm_per_min);
     emit(std::move(o));
   }
 
  private:
   program::dialect source_language_;
+  bool inverse_time_ = false;         // FEDRAT/INVERS in effect in the output
+  bool source_inverse_time_ = false;  // and in the source
+
+  /// The source's feed unit again in `o` after pieces in inverse time: said, with its F (`per_minute`,
+  /// the F in effect per minute, when `o` has none).
+  void restore_unit(program::block& o, std::optional<double> per_minute) {
+    if (inverse_time_ == source_inverse_time_) return;
+    if (!o.feed) o.feed = per_minute;
+    if (o.feed) feed_in(o, *o.feed, source_inverse_time_ ? program::feed_unit::inverse_time : program::feed_unit::per_minute);
+  }
+
+  /// F `f` in unit `u` in block `p`, the unit said when it changes.
+  void feed_in(program::block& p, double f, program::feed_unit u) {
+    p.feed = f;
+    const bool inverse = u == program::feed_unit::inverse_time;
+    if (inverse != inverse_time_) p.feed_mode = u, inverse_time_ = inverse;
+  }
 };
 
 }  // namespace kin5::translate_detail

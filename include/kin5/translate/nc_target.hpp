@@ -364,19 +364,21 @@ class nc_target {
 
   /// F of one of `n` equal pieces of an untracked block whose rotary axes move, the tip moving by
   /// `chord_mm` into motion `j`: the piece keeps its share of the block's time T, (K15), as the
-  /// tip's speed |chord| n / T, or in inverse time n / T; a piece whose tip stands still is timed
-  /// over the target's rotary degrees, (K16).
+  /// tip's speed |chord| n / T, or in inverse time n / T (a source in inverse time, or the
+  /// policy); a piece whose tip stands still is timed over the target's rotary degrees, (K16).
   void piece_feed(const program::block& b, const source_step& s, std::size_t n, const vec3& chord_mm, std::size_t j,
                   program::block& o, translation& out) {
     if (s.rapid) return;
     const double time_min = *s.block_time_min / double(n);
-    if (feed_ == feed_policy::inverse_time) {
-      if (auto error = feed_refusal(feed_, output_language_)) {
+    if (feed_ == feed_policy::inverse_time || s.feed_mode == program::feed_unit::inverse_time) {
+      if (auto error = feed_refusal(program::feed_unit::inverse_time == s.feed_mode ? feed_policy::inverse_time : feed_,
+                                    output_language_)) {
         if (!inverse_time_error_) out.errors.push_back(at(b, *error));
         inverse_time_error_ = true;
       }
-      o.feed = 1.0 / time_min;
-      if (!output_inverse_time_) o.feed_mode = program::feed_unit::inverse_time, output_inverse_time_ = true;
+      o.feed = 1.0 / time_min;  // a source in inverse time stays so: its G93 is carried over
+      if (feed_ == feed_policy::inverse_time && !output_inverse_time_)
+        o.feed_mode = program::feed_unit::inverse_time, output_inverse_time_ = true;
       return;
     }
     double length = norm(chord_mm);

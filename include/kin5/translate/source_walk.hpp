@@ -424,6 +424,8 @@ class source_walker {
       for (std::size_t i = 0; i < s.rotary_count; ++i) delta_deg[i] = to_degrees(move.end[i] - move.start[i]).value;
       s.block_time_min = block_length(move.end_mm - move.start_mm, std::span<const double>(delta_deg.data(), s.rotary_count)) /
                          *s.feed_mm_per_min;
+    } else if (start_known && !s.rapid && s.feed_mode == program::feed_unit::inverse_time && b.feed && *b.feed > 0.0) {
+      s.block_time_min = 1.0 / *b.feed;  // inverse time: F is 1 / the block's time in minutes
     }
     if (program::is_arc(s.motion)) return untracked_arc(b, move.end, s, to);
     if (!turns) return true;
@@ -435,8 +437,8 @@ class source_walker {
       return false;
     }
     if (!s.rapid && !s.block_time_min) {
-      to.fail(at(b, "feed move without tool-tip tracking whose rotary axes move, in inverse time: its pieces' "
-                    "feeds are not translated"));
+      to.fail(at(b, "feed move without tool-tip tracking whose rotary axes move, in inverse time without its own F: "
+                    "its time is not known"));
       return false;
     }
     if (const char* words = words_of_a_whole_block(b)) {

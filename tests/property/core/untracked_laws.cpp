@@ -68,21 +68,41 @@ std::optional<double> rotary_deg_of(const program::axis_words& w, axis_letter le
 struct written {
   std::vector<vec3> tip_mm;
   std::vector<std::optional<double>> feed;
+  std::vector<bool> inverse_time;  ///< the block's F is 1 / its time
   std::vector<std::array<double, 2>> rotary_deg;
 };
 template <machine M>
 written motions_of(const translation& t) {
   written w;
-  for (const auto& b : t.output.blocks)
+  bool inverse_time = false;
+  for (const auto& b : t.output.blocks) {
+    if (b.feed_mode) inverse_time = *b.feed_mode == program::feed_unit::inverse_time;
     if (b.axes.has_linear()) {
       w.tip_mm.push_back({*b.axes.x_mm, *b.axes.y_mm, *b.axes.z_mm});
       w.feed.push_back(b.feed);
+      w.inverse_time.push_back(inverse_time);
       std::array<double, 2> r{};
       for (std::size_t i = 0; i < rotary_count<M>; ++i)
-        r[i] = *rotary_deg_of(b.axes, M::rotary[i].letter);
+        r[i] = rotary_deg_of(b.axes, M::rotary[i].letter).value_or(0.0);  // none in CL data
       w.rotary_deg.push_back(r);
     }
+  }
   return w;
+}
+
+/// (K15): the source controller reads F over the (K16) length of its axis values: the time (min)
+/// of the second block of `nc`, from q0 to q1.
+template <machine M>
+double source_time(const program::program& nc, const axis_position<M>& q0, const axis_position<M>& q1,
+                   double feed_mm_per_min) {
+  const vec3 p0{*nc.blocks[0].axes.x_mm, *nc.blocks[0].axes.y_mm, *nc.blocks[0].axes.z_mm};
+  const vec3 p1{*nc.blocks[1].axes.x_mm, *nc.blocks[1].axes.y_mm, *nc.blocks[1].axes.z_mm};
+  double l2 = squared_norm(p1 - p0);
+  for (std::size_t i = 0; i < rotary_count<M>; ++i) {
+    const double d = to_degrees(q1.rotary[i]).value - to_degrees(q0.rotary[i]).value;
+    l2 += d * d;
+  }
+  return std::sqrt(l2) / feed_mm_per_min;
 }
 
 }  // namespace
@@ -101,12 +121,19 @@ TEMPLATE_LIST_TEST_CASE("(G9) untracked blocks written as TCP follow the source'
     in.work_offset.rotation = mat3::identity();
     const double tolerance_mm = *rc::gen::element(0.005, 0.001, 0.05);
     const double feed_mm_per_min = *test::real_in(10, 20000);
+    const bool inverse_time = *rc::gen::arbitrary<bool>();  // the source block in G93, F = 1 / its time
 
     program::program nc;
     nc.language = *program::parse_dialect("iso");
     nc.file = "u.nc";
     nc.blocks = {block_at<M>(q0, in, true, 0.0, 1), block_at<M>(q1, in, false, feed_mm_per_min, 2)};
+    const double source_time_min = source_time<M>(nc, q0, q1, feed_mm_per_min);
+    if (inverse_time) {
+      if (!(source_time_min > 0.0)) RC_DISCARD("a block of no length has no inverse time");
+      nc.blocks[1].feed_mode = program::feed_unit::inverse_time, nc.blocks[1].feed = 1.0 / source_time_min;
+    }
     translate_options options;
+    options.output_dialect = program::parse_dialect("iso");
     options.setup = rigid_transform::identity();
     options.common.source_placement = in;
     options.common.tolerance_mm = tolerance_mm;
@@ -128,19 +155,15 @@ TEMPLATE_LIST_TEST_CASE("(G9) untracked blocks written as TCP follow the source'
       }
     }
 
-    // (K15): the source controller reads F over the (K16) length of its axis values.
-    const vec3 p0{*nc.blocks[0].axes.x_mm, *nc.blocks[0].axes.y_mm, *nc.blocks[0].axes.z_mm};
-    const vec3 p1{*nc.blocks[1].axes.x_mm, *nc.blocks[1].axes.y_mm, *nc.blocks[1].axes.z_mm};
-    double l2 = squared_norm(p1 - p0);
-    for (std::size_t i = 0; i < rotary_count<M>; ++i) {
-      const double d = to_degrees(q1.rotary[i]).value - to_degrees(q0.rotary[i]).value;
-      l2 += d * d;
-    }
-    const double source_time_min = std::sqrt(l2) / feed_mm_per_min;
     double written_time_min = 0.0;
     std::optional<double> f;
     for (std::size_t k = 0; k < n; ++k) {
       if (w.feed[k + 1]) f = w.feed[k + 1];
+      if (w.inverse_time[k + 1]) {
+        RC_ASSERT(w.feed[k + 1].has_value());
+        written_time_min += 1.0 / *w.feed[k + 1];
+        continue;
+      }
       double length = distance(w.tip_mm[k + 1], w.tip_mm[k]);
       if (!(length > 1e-9)) {  // the tip stands still: timed over the rotary degrees (K16)
         double d2 = 0.0;
@@ -153,5 +176,40 @@ TEMPLATE_LIST_TEST_CASE("(G9) untracked blocks written as TCP follow the source'
       }
     }
     RC_ASSERT(std::abs(written_time_min - source_time_min) <= 1e-9 * source_time_min + 1e-15);
+  });
+}
+
+TEMPLATE_LIST_TEST_CASE("(G9) reverse writes an untracked rotary feed move as CL pieces that keep its time",
+                        "[core][untracked]", kin5::machines::every_machine) {
+  using M = TestType;
+  rc::prop("GOTO pieces on the source's interpolated tip, FEDRAT/INVERS adding up to the block's time", [] {
+    const auto q0 = *test::axis_values_within<M>();
+    const auto q1 = *test::axis_values_within<M>();
+    RC_PRE(q0.rotary != q1.rotary);
+    run_inputs in = *test::run_inputs_any();
+    in.work_offset.rotation = mat3::identity();
+    const double feed_mm_per_min = *test::real_in(10, 20000);
+    program::program nc;
+    nc.language = *program::parse_dialect("iso");
+    nc.file = "u.nc";
+    nc.blocks = {block_at<M>(q0, in, true, 0.0, 1), block_at<M>(q1, in, false, feed_mm_per_min, 2)};
+    const double source_time_min = source_time<M>(nc, q0, q1, feed_mm_per_min);
+    if (*rc::gen::arbitrary<bool>())
+      nc.blocks[1].feed_mode = program::feed_unit::inverse_time, nc.blocks[1].feed = 1.0 / source_time_min;
+    common_options common;
+    common.source_placement = in;
+    const translation t = translate_detail::run(*make_reverse(M::model, nc.language, nc.file, report_detail::every_block, common), nc);
+    if (!t.ok()) RC_FAIL(t.errors.front().message);
+    const written w = motions_of<M>(t);
+    const std::size_t n = w.tip_mm.size() - 1;
+    RC_ASSERT(n >= 1u);
+    double written_time_min = 0.0;
+    for (std::size_t k = 1; k <= n; ++k) {
+      RC_ASSERT(distance(w.tip_mm[k], source_tip<M>(q0, q1, double(k) / double(n), in)) <= 1e-7);
+      RC_ASSERT(w.inverse_time[k]);
+      RC_ASSERT(w.feed[k].has_value());
+      written_time_min += 1.0 / *w.feed[k];
+    }
+    RC_ASSERT(std::abs(written_time_min - source_time_min) <= 1e-9 * source_time_min);
   });
 }
