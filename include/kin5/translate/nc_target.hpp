@@ -127,11 +127,12 @@ class nc_target {
       return;
     }
     carry_over(o, source_language_, output_language_);
-    if (b.feed_mode == program::feed_unit::inverse_time) {
-      if (auto error = feed_refusal(feed_policy::inverse_time, output_language_)) {
-        out.errors.push_back(at(b, *error));
-        return;
-      }
+    if (b.feed_mode) source_inverse_time_ = *b.feed_mode == program::feed_unit::inverse_time;
+    if (source_inverse_time_ && !supports_inverse_time(output_language_)) {
+      // Each move's time is kept by a per-minute F (write_feed); G93 itself has no equivalent,
+      // and an F without a move takes effect on the next move, where it is converted.
+      if (o.feed_mode == program::feed_unit::inverse_time) o.feed_mode.reset();
+      if (s.what == source_step::kind::copy) o.feed.reset();
     }
     if (s.what == source_step::kind::copy) {
       write_copy(b, s, std::move(o), out, emit);
@@ -156,6 +157,7 @@ class nc_target {
   bool output_inverse_time_ = false, tcp_switched_on_ = false, inverse_time_error_ = false;
   bool output_tcp_ = false;  // tool-tip tracking on in the output after the last block written
   bool restate_feed_ = false;  // the F in effect in the output is a piece's, not the program's
+  bool source_inverse_time_ = false;  // G93 (FEDRAT/INVERS) in effect in the source
   std::optional<std::size_t> previous_motion_;  // motion index of the last written motion
   int branch_off_pole_ = -1;                    // branch of the last written motion off a pole
   source_step previous_step_;                   // its step
@@ -516,7 +518,8 @@ class nc_target {
       if (o.feed) restate_feed_ = true;  // `G0 X… F300`: F300 is for the feed moves after it
       o.feed.reset();
     } else if (s.feed_mode == program::feed_unit::inverse_time) {
-      // Already inverse time: the block time is kept by construction.
+      // Already inverse time: the block time is kept by construction, or by a per-minute F.
+      if (!supports_inverse_time(output_language_)) per_minute_keeping_time(b, s, o, out);
     } else if (feed_ == feed_policy::block_time && s.feed_mm_per_min) {
       o.feed = block_time_feed_mm_per_min(*s.feed_mm_per_min, source_length(s), target_length(tip_target_mm, angles_target_deg));
     } else if (feed_ == feed_policy::inverse_time && s.feed_mm_per_min) {
@@ -530,6 +533,23 @@ class nc_target {
                                                        : "start point unknown, so is the block time: no inverse-time F written"));
       if (!output_inverse_time_) o.feed_mode = program::feed_unit::inverse_time, output_inverse_time_ = true;
     }
+  }
+
+  /// An inverse-time move (its time 1/F minutes) for a dialect without inverse time: the
+  /// per-minute F that keeps its time, F = tool-tip path length × F, the tip path being the same
+  /// on both machines (the setup is rigid). Refused when the tip does not move (a rotation
+  /// alone: no tip speed gives its time) or its start is not known; a feed too small to write
+  /// is refused by the writer.
+  void per_minute_keeping_time(const program::block& b, const source_step& s, program::block& o, translation& out) {
+    const std::string cannot = " cannot keep its time in " + std::string(program::name(output_language_)) +
+                               ", which has no inverse-time feed";
+    if (!s.feed_inverse_per_min) return out.errors.push_back(at(b, "inverse-time move without F" + cannot));
+    if (!s.start_source_mm) return out.errors.push_back(at(b, "inverse-time move from an unknown start point" + cannot));
+    const double tip_mm = program::is_arc(s.motion) ? arc_length_mm(s.arc_source, *s.start_source_mm, s.tip_source_mm)
+                                                    : norm(s.tip_source_mm - *s.start_source_mm);
+    if (!(tip_mm > 0.0))
+      return out.errors.push_back(at(b, "inverse-time move whose tool tip does not move (a rotation alone)" + cannot));
+    o.feed = tip_mm * *s.feed_inverse_per_min;
   }
 
   /// (K16) length of the source block from the previous motion (0 for the first).

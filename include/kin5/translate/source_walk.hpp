@@ -110,6 +110,7 @@ struct source_step {
   bool rapid = false;
   program::feed_unit feed_mode = program::feed_unit::per_minute;
   std::optional<double> feed_mm_per_min;      ///< F in effect, when `feed_mode` is per minute
+  std::optional<double> feed_inverse_per_min; ///< F in effect, when `feed_mode` is inverse time (1/min)
   std::optional<vec3> start_source_mm;        ///< tool tip before the block, when known
   arc_path arc_source;                        ///< a circular motion's arc, source frame
   /// Read as machine coordinates (TCP off): tip and axis by (G9); the rotary axes may move.
@@ -284,6 +285,7 @@ class source_walker {
     for (auto& note : notes) to.refuse(std::move(note));
     s.feed_mode = modal_.feed_mode;
     if (modal_.feed_mode == program::feed_unit::per_minute) s.feed_mm_per_min = modal_.feed;
+    else s.feed_inverse_per_min = modal_.feed;
     if (program::is_arc(s.motion) && !arc_of(b, before, s, to)) return s;
     if constexpr (Source::needs_tcp) {
       if (s.untracked && !untracked_tip(b, before, s, to)) return s;
