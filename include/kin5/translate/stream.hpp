@@ -89,14 +89,34 @@ inline bool blank(const program::block& b) {
   return content == program::block{};
 }
 
+/// How a file given as APT CL data was seen to be NC: by its markers, or because an NC
+/// dialect's reader finds fewer errors in it than the APT reader and no GOTO/ moves the tool.
+enum class nc_evidence { markers, reader };
+
 /// Why a file read as APT CL data is not: it moves the tool nowhere and `not_understood` of its
-/// statements are not APT (an NC program given to `post` would otherwise become comments).
-inline std::string not_cl_data(std::size_t not_understood, std::optional<program::dialect> looks_like = {}) {
+/// statements are not APT, or it is NC in dialect `looks_like` (an NC program given to `post`
+/// would otherwise become comments, or an error per line).
+inline std::string not_cl_data(std::size_t not_understood, std::optional<program::dialect> looks_like = {},
+                               nc_evidence by = nc_evidence::markers) {
   std::string why = "not APT CL data: ";
-  why += looks_like ? "it reads as a " + std::string(program::name(*looks_like)) + " NC program (by its markers)"
+  why += looks_like ? "it reads as a " + std::string(program::name(*looks_like)) + " NC program" +
+                          (by == nc_evidence::markers ? " (by its markers)" : " (no GOTO/, and its reader finds fewer errors)")
                     : "no GOTO/ moves the tool and " + std::to_string(not_understood) +
                           (not_understood == 1 ? " statement is" : " statements are") + " not APT";
   return why + "; post reads CL data, translate and reverse read NC programs";
+}
+
+/// The NC dialect whose reader finds the fewest errors in `text`, fewer than `cl_errors` (the
+/// first in `program::dialects` on a tie); none when no NC reader does better than APT's.
+inline std::optional<program::dialect> closest_nc_dialect(std::string_view text, std::size_t cl_errors) {
+  std::optional<program::dialect> best;
+  std::size_t fewest = cl_errors;
+  for (const program::dialect d : program::nc_dialect_ids()) {
+    program::read_result r;
+    program::read_blocks(d, text, "", r, [](program::block&&) {});
+    if (r.error_count() < fewest) fewest = r.error_count(), best = d;
+  }
+  return best;
 }
 
 /// Both passes of `t` over the blocks `read` gives (see the file comment); output blocks are
@@ -160,7 +180,19 @@ stream_result stream_text(block_translator& t, std::string text, program::dialec
       diagnostics.errors.push_back(translate_detail::file_error(file, not_cl_data(0, guessed)));
       return;
     }
-    program::read_blocks(source_language, text, file, diagnostics, on_block);
+    const bool cl_data = program::capabilities_of(source_language).cl_data;
+    std::size_t moving = 0;
+    const program::block_sink counting = [&](program::block&& b) {
+      moving += b.moves() ? 1 : 0;
+      on_block(std::move(b));
+    };
+    program::read_blocks(source_language, text, file, diagnostics, cl_data ? counting : on_block);
+    if (cl_data && moving == 0 && !diagnostics.ok()) {  // NC without markers: one error, not one per line
+      if (const auto nc = closest_nc_dialect(text, diagnostics.error_count())) {
+        diagnostics = {};
+        diagnostics.errors.push_back(translate_detail::file_error(file, not_cl_data(0, nc, nc_evidence::reader)));
+      }
+    }
     if (diagnostics.resolution.empty()) diagnostics.resolution = resolution;
     std::string().swap(text);  // freed (assigning an empty string would keep the capacity)
   };

@@ -358,11 +358,17 @@ TEST_CASE("post refuses an NC program given as CL data, and nothing reaches the 
   const auto siemens = post_text("%_N_P_MPF\nN10 TRAORI\nN20 G1 X0 Y0 Z50 A-30 B10 F500\nN30 M30\n");
   REQUIRE(siemens.errors.size() == 1);
   CHECK(siemens.errors[0].message.find("it reads as a siemens NC program") != std::string::npos);
-  // No marker: the APT reader refuses each statement it does not know, at its line.
+  // No marker: no GOTO/, and the ISO reader finds fewer errors than the APT reader (4): one
+  // error naming the dialect, not one per line.
   const auto iso = post_text("%\nO1000\nG0 X0 Y0 Z50\nG1 X10 F500\nM30\n%\n");
-  REQUIRE(iso.errors.size() == 4);
-  CHECK(iso.errors[0].to_string() == "p.cl:2:1: error: APT statement O1000 is not supported: only statements known "
-                                     "not to change the motion are passed on");
+  REQUIRE(iso.errors.size() == 1);
+  CHECK(iso.errors[0].where.line == 0);  // about the whole file
+  CHECK(iso.errors[0].message == "not APT CL data: it reads as a iso NC program (no GOTO/, and its reader finds fewer "
+                                 "errors); post reads CL data, translate and reverse read NC programs");
+  // APT with a mistake and no GOTO/ is still APT: its own errors, at their lines.
+  const auto apt = post_text("PARTNO P\nUNITS/MM\nFEDRAT/MMPM,500.0\nGOTO/0.0,0.0\nFINI\n");
+  REQUIRE_FALSE(apt.ok());
+  CHECK(apt.errors[0].where.line == 4);
   // CL data with a statement kin5 does not read still posts (with its warning).
   CHECK(post_text("PARTNO P\nUNITS/MM\nFEDRAT/MMPM,500.0\nGOTO/0.0,0.0,10.0,0.0,0.0,1.0\nFINI\n").ok());
 }
