@@ -26,7 +26,7 @@ namespace kin5::program::heidenhain::detail {
 /// parameters.
 struct reader_state {
   std::optional<double> last[3];
-  q_parameters q;
+  parameter_table q = q_parameters();
   arc_plane plane = arc_plane::xy;
   std::optional<vec3> centre;
   std::optional<std::string> begin_name;
@@ -128,13 +128,13 @@ class motion_reader : public word_checks {
   /// A word whose value is a Q parameter (`FQ1`, `X-Q2`) takes the parameter's constant value.
   bool resolve(word& w) {
     std::string why;
-    const std::optional<double> v = state_.q.value(*w.parameter, why);
+    const parameter_literal* v = state_.q.value(*w.parameter, why);
     if (!v) {
       error(w.pos, why);
       w.bad = true;
       return false;
     }
-    w.value = w.parameter_negated ? -*v : *v;
+    w.value = w.parameter_negated ? -v->value : v->value;
     w.parameter.reset();
     return true;
   }

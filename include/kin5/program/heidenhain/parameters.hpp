@@ -5,51 +5,26 @@
 /// (the line is named), one not assigned earlier in the file (its value is the machine's),
 /// Q100–Q199 (set by the control, e.g. Q120–Q122 by PLANE … STAY), and any parameter in a
 /// program with control flow (`LBL`, `CALL LBL`, `CALL PGM`, `FN 9`–`FN 12` jumps): its value
-/// would depend on the path taken.
+/// would depend on the path taken. The table is the one every reader shares (../parameters.hpp).
 #pragma once
 
 #include <cstddef>
-#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
-#include <vector>
+#include <utility>
 
 #include "../lexing.hpp"
 #include "../number.hpp"
+#include "../parameters.hpp"
 #include "../text.hpp"
 
 namespace kin5::program::heidenhain::detail {
 
-/// What the file has assigned to each Q parameter so far.
-struct q_parameters {
-  struct assignment {
-    std::optional<double> literal;  ///< the value, when the right side was a single number
-    std::size_t line = 0;           ///< where it was assigned
-  };
-  std::map<int, assignment> assigned;
-  std::string control_flow;       ///< the first control-flow statement of the file ("CALL LBL"), if any
-  std::size_t control_flow_line = 0;
-
-  /// The value of `Q<n>` for a word, or the reason it has none.
-  std::optional<double> value(int n, std::string& why) const {
-    const std::string name = "Q" + std::to_string(n);
-    if (control_flow_line != 0) {
-      why = "parameter " + name + " in a program with control flow (" + control_flow + " at line " +
-            std::to_string(control_flow_line) + "): its value depends on the path";
-    } else if (n >= 100 && n <= 199) {
-      why = "parameter " + name + " is set by the control (Q100-Q199), not a constant of this file";
-    } else if (const auto it = assigned.find(n); it == assigned.end()) {
-      why = "parameter " + name + " is not assigned earlier in this file: its value is the machine's";
-    } else if (!it->second.literal) {
-      why = "parameter " + name + " is computed at line " + std::to_string(it->second.line) +
-            "; only a parameter assigned a number is read";
-    } else {
-      return it->second.literal;
-    }
-    return std::nullopt;
-  }
-};
+/// The Q parameters of a file: Q100-Q199 are the control's (e.g. Q120-Q122 set by PLANE … STAY).
+inline parameter_table q_parameters() {
+  return parameter_table("Q", {{100, 199, "set by the control (Q100-Q199), not a constant of this file"}});
+}
 
 /// `s` (one statement, block number removed) after the keywords `FN <n>:` — the FN number and
 /// the position after the colon — if it starts with them.
@@ -85,7 +60,7 @@ inline std::string control_flow_of(std::string_view line) {
 /// Records an assignment to a Q parameter in statement `s` (block number removed) at `line`:
 /// `FN 0: Qn=number`, `Qn = number` (a literal), or any other `FN k: Qn=…` / `Qn = …` (computed).
 /// Returns whether `s` was an assignment.
-inline bool record_assignment(std::string_view s, std::size_t line, q_parameters& q) {
+inline bool record_assignment(std::string_view s, std::size_t line, parameter_table& q) {
   std::size_t k = 0;
   int fn = 0;
   if (const auto head = fn_head(s)) fn = head->first, k = lexing::skip_blanks(s, head->second);
@@ -101,7 +76,9 @@ inline bool record_assignment(std::string_view s, std::size_t line, q_parameters
   const parsed_number v = read_number(s.substr(k));
   const std::size_t after = lexing::skip_blanks(s, k + v.length);
   const bool literal = fn == 0 && v.error == number_error::none && v.length > 0 && (after == s.size() || s[after] == ';');
-  q.assigned[n] = {literal ? std::optional<double>(v.value) : std::nullopt, line};
+  std::optional<parameter_literal> value;
+  if (literal) value = parameter_literal{v.value, std::string(s.substr(k, v.length))};
+  q.assign(n, std::move(value), line);
   return true;
 }
 

@@ -1,8 +1,10 @@
 /// @file program/iso/lexer.hpp
 /// The first stage of the ISO / Fanuc reader: one line split into address words (`X-450.`,
-/// `G43.4`, `x 10`: a letter, optional blanks, a number) and comments (`( … )` and `;` to the
-/// end of the line). The first problem stops the line: a parameter or expression (`#`, `[`), a
-/// number without a letter, a malformed number, a stray byte. What a word means is the reader's.
+/// `G43.4`, `x 10`: a letter, optional blanks, a number, or a parameter `X#1`, `X-#1` whose value
+/// the reader supplies) and comments (`( … )` and `;` to the end of the line); a parameter
+/// assignment `#1 = 5000` (`lex_assignment`). The first problem stops the line: an expression
+/// (`[`, `#1+2`, `##1`), a number without a letter, a malformed number, a stray byte. What a word
+/// means is the reader's.
 #pragma once
 
 #include <cstddef>
@@ -13,6 +15,7 @@
 
 #include "../lexing.hpp"
 #include "../number.hpp"
+#include "../parameters.hpp"
 #include "../text.hpp"
 
 namespace kin5::program::iso {
@@ -24,6 +27,15 @@ struct word {
   std::string_view text;     ///< as written, letter to last digit
   std::string_view digits;   ///< the number as written
   std::size_t column = 0;    ///< 1-based
+  std::optional<long> parameter;   ///< `X#1`: the parameter standing for the number (the reader's to resolve)
+  bool parameter_negated = false;  ///< `X-#1`
+};
+
+/// A line that assigns a parameter, `#1 = 5000` (after an optional block number).
+struct parameter_assignment {
+  long number = 0;
+  std::size_t column = 0;                    ///< of the `#`, 1-based
+  std::optional<parameter_literal> literal;  ///< the number assigned; none when a problem stops the line
 };
 
 /// A problem that stops the line: where (1-based column) and what.
@@ -41,13 +53,43 @@ inline void add_comment(std::optional<std::string>& comment, std::string_view c)
   comment = comment.value_or("") + std::string(c);
 }
 
+/// Whether a word may end before `s[k]`: the line's end, a blank, a comment, the next letter.
+inline bool word_ends(std::string_view s, std::size_t k, std::size_t end) {
+  return k >= end || is_space(s[k]) || is_letter(s[k]) || s[k] == '(' || s[k] == ';';
+}
+
+/// The parameter number `#n` at `k` (at most six digits) and the position after it; 0 if none.
+inline std::size_t parameter_number(std::string_view s, std::size_t k, std::size_t end, long& n) {
+  if (k >= end || s[k] != '#') return 0;
+  std::size_t e = k + 1;
+  n = 0;
+  while (e < end && is_digit(s[e]) && e - k <= 6) n = n * 10 + (s[e++] - '0');
+  return e > k + 1 ? e : 0;
+}
+
+/// `X#1`, `X-#1`: a parameter standing for the word's number, from `k`; its end, or 0 if the
+/// value is not a lone parameter (an expression).
+inline std::size_t parameter_value(std::string_view s, std::size_t i, std::size_t k, std::size_t end, word& w) {
+  const bool negated = k < end && s[k] == '-';
+  const std::size_t p = k < end && (s[k] == '-' || s[k] == '+') ? k + 1 : k;
+  long n = 0;
+  const std::size_t e = parameter_number(s, p, end, n);
+  if (e == 0 || !word_ends(s, e, end)) return 0;
+  w.parameter = n;
+  w.parameter_negated = negated;
+  w.text = s.substr(i, e - i);
+  return e;
+}
+
 /// An address word at `i` (a letter); its end, or the problem that stops the line.
 inline std::size_t address_word(std::string_view s, std::size_t i, std::size_t end, word& w,
                                 std::optional<lex_problem>& problem) {
   w.letter = to_upper(s[i]);
   w.column = i + 1;
   const std::size_t k = lexing::skip_blanks(s.substr(0, end), i + 1);
-  if (k < end && (s[k] == '#' || s[k] == '[')) {
+  const bool signed_parameter = k + 1 < end && (s[k] == '-' || s[k] == '+') && s[k + 1] == '#';
+  if (k < end && (s[k] == '#' || s[k] == '[' || signed_parameter)) {
+    if (const std::size_t e = parameter_value(s, i, k, end, w)) return e;
     const bool axis = std::string_view("XYZABCIJKR").find(w.letter) != std::string_view::npos;
     problem = {w.column, axis ? "expressions and parameters in axis words are not supported"
                               : "expressions and parameters are not supported"};
@@ -113,6 +155,46 @@ inline std::optional<lex_problem> lex_line(std::string_view s, std::size_t i, st
     }
   }
   return problem;
+}
+
+/// The parameter assignment the line from `i` to `end` is (`#1 = 5000`, `N10 #1=-2.5 (Z SAFE)`),
+/// or nothing when it starts otherwise. Only a number may be assigned, and nothing but a comment
+/// may follow it: an expression (`#2 = #1*2`, `#1 = [5]`) or another word is the problem that
+/// stops the line.
+inline std::optional<parameter_assignment> lex_assignment(std::string_view s, std::size_t i, std::size_t end,
+                                                          std::optional<lex_problem>& problem) {
+  i = lexing::skip_blanks(s.substr(0, end), i);
+  if (i < end && to_upper(s[i]) == 'N') {  // the block number
+    std::size_t k = i + 1;
+    while (k < end && is_digit(s[k])) ++k;
+    if (k > i + 1) i = lexing::skip_blanks(s.substr(0, end), k);
+  }
+  parameter_assignment a;
+  std::size_t k = detail::parameter_number(s, i, end, a.number);
+  if (k == 0) return std::nullopt;
+  k = lexing::skip_blanks(s.substr(0, end), k);
+  if (k >= end || s[k] != '=') return std::nullopt;
+  a.column = i + 1;
+  const std::string name = "#" + std::to_string(a.number);
+  const std::size_t v = lexing::skip_blanks(s.substr(0, end), k + 1);
+  const parsed_number n = read_number(s.substr(v, end - v));
+  const std::size_t after = v + n.length;
+  if (n.error == number_error::too_large) {
+    problem = lex_problem{v + 1, "value out of range"};
+    return a;
+  }
+  if (n.error != number_error::none || n.length == 0 || !detail::word_ends(s, after, end)) {
+    problem = lex_problem{v + 1, "parameter " + name + " is assigned an expression: only a number is read "
+                                 "(arithmetic is not supported)"};
+    return a;
+  }
+  std::optional<std::string> comment;
+  std::vector<word> others;
+  if (auto p = lex_line(s, after, end, others, comment)) problem = p;
+  else if (!others.empty()) problem = lex_problem{others.front().column, "a word after the parameter assignment "
+                                                                           "on one line is not supported"};
+  if (!problem) a.literal = parameter_literal{n.value, std::string(s.substr(v, n.length))};
+  return a;
 }
 
 }  // namespace kin5::program::iso

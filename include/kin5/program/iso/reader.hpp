@@ -8,12 +8,16 @@
 /// offsets, G92), canned cycles, G41/G42, G10, macro and subprogram calls (G65, G66, M98, M97,
 /// M99), and any word not understood, moving or not: each at its word, naming it. Harmless modal
 /// words (G40, G90, G05.1 Q1, H1, D1, …) are kept as written; `%` lines pass through. Work offsets
-/// G54 … G59 and G54.1 P n are read into `state.work_offset` (work_offsets.hpp).
+/// G54 … G59 and G54.1 P n are read into `state.work_offset` (work_offsets.hpp). A parameter
+/// assigned a number (`#1 = 5000`, a line of its own, passed through) stands for that number in
+/// the words that use it (`F#1`, `X-#1`: ../parameters.hpp); an expression, or a variable the
+/// control owns (`#5221`, a work offset), is refused where it is written.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <deque>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -24,6 +28,7 @@
 #include "../block.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
+#include "../parameters.hpp"
 #include "../text.hpp"
 #include "../transmission.hpp"
 #include "../units.hpp"
@@ -65,9 +70,17 @@ struct reader_state {
 /// The words a dialect built on this reader reads itself (LinuxCNC: program/linuxcnc/words.hpp).
 /// `line(s, first, end)` may refuse a line before it is lexed; `take(words, b, error)` reads and
 /// removes the words it owns before the rest get their ISO meaning; `check(b, error)` sees each
-/// block read without error. `error(column, message)` reports at a column of the line. ISO owns none.
+/// block read without error. `error(column, message)` reports at a column of the line.
+/// `unassignable(n)` says why the program may not set parameter `#n` (empty: it may). ISO owns
+/// no words; its program may set the local and common variables #1–#33, #100–#199 and
+/// #500–#999 (FANUC Custom Macro B; #1000 and up are the control's system variables).
 struct no_own_words {
   std::optional<lex_problem> line(std::string_view, std::size_t, std::size_t) { return std::nullopt; }
+  static std::string unassignable(long n) {
+    if ((n >= 1 && n <= 33) || (n >= 100 && n <= 199) || (n >= 500 && n <= 999)) return "";
+    return "setting parameter #" + std::to_string(n) + " is not supported: only #1-#33, #100-#199 and #500-#999 "
+           "hold the program's own values (the others are the control's)";
+  }
   template <class Error>
   void take(std::vector<word>&, block&, Error&&) {}
   template <class Error>
@@ -94,6 +107,8 @@ class basic_reader {
   bool failed_ = false;
   std::vector<word> words_;  // reused from line to line
   Own own_;
+  parameter_table parameters_{"#"};
+  std::deque<std::string> substituted_;  // the text of this line's words that use a parameter
 
   void error(std::size_t column, std::string message) {
     result_.add_error({{file_, line_, column}, std::move(message)});
@@ -117,14 +132,54 @@ class basic_reader {
       return;
     }
     words_.clear();
+    substituted_.clear();
     auto problem = own_.line(s, first, end);
+    if (!problem) {
+      if (const auto a = lex_assignment(s, first, end, problem)) {
+        if (!problem) assign(*a, b);
+        if (problem) error(problem->column, problem->message), parameters_.refuse(a->number, line_);
+        on_block_(std::move(b));
+        return;
+      }
+    }
     if (!problem) problem = lex_line(s, first, end, words_, b.comment);
-    if (problem) error(problem->column, problem->message);
+    if (!problem) problem = substitute();
+    if (problem && problem->message.empty()) failed_ = true;  // a parameter whose assignment was refused
+    else if (problem) error(problem->column, problem->message);
     const auto report = [this](std::size_t column, std::string message) { error(column, std::move(message)); };
     if (!failed_) own_.take(words_, b, report);
     if (!failed_) interpret(b);
     if (!failed_) own_.check(b, report);
     on_block_(std::move(b));
+  }
+
+  /// `#n = number`: recorded, and the line passed through (it moves nothing).
+  void assign(const parameter_assignment& a, block& b) {
+    if (const std::string why = own_.unassignable(a.number); !why.empty()) {
+      parameters_.refuse(a.number, line_);
+      return error(a.column, why);
+    }
+    parameters_.assign(a.number, a.literal, line_);
+    b.passthrough = true;
+  }
+
+  /// Each word that uses a parameter takes its number, as if written there; the first parameter
+  /// without one is the problem that stops the line (with no message when its assignment was
+  /// refused: that error stands for both).
+  std::optional<lex_problem> substitute() {
+    for (word& w : words_) {
+      if (!w.parameter) continue;
+      std::string why;
+      const parameter_literal* v = parameters_.value(*w.parameter, why);
+      if (!v) return lex_problem{w.column, why};
+      const parameter_literal n = w.parameter_negated ? v->negated() : *v;
+      substituted_.push_back(std::string(1, w.letter) + n.written);
+      w.value = n.value;
+      w.text = substituted_.back();
+      w.digits = w.text.substr(1);
+      w.parameter.reset();
+    }
+    return std::nullopt;
   }
 
   /// First pass over the G words: what kind of block this is; false after "two motion words".

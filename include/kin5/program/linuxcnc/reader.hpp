@@ -10,6 +10,8 @@
 /// | `G43` (the loaded tool), `G43 H n` (tool n's table entry), `G49` | `state.length_compensation`, `length_register` |
 /// | `G54` … `G59`, `G59.1` … `G59.3` | `state.work_offset` 1 … 9 |
 /// | `G64 P… Q…`, `G91.1` | kept words (path blending tolerance, incremental arc centres: the default) |
+/// A numbered parameter assigned a number (`#1 = 5000`) stands for it, as in ISO (iso/reader.hpp);
+/// named parameters (`#<feed>`) and expressions are refused.
 /// Refused at the word: `M430`, `G12.1` with another type, a kinematics switch on a line with
 /// motion or M6, `G43.1`/`G43.2`, ISO codes LinuxCNC does not have (`G43.4`, `G43.5`, `G54.1`,
 /// `G50`), splines `G5`–`G5.3`, `G90.1`, `M61`, `H` without G43, `D` without G41/G42, `G4`
@@ -59,6 +61,14 @@ inline std::string g_name(int g) {
 class own_words {
  public:
   std::optional<lex_problem> line(std::string_view s, std::size_t first, std::size_t end) { return o_word(s, first, end); }
+
+  /// Why the program may not set parameter `#n`: #1–#5000 are the program's (#31–#5000 the
+  /// G-code user parameters), the rest the control's (probe results, G28/G30 homes, offsets).
+  static std::string unassignable(long n) {
+    if (n >= 1 && n <= 5000) return "";
+    return "setting parameter #" + std::to_string(n) + " is not supported: only #1-#5000 hold the program's own "
+           "values (the others are the control's: probe results, homes, offsets)";
+  }
 
   /// Reads and removes from `words` the words LinuxCNC reads itself.
   template <class Error>

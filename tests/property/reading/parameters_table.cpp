@@ -1,0 +1,63 @@
+// Parameters assigned a number and used as word values, one row per spelling and dialect: the
+// text with the parameter reads as the same blocks, and writes as the same text, as the text
+// with the number written in its place. (Heidenhain's Q parameters: heidenhain_table.cpp; the
+// refusals, with their messages: each dialect's errors.txt and tests/bad.)
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include <kin5/program/iso/dialect.hpp>
+#include <kin5/program/linuxcnc/dialect.hpp>
+
+using namespace kin5::program;
+
+namespace {
+struct row {
+  std::string with_parameter, with_number;
+};
+
+// Each pair reads without error to blocks equal apart from their text, written the same.
+void same_reading(const std::vector<row>& rows, const std::function<read_result(const std::string&)>& read,
+                  const std::function<std::string(const program&)>& write) {
+  for (const row& r : rows) {
+    INFO(r.with_parameter);
+    const read_result a = read(r.with_parameter);
+    const read_result b = read(r.with_number);
+    REQUIRE(a.errors.empty());
+    REQUIRE(b.errors.empty());
+    std::vector<block> x = a.parsed.blocks, y = b.parsed.blocks;
+    REQUIRE(x.size() == y.size());
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      x[i].text = y[i].text = "";
+      CHECK(x[i] == y[i]);
+    }
+    CHECK(write(a.parsed) == write(b.parsed));
+  }
+}
+}  // namespace
+
+TEST_CASE("iso: a parameter assigned a number reads as the number in the words that use it") {
+  const std::vector<row> rows = {
+      {"#1 = 1200. (XY FEED)\nG1 X10. F#1\n", "#1 = 1200. (XY FEED)\nG1 X10. F1200.\n"},
+      {"N5 #2=-5.25\nG1 X#2 Y-#2 Z+#2\n", "N5 #2=-5.25\nG1 X-5.25 Y5.25 Z-5.25\n"},
+      {"#3=30\nG43.4 H1\nG1 X0 A#3 C-#3 F100.\n", "#3=30\nG43.4 H1\nG1 X0 A30 C-30 F100.\n"},
+      {"#4=7\nT#4 M6\nG43.4 H#4\n", "#4=7\nT7 M6\nG43.4 H7\n"},
+      {"#1=5\nG1 X#1\n#1=6\nG1 X#1\n", "#1=5\nG1 X5\n#1=6\nG1 X6\n"},  // the last assignment before the use
+      {"#500=12000\nS#500 M3\n", "#500=12000\nS12000 M3\n"},
+  };
+  same_reading(
+      rows, [](const std::string& t) { return iso::read(t, "t.nc"); }, [](const program& p) { return iso::write(p); });
+}
+
+TEST_CASE("linuxcnc: a numbered parameter assigned a number reads as the number in the words that use it") {
+  const std::vector<row> rows = {
+      {"#31 = 800 (FEED)\nG1 X10 F#31\n", "#31 = 800 (FEED)\nG1 X10 F800\n"},
+      {"#1=2.5\nG0 X#1 Y-#1 Z25\n", "#1=2.5\nG0 X2.5 Y-2.5 Z25\n"},
+      {"#5000=45\nG1 X#5000 F100\n", "#5000=45\nG1 X45 F100\n"},
+  };
+  same_reading(
+      rows, [](const std::string& t) { return linuxcnc::read(t, "t.ngc"); },
+      [](const program& p) { return linuxcnc::write(p); });
+}
