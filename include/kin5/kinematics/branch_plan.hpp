@@ -7,8 +7,8 @@
 /// is least, by dynamic programming over the blocks: exact, not greedy (`branch.hpp` picks the
 /// nearest solution to one previous block; this may take a larger move now to avoid a branch
 /// switch later). Ties go to fewer blocks off branch 0, then to the solver's order. Unreachable
-/// blocks are skipped and reported with their gap; at a pole (S2), and within `pole_zone` of
-/// one, the free angle is the neighbours'. Fed one tool axis at a time (`rotary_planner`), it keeps only the candidates
+/// blocks are skipped and reported with their gap; at a pole (S2), and within the pole zone of
+/// one (`pole_zone` unless given), the free angle is the neighbours'. Fed one tool axis at a time (`rotary_planner`), it keeps only the candidates
 /// (one or two per block) and a back pointer each; `plan_rotary_path` plans a whole list.
 /// Needs only `inverse` and the standard library. `rotary_planner<M>` plans for machine type M,
 /// `rotary_planner_values` for a `machine_model` known at run time (the same code).
@@ -65,7 +65,9 @@ constexpr double total_rotary_travel(std::span<const rotary_angles<M>> path) {
 /// grazing the pole decide a half turn of the free axis: a source alternating ±1e-7° about the
 /// pole turned C by 180° on every block. 1e-5 rad is about the rounding of an angle written with
 /// 3 decimals (±0.0005° = 8.7e-6 rad): the written program cannot tell the axis from the pole,
-/// and the tool axis moves by at most 1e-5 rad (0.001 mm at a 100 mm tool).
+/// and the tool axis moves by at most 1e-5 rad (0.001 mm at a 100 mm tool). A translation
+/// passes its own tool-axis tolerance instead (translate/angle_tolerance.hpp), so that a finer
+/// program keeps a finer tilt.
 inline constexpr radians pole_zone{1e-5};
 
 /// The chosen path: per tool axis the commanded angles (N of them, continuous axes unwrapped
@@ -84,7 +86,7 @@ struct basic_rotary_path {
 /// every block, the sequence of least total rotary travel Σ|Δ| over the program, by dynamic
 /// programming over the blocks (exact, not greedy); ties go to fewer blocks off branch 0, then to
 /// the solver's order. Unreachable blocks are skipped (the path joins the blocks either side of
-/// them). At a pole (S2), or within `pole_zone` of one, the free angle of p is taken from the
+/// them). At a pole (S2), or within the pole zone of one, the free angle of p is taken from the
 /// nearest non-pole block before and after, so that staying costs nothing; pole blocks wait
 /// for the next non-pole block.
 ///
@@ -101,9 +103,11 @@ class basic_rotary_planner {
   using result_type = basic_inverse_result<N, Capacity>;
 
   /// `options`: the reach tolerance and travel slack of every `inverse` it solves (its pole
-  /// rule is the planner's own).
-  explicit basic_rotary_planner(const machine_model& m, const inverse_options& options = {})
-      : machine_(m), options_(options) {}
+  /// rule is the planner's own); `pole_zone_rad`: tool axes this close to a pole are planned as
+  /// the pole.
+  explicit basic_rotary_planner(const machine_model& m, const inverse_options& options = {},
+                                radians pole_zone_rad = pole_zone)
+      : machine_(m), options_(options), pole_zone_(pole_zone_rad) {}
 
   /// Adds the tool axis (target frame, unit) of the next block.
   void add(const vec3& u_target) {
@@ -202,6 +206,7 @@ class basic_rotary_planner {
 
   machine_model machine_;
   inverse_options options_;
+  radians pole_zone_;
   result_type scratch_{}, pole_scratch_{};  // reused: no clearing of `Capacity` solutions per block
   std::size_t count_ = 0;                // blocks added
   std::vector<stored> candidates_;       // every block's candidates, in block order
@@ -213,16 +218,16 @@ class basic_rotary_planner {
   std::size_t last_ = none;              // that block
   std::size_t anchor_ = none;            // the last reachable non-pole block
 
-  /// The pole ±p of the machine that `u` lies within `pole_zone` of, when that pole is within travel.
+  /// The pole ±p of the machine that `u` lies within the pole zone of, when that pole is within travel.
   std::optional<vec3> near_pole(const vec3& u) const {
     if (N >= 2 && machine_.rotary_count == 2) {
       const vec3 p = machine_.orientation.p;
       for (const vec3& pole : {p, -p}) {
-        // More than 60° away (on the far side, or cos² < 1/4) is far outside `pole_zone`: no
+        // More than 60° away (on the far side, or cos² < 1/4) is far outside the pole zone: no
         // atan2 spent on it. A zero `u` passes on to `angle_between`.
         const double cos_scaled = dot(u, pole);
         if (!(cos_scaled >= 0.0 && 4.0 * cos_scaled * cos_scaled >= dot(u, u) * dot(pole, pole))) continue;
-        if (angle_between(u, pole).value <= pole_zone.value && inverse(machine_, pole, options_).reachable()) return pole;
+        if (angle_between(u, pole).value <= pole_zone_.value && inverse(machine_, pole, options_).reachable()) return pole;
       }
     }
     return std::nullopt;
