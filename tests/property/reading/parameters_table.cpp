@@ -10,6 +10,7 @@
 
 #include <kin5/program/iso/dialect.hpp>
 #include <kin5/program/linuxcnc/dialect.hpp>
+#include <kin5/program/siemens/dialect.hpp>
 
 using namespace kin5::program;
 
@@ -60,4 +61,18 @@ TEST_CASE("linuxcnc: a numbered parameter assigned a number reads as the number 
   same_reading(
       rows, [](const std::string& t) { return linuxcnc::read(t, "t.ngc"); },
       [](const program& p) { return linuxcnc::write(p); });
+}
+
+TEST_CASE("siemens: an R parameter assigned a number reads as the number in the words that use it") {
+  const std::vector<row> rows = {
+      {"N10 R1=1200 ; FEED\nN20 G1 X10 F=R1\n", "N10 R1=1200 ; FEED\nN20 G1 X10 F1200\n"},
+      {"R2 = -5.25\nG1 X=R2 Y=-R2 Z=+R2\n", "R2 = -5.25\nG1 X-5.25 Y5.25 Z-5.25\n"},
+      {"R3=30\nTRAORI\nG1 X0 A=R3 B=-R3 F100\n", "R3=30\nTRAORI\nG1 X0 A30 B-30 F100\n"},
+      {"R4=12000\nS=R4 M3\n", "R4=12000\nS12000 M3\n"},
+      {"R5=5\nG0 X0 Y0 Z0\nG2 X10 Y0 CR=R5 F100\n", "R5=5\nG0 X0 Y0 Z0\nG2 X10 Y0 CR=5 F100\n"},
+      {"R1=5\nG1 X=R1\nR1=6\nG1 X=R1\n", "R1=5\nG1 X5\nR1=6\nG1 X6\n"},
+  };
+  same_reading(
+      rows, [](const std::string& t) { return siemens::read(t, "t.mpf"); },
+      [](const program& p) { return siemens::write(p); });
 }

@@ -5,7 +5,8 @@
 /// Reading rules (docs/dialects/siemens.md lists every word): `TRAORI` / `TRAFOOF` switch
 /// tool-tip tracking, `A3= B3= C3=` give a tool-axis vector, `I J K` (incremental from the last
 /// programmed point) or `CR=` give arcs, `SUPA` / `G53` / `G153` mean machine coordinates.
-/// `G70`/`G700` inch blocks are read in millimetres (`units`). Expressions, `G91` / `IC()` and
+/// `G70`/`G700` inch blocks are read in millimetres (`units`). An R parameter assigned a number
+/// stands for it in `X=R1` (parameters.hpp). Expressions, `G91` / `IC()` and
 /// active frame changes (`TRANS`, `ROT`, `CYCLE800`,
 /// …) are errors. A line without geometry that is not understood is kept verbatim (`passthrough`).
 /// Most lines of a long program (`N… G1 X… Y… Z… A… B… F…`) are read in one scan
@@ -28,6 +29,7 @@
 #include "../units.hpp"
 #include "lexer.hpp"
 #include "modal.hpp"
+#include "parameters.hpp"
 #include "vocabulary.hpp"
 #include "words.hpp"
 
@@ -277,6 +279,7 @@ class line_reader {
     line_parse p;
     p.b = std::move(b);
     lexer_.run(line.text, words_);
+    parameters_.read(line.number, line.text, words_, p);
     word_reader(line.number, file_, p).read(words_);
     finish(p, state_, diagnostics);
     return std::move(p.b);
@@ -289,6 +292,7 @@ class line_reader {
   modal_state state_;
   line_lexer lexer_;
   std::vector<word> words_;  // reused from line to line
+  r_parameters parameters_;
 };
 
 }  // namespace kin5::program::siemens::detail
