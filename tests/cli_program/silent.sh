@@ -94,6 +94,15 @@ case "$name" in
     has_line e.nc 'N70 G43.4 H1'
     no_line e.nc '(.* )?G43\.4( [^H].*)?'
     ;;
+  # ISO output: G43.4 / G43.5 always with H, the length offset of the loaded tool; with no tool
+  # change before it no register is known: refused at the block (G43.4 alone would take
+  # whatever H is in effect on the control).
+  iso-g43-without-tool)
+    printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A-30 B10 F500' 'N30 TRAFOOF' 'N40 M30' >nt.mpf
+    run 2 translate --from sajo-12000p --to sajo-12000p --to-dialect iso -o nt.nc nt.mpf
+    error_at 'nt.mpf:1:1: error: block cannot be written in ISO: G43.4: tool-tip tracking switched on before any tool change'
+    nothing nt.nc
+    ;;
   iso-g54)
     run 0 translate --from sajo-12000p --to dmu-80p --to-dialect iso -o e.nc "$example"
     has_line e.nc 'N20 G54'

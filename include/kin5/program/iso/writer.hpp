@@ -209,8 +209,13 @@ class writer {
       vector_tcp_ = *b.tcp && vector_tcp_ahead;
       words_.push_back(!*b.tcp ? "G49" : vector_tcp_ ? "G43.5" : "G43.4");
       // Another dialect's TCP uses the active tool's own length: H is that tool's register (the
-      // offset number equal to the tool number, as tool-change macros set it).
-      if (*b.tcp && !same_ && active_tool_) words_.push_back(code('H', *active_tool_));
+      // offset number equal to the tool number, as tool-change macros set it). With no tool
+      // changed before, no register is known: refused (G43.4 without H takes whatever H is in
+      // effect on the control).
+      if (*b.tcp && !same_ && !active_tool_)
+        fail(b, std::string(vector_tcp_ ? "G43.5" : "G43.4") +
+                    ": tool-tip tracking switched on before any tool change: no tool gives its length offset H");
+      if (*b.tcp && !same_) words_.push_back(code('H', *active_tool_));
     }
     if (b.state.length_compensation && !b.tcp) {  // without tool-tip tracking: G43 [H n] / G49
       words_.push_back(*b.state.length_compensation ? "G43" : "G49");
