@@ -196,9 +196,9 @@ case "$name" in
     grep -q -- '--setup-offset: each number must be within' err || { report "no offset message"; show err; }
     run 1 $translate --setup-offset=1e20,0,0 -o o.h "$example"
     zeros=$(awk 'BEGIN { while (n++ < 80) printf "0" }')
-    printf 'N10 TRAORI\nN20 G1 X0 Y0 Z0 A-10 B20 F100\nN30 G1 X0.%s1\nN40 M30\n' "$zeros" >tiny.mpf
+    printf 'N5 T1 M6\nN10 TRAORI\nN20 G1 X0 Y0 Z0 A-10 B20 F100\nN30 G1 X0.%s1\nN40 M30\n' "$zeros" >tiny.mpf
     run 2 $translate --to-dialect iso --feed inverse-time --digits 4 -o o.h tiny.mpf
-    grep -q "^tiny.mpf:3:1: error: cannot write the program as iso: the number 1e+83 cannot be written" err || { report "no number message"; show err; }
+    grep -q "^tiny.mpf:4:1: error: cannot write the program as iso: the number 1e+83 cannot be written" err || { report "no number message"; show err; }
     [ -e o.h ] && report "o.h written"
     ;;
   zero-feed)
@@ -206,25 +206,25 @@ case "$name" in
     # is 0.02 (ISO and Siemens), a per-minute F0.04 stays F0.04 (Heidenhain); a rate the
     # controller's 3 decimals cannot write within 0.5 % is refused at its block. And F0 on a
     # feed move is refused at the F word, or at the move when an earlier F0 is in effect.
-    printf 'N10 TRAORI\nN20 G1 X0 Y0 Z0 A-10 B20 F100\nN30 G1 X1000 F20\nN40 M30\n' >slow.mpf
+    printf 'N5 T1 M6\nN10 TRAORI\nN20 G1 X0 Y0 Z0 A-10 B20 F100\nN30 G1 X1000 F20\nN40 M30\n' >slow.mpf
     for to in iso siemens; do
       run 0 $translate --to-dialect $to --feed inverse-time -o o.nc slow.mpf
       grep -q 'X-1000\.\? .*F0\.02$' o.nc || { report "$to: inverse-time F not 0.02"; show o.nc; }
     done
-    printf 'N10 TRAORI\nN20 G1 X0 Y0 Z0 A-10 B20 F100\nN30 G1 X10 F0.04\nN40 M30\n' >small.mpf
+    printf 'N5 T1 M6\nN10 TRAORI\nN20 G1 X0 Y0 Z0 A-10 B20 F100\nN30 G1 X10 F0.04\nN40 M30\n' >small.mpf
     run 0 $translate -o o.h small.mpf
-    grep -q '^2 L X-10 .* F0\.04$' o.h || { report "F0.04 not kept"; show o.h; }
-    printf 'N10 TRAORI\nN20 G1 X0 Y0 Z0 A-10 B20 F100\nN30 G1 X1000000 F0.4\nN40 M30\n' >tiny.mpf
+    grep -q '^3 L X-10 .* F0\.04$' o.h || { report "F0.04 not kept"; show o.h; }
+    printf 'N5 T1 M6\nN10 TRAORI\nN20 G1 X0 Y0 Z0 A-10 B20 F100\nN30 G1 X1000000 F0.4\nN40 M30\n' >tiny.mpf
     rm -f o.nc
     run 2 $translate --to-dialect iso --feed inverse-time -o o.nc tiny.mpf
-    grep -q '^tiny.mpf:3:1: error: cannot write the program as iso: the feed 4[0-9.]*e-07 cannot be written with 3 decimals' err ||
+    grep -q '^tiny.mpf:4:1: error: cannot write the program as iso: the feed 4[0-9.]*e-07 cannot be written with 3 decimals' err ||
       { report "no refusal of F4e-07"; show err; }
     [ -e o.nc ] && report "o.nc written"
-    printf 'N10 TRAORI\nN20 G1 X0 Y0 Z0 A-10 B20 F100\nN30 G1 X10 F0 ; F1\nN40 G0 X20\nN50 G1 X30\nN60 M30\n' >zero.mpf
+    printf 'N5 T1 M6\nN10 TRAORI\nN20 G1 X0 Y0 Z0 A-10 B20 F100\nN30 G1 X10 F0 ; F1\nN40 G0 X20\nN50 G1 X30\nN60 M30\n' >zero.mpf
     rm -f o.h
     run 2 $translate -o o.h zero.mpf
-    grep -q '^zero.mpf:3:12: error: feed move with F0' err || { report "F0 not refused at its word"; show err; }
-    grep -q '^zero.mpf:5:1: error: feed move at a zero feed rate' err || { report "modal F0 not refused"; show err; }
+    grep -q '^zero.mpf:4:12: error: feed move with F0' err || { report "F0 not refused at its word"; show err; }
+    grep -q '^zero.mpf:6:1: error: feed move at a zero feed rate' err || { report "modal F0 not refused"; show err; }
     [ "$(grep -c ': error: ' err)" = 2 ] || { report "the rapid move G0 X20 refused too"; show err; }
     [ -e o.h ] && report "o.h written"
     ;;

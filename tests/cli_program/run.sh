@@ -364,10 +364,10 @@ case "$name" in
     # An M function whose meaning is the machine maker's (Heidenhain M126, shortest rotary path)
     # is refused at its word in another dialect, or dropped knowingly with --m-map; M3 and M8
     # mean the same everywhere and are carried.
-    printf '%s\n' '0 BEGIN PGM M MM' '1 M128' '2 L X+0 Y+0 Z+50 B+10 C+0 F500 M3' '3 M126' '4 L X+1 M8' \
-      '5 M129' '6 END PGM M MM' >m.h
+    printf '%s\n' '0 BEGIN PGM M MM' '1 TOOL CALL 3 Z S8000' '2 M128' '3 L X+0 Y+0 Z+50 B+10 C+0 F500 M3' \
+      '4 M126' '5 L X+1 M8' '6 M129' '7 END PGM M MM' >m.h
     run 2 translate --from dmu-80p --to dmu-80p --to-dialect iso -o m.nc m.h
-    grep -q '^m\.h:4:3: error: M126: ' err || { report "M126 not refused at 4:3"; show err; }
+    grep -q '^m\.h:5:3: error: M126: ' err || { report "M126 not refused at 5:3"; show err; }
     grep -q -- '--m-map 126=' err || report "the option is not named"
     [ -e m.nc ] && report "m.nc written"
     run 0 translate --from dmu-80p --to dmu-80p --to-dialect iso --m-map 126= -o m.nc m.h

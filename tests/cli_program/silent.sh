@@ -100,7 +100,7 @@ case "$name" in
   iso-g43-without-tool)
     printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A-30 B10 F500' 'N30 TRAFOOF' 'N40 M30' >nt.mpf
     run 2 translate --from sajo-12000p --to sajo-12000p --to-dialect iso -o nt.nc nt.mpf
-    error_at 'nt.mpf:1:1: error: block cannot be written in ISO: G43.4: tool-tip tracking switched on before any tool change'
+    error_at 'nt.mpf:1:1: error: cannot write the program as iso: block cannot be written in ISO: G43.4: tool-tip tracking switched on before any tool change: no tool gives its length offset H'
     nothing nt.nc
     ;;
   iso-g54)
