@@ -74,7 +74,11 @@ work_offset selection_of(dialect d) {
 /// rotary words of a B/C machine when `rotary` (for the translation), else plain X Y Z moves.
 std::vector<block> draw_program(dialect from, bool rotary) {
   std::vector<block> out;
-  if (rotary) {
+  if (rotary) {  // a tool change, then tracking on (ISO's G43.4 takes the tool's H)
+    block change;
+    change.tool = 1;
+    change.m_codes = {6};
+    out.push_back(change);
     block on;
     on.tcp = true;
     out.push_back(on);
