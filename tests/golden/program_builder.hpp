@@ -35,11 +35,18 @@ inline program::block& add_motion(program::program& p, const motion_words& w,
   return b;
 }
 
-/// A program in `language` whose first block switches tool-tip tracking on.
-inline program::program tcp_program(program::dialect language, std::string file = "test.nc") {
+/// A program in `language` whose first block switches tool-tip tracking on; with `tool`, a
+/// change to that tool comes first (ISO output needs it: `G43.4 H` is the tool's register).
+inline program::program tcp_program(program::dialect language, std::string file = "test.nc",
+                                     std::optional<long long> tool = std::nullopt) {
   program::program p;
   p.language = language;
   p.file = std::move(file);
+  if (tool) {
+    program::block& change = add_block(p);
+    change.tool = *tool;
+    change.m_codes = {6};
+  }
   add_block(p).tcp = true;
   return p;
 }

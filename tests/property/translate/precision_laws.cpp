@@ -23,10 +23,10 @@ double rounded(double v, int decimals) {
   return std::round(v * scale) / scale;
 }
 
-/// A Siemens program for the SAJO 12000P: TRAORI, then motions at `tips` with A and B written
+/// A Siemens program for the SAJO 12000P: T1 M6, TRAORI, then motions at `tips` with A and B written
 /// with 3 decimals and X Y Z with `decimals`, then M30.
 std::string siemens_text(const std::vector<vec3>& tips, int decimals) {
-  std::string text = "N10 TRAORI\n";
+  std::string text = "N5 T1 M6\nN10 TRAORI\n";
   int n = 20;
   for (const vec3& t : tips) {
     text += "N" + std::to_string(n) + " G1 X" + translate_detail::fixed(t.x, decimals) + " Y" +

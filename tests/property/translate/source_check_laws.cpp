@@ -404,8 +404,8 @@ TEST_CASE("post refuses an NC program given as CL data, and nothing reaches the 
 
 TEST_CASE("M functions whose meaning is the machine maker's are refused across dialects, or mapped knowingly") {
   using M = machines::dmu_80p;
-  const std::string text = "0 BEGIN PGM T MM\n1 M128\n2 L X+0 Y+0 Z+50 B+10 C+0 F500 M3\n3 M126\n4 L X+1 M8\n"
-                           "5 M129\n6 END PGM T MM\n";
+  const std::string text = "0 BEGIN PGM T MM\n1 TOOL CALL 3 Z S8000\n2 M128\n3 L X+0 Y+0 Z+50 B+10 C+0 F500 M3\n"
+                           "4 M126\n5 L X+1 M8\n6 M129\n7 END PGM T MM\n";
   const auto run = [&](dialect out, const std::vector<std::string>& map) {
     auto options = test::options(feed_policy::tcp, out);
     for (const auto& m : map) REQUIRE(options.common.m_codes.add(m));
@@ -418,7 +418,7 @@ TEST_CASE("M functions whose meaning is the machine maker's are refused across d
   for (dialect out : {program::id_of<program::siemens::dialect>(), program::id_of<program::iso::dialect>()}) {
     const auto [refused, nothing] = run(out, {});
     REQUIRE(refused.errors.size() == 1);
-    CHECK(refused.errors[0].where.line == 4);
+    CHECK(refused.errors[0].where.line == 5);
     CHECK(refused.errors[0].where.column == 3);
     CHECK(refused.errors[0].construct == "M126");
     CHECK(refused.errors[0].option == "--m-map 126=");
