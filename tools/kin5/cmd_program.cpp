@@ -174,6 +174,12 @@ std::vector<prog::diagnostic> errors_by_run(const translation& t, const std::vec
   return out;
 }
 
+/// How many errors of `t` beyond those it holds `errors_by_run` would list.
+std::size_t errors_by_run_not_kept(const translation& t, const std::vector<unreachable_range>& ranges,
+                                   const std::string& target) {
+  return not_kept_outside_runs(t.errors, ranges, target, 2);
+}
+
 /// Says on stderr that a file cannot be read or written, and records it in `a` as an error about
 /// the whole `file` (line 0; `file` as the report names it).
 void file_failure(run_account& a, const std::string& prefix, const std::string& file, std::string message) {
@@ -263,7 +269,7 @@ void print_summary(const job& j, const translation& result, bool committed, int 
     std::cerr << count(m) << ' ' << name(m) << (m == matchability::unreachable ? "\n" : ", ");
   const std::size_t unreachable = count(matchability::unreachable);
   if (code == exit_codes::input_error && !result.errors.empty()) {
-    const std::size_t n = result.errors.size();
+    const std::size_t n = result.errors.count();
     std::cerr << prefix << n << (n == 1 ? " error" : " errors") << "; nothing written\n";
   } else if (code == exit_codes::unreachable) {
     std::cerr << prefix << unreachable << (unreachable == 1 ? " block" : " blocks") << " cannot be reached on "
@@ -314,12 +320,13 @@ int translate_and_write(const job& j, std::string bytes, prog::dialect dialect, 
     if (j.verbose)
       for (const auto& r : result.reports)
         if (r.match == matchability::other_branch) messages.push_back({"note", other_branch_note(r)});
-    print_in_source_order(std::move(messages), prefix);
+    print_in_source_order(std::move(messages), prefix,
+                          {errors_by_run_not_kept(result, a.unreachable, j.target), result.warnings.not_kept()});
   }
   const std::size_t unreachable = result.per_class[static_cast<std::size_t>(matchability::unreachable)];
 
   int code = exit_codes::ok;
-  if (result.errors.size() > unreachable) {
+  if (result.errors.count() > unreachable) {
     code = exit_codes::input_error;
   } else if (unreachable > 0) {
     code = exit_codes::unreachable;

@@ -27,6 +27,7 @@
 #include "../program/block.hpp"
 #include "../program/dialect.hpp"
 #include "allowances.hpp"
+#include "diagnostic_list.hpp"
 #include "feed.hpp"
 #include "machine_output.hpp"
 #include "m_codes.hpp"
@@ -100,8 +101,8 @@ struct block_report {
 struct translation {
   program::program output;                   ///< in the output dialect
   std::vector<block_report> reports;         ///< one per motion block, in program order
-  std::vector<program::diagnostic> errors;   ///< any error: the output must not be written
-  std::vector<program::diagnostic> warnings; ///< e.g. a branch switch, a passed-through block
+  diagnostic_list errors;    ///< any error: the output must not be written (the first 1,000 in source order held; `count()`)
+  diagnostic_list warnings;  ///< e.g. a branch switch, a passed-through block (bounded as `errors`)
   /// Refusals the user allowed (`common_options::allow`): accepted knowingly, listed as warnings.
   std::vector<program::diagnostic> allowed;
   std::size_t blocks_read = 0, blocks_written = 0, passed_through = 0;

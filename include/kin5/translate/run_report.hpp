@@ -94,6 +94,19 @@ inline std::vector<program::diagnostic> errors_outside_runs(const std::vector<pr
   return out;
 }
 
+/// How many of the errors `errors` only counted (`not_kept`) `errors_outside_runs` would have
+/// kept: all but the per-block errors of the runs of at least `min_blocks` unreachable blocks
+/// (one error per unreachable block; those held are the ones `errors_outside_runs` drops).
+inline std::size_t not_kept_outside_runs(const diagnostic_list& errors, const std::vector<unreachable_range>& ranges,
+                                         std::string_view target_id, std::size_t min_blocks) {
+  std::size_t in_runs = 0;
+  for (const auto& r : ranges)
+    if (r.blocks >= min_blocks) in_runs += r.blocks;
+  const std::size_t held_in_runs = errors.size() - errors_outside_runs(errors, ranges, target_id, min_blocks).size();
+  const std::size_t counted_in_runs = in_runs > held_in_runs ? in_runs - held_in_runs : 0;
+  return errors.not_kept() > counted_in_runs ? errors.not_kept() - counted_in_runs : 0;
+}
+
 /// Every block of a run accounted for: `read` = `translated` + `comment_only` + `refused`.
 struct block_counts {
   std::size_t read = 0;
@@ -127,9 +140,9 @@ class block_accounting {
   void see(const program::block& b, const program::read_result& input, const translation& t) {
     ++read_;
     unsigned flags = input.error_count() > reader_errors_ ? by_reader : 0u;
-    for (std::size_t i = plan_errors_; i < t.errors.size(); ++i)
-      t.errors[i].where.line == 0 ? void(whole_file_ = true) : void(flags |= by_plan);
-    reader_errors_ = input.error_count(), plan_errors_ = t.errors.size();
+    for (std::size_t i = plan_errors_; i < t.errors.count(); ++i)
+      t.errors.line(i) == 0 ? void(whole_file_ = true) : void(flags |= by_plan);
+    reader_errors_ = input.error_count(), plan_errors_ = t.errors.count();
     if (comment_only(b)) flags |= comment;
     if (flags) marked_.push_back({b.where.line, flags});
   }
@@ -170,7 +183,7 @@ class block_accounting {
   /// The lines of the errors found after the first pass, once each, in order.
   std::vector<std::size_t> second_pass_lines(const translation& t, const stream_result& run) const {
     std::vector<std::size_t> lines;
-    for (std::size_t i = plan_errors_; i < t.errors.size(); ++i) lines.push_back(t.errors[i].where.line);
+    for (std::size_t i = plan_errors_; i < t.errors.count(); ++i) lines.push_back(t.errors.line(i));
     if (run.writer_error) lines.push_back(run.writer_error->where.line);
     std::sort(lines.begin(), lines.end());
     lines.erase(std::unique(lines.begin(), lines.end()), lines.end());
@@ -236,8 +249,10 @@ inline run_account account_of(const translation& t, const stream_result& run, co
   if (!run.input.ok()) return a;  // nothing translated: the reader's account only (its first 1,000)
   a.unreachable = unreachable_ranges(t.reports);
   for (auto& e : errors_outside_runs(t.errors, a.unreachable, target_id, 1)) a.errors.push_back(std::move(e));
+  a.errors_not_listed += not_kept_outside_runs(t.errors, a.unreachable, target_id, 1);
   if (run.writer_error) a.errors.push_back(*run.writer_error);
   a.warnings.insert(a.warnings.end(), t.warnings.begin(), t.warnings.end());
+  a.warnings_not_listed += t.warnings.not_kept();
   a.allowed = t.allowed;
   a.errors = first_in_source_order(std::move(a.errors), a.errors_not_listed);
   a.warnings = first_in_source_order(std::move(a.warnings), a.warnings_not_listed);

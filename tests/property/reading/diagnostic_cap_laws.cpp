@@ -4,11 +4,14 @@
 // 100 and the same totals.
 #include <algorithm>
 #include <string>
+#include <vector>
 #include <type_traits>
 
 #include <catch2/catch.hpp>
 
 #include <kin5/program/io.hpp>
+#include <kin5/translate/diagnostic_list.hpp>
+#include <kin5/translate/run_report.hpp>
 
 using namespace kin5::program;
 
@@ -47,4 +50,29 @@ TEST_CASE("reading: one line of 5000 NUL bytes keeps at most the cap") {
     CHECK(r.warnings.size() <= max_kept_diagnostics);
     if (id_of<D>() == id_of<siemens::dialect>() || id_of<D>() == id_of<heidenhain::dialect>()) CHECK(r.error_count() >= 5000);  // one per byte
   });
+}
+
+TEST_CASE("translation: a diagnostic_list holds the first 1,000 in source order and counts every one") {
+  // Two passes' worth of errors, each pass in source order, the second interleaved with the
+  // first's lines (as the plan and write passes of a translation add them), and ties.
+  for (std::size_t n : {std::size_t{0}, std::size_t{999}, std::size_t{1999}, std::size_t{2000}, std::size_t{7321}}) {
+    INFO("n = " << n);
+    std::vector<diagnostic> all;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t line = i < n / 2 ? 2 * i + 3 : 2 * (i - n / 2) + (i % 3 == 0 ? 3 : 4);
+      all.push_back({{file_name("t"), line, 1 + i % 2}, "error " + std::to_string(i)});
+    }
+    kin5::diagnostic_list list;
+    for (const diagnostic& d : all) list.push_back(d);
+    CHECK(list.count() == n);
+    CHECK(list.size() < 2 * max_kept_diagnostics);
+    CHECK(list.not_kept() == n - list.size());
+    for (std::size_t i = 0; i < n; ++i) CHECK(list.line(i) == all[i].where.line);
+    std::size_t more_all = 0, more_held = 0;
+    const auto first_of_all = kin5::first_in_source_order(all, more_all);
+    const auto first_held = kin5::first_in_source_order(list, more_held);
+    REQUIRE(first_held.size() == first_of_all.size());
+    for (std::size_t i = 0; i < first_held.size(); ++i) CHECK(first_held[i].message == first_of_all[i].message);
+    CHECK(more_held + list.not_kept() == more_all);
+  }
 }
