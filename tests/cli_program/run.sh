@@ -547,7 +547,7 @@ EOF
     run 1 translate --from ac-trunnion --to dmu-50v --source-work-offset 0,0,-200 --source-tool-length -1 -o no.h u.mpf
     grep -q 'source-tool-length: give a length in mm, 0 or more' err || { report "negative length accepted"; show err; }
     run 1 translate --from ac-trunnion --to dmu-50v --source-work-offset 0,0,-200 -o no.h u.mpf
-    grep -q 'source-work-offset and --source-tool-length go together' err || { report "offset alone accepted"; show err; }
+    grep -q 'source-work-offset and --source-tool-length (or --tool-table) go together' err || { report "offset alone accepted"; show err; }
     [ -e no.h ] && report "no.h written"
     run 1 translate --from ac-trunnion --to dmu-50v --source-work-offset 0,0,-200 -o no.h u.mpf
     run 0 translate --from ac-trunnion --to dmu-50v --source-work-offset 0,0,-200 --source-tool-length 100 -o u.h u.mpf
@@ -620,6 +620,58 @@ EOF
       -o m.nc m.mpf
     grep -q 'N20 G43 H1$' m.nc || { report "no G43 H1 for TRAORI"; show m.nc; }
     grep -q 'G43\.4\|G49' m.nc && { report "TCP words in ISO"; show m.nc; }
+    ;;
+  tool-table)
+    # Per-tool lengths (--tool-table): a program in machine coordinates on the ac-head (C about
+    # +Z carrying A about +X, both through the pivot, pivot length 150) that changes tools. With
+    # the part shifted by (0, 0, -400) on both sides, the tip of program point p at A90 C0, where the tool axis is
+    # (0, -1, 0), is p + (150 + L)((0, 0, 1) - (0, -1, 0)) = p + (150 + L)(0, 1, 1) (theory.md,
+    # (G8) and (G6), worked by hand): tool 1 (L 50) puts N40 at (0, 200, 200), tool 2 (L 100)
+    # puts N70 at (0, 250, 250).
+    printf '%s\n' 'N10 G90 G17' 'N20 T1 M6' 'N30 G0 X0 Y0 Z0 A0 C0' 'N40 G0 A90' 'N50 G1 Z-5 F300' \
+      'N60 T2 M6' 'N70 G0 X0 Y0 Z0 A90 C0' 'N80 G1 Z-5 F300' 'N90 M30' >t.nc
+    printf '%s\n' '# two tools' 'kin5_tools = 1' '' '[[tool]]' 'number = 1' 'length_mm = 50' '' '[[tool]]' \
+      'number = 2' 'length_mm = 100' 'radius_mm = 5' >tools.toml
+    src="--from ac-head --to ac-head --from-dialect iso --to-dialect iso --source-work-offset 0,0,-400"
+    run 0 translate $src --tool-table tools.toml -o t.out t.nc
+    has_tip() {  # N X Y Z: the block numbered N (-N: the line before it, a cut block's end) is at X Y Z
+      case $1 in -*) grep -B1 "^N${1#-} " t.out | head -n 1 ;; *) grep "^N$1 " t.out | head -n 1 ;; esac >l.nc
+      l=$(words l.nc)
+      near "$(value "$l" X)" "$2" 0.001 && near "$(value "$l" Y)" "$3" 0.001 && near "$(value "$l" Z)" "$4" 0.001 ||
+        { report "N$1 not at ($2, $3, $4): $l"; show t.out; }
+    }
+    has_tip -50 0 200 200; has_tip 50 0 200 195; has_tip 70 0 250 250; has_tip 80 0 250 245
+    # In machine coordinates on the same machine each tool's program points come back (the
+    # target's tool 2 read with tool 1's length would write N70 at (0, 50, 50)).
+    run 0 translate $src --tool-table tools.toml --output-mode machine --work-offset 0,0,-400 -o t.out t.nc
+    has_tip 70 0 0 0; has_tip 80 0 0 -5
+    # One length for the whole program: the second tool is refused at its first motion, nothing written.
+    run 2 translate $src --source-tool-length 50 -o no.nc t.nc
+    grep -q '^t\.nc:7:1: error: .*tool 2: its length is not known (--source-tool-length gives one tool.s, tool 1.s); give each tool.s length in --tool-table' err ||
+      { report "second tool not refused at line 7"; show err; }
+    # A tool the table lacks: refused at its first motion, naming the option.
+    printf '%s\n' 'kin5_tools = 1' '[[tool]]' 'number = 1' 'length_mm = 50' >one.toml
+    run 2 translate $src --tool-table one.toml -o no.nc t.nc
+    grep -q '^t\.nc:7:1: error: .*tool 2 has no entry in the tool table.*--tool-table' err || { report "tool 2 not refused"; show err; }
+    # Mistakes in the table: FILE:LINE:COL naming the key, exit 2, nothing written.
+    printf '%s\n' 'kin5_tools = 1' '[[tool]]' 'number = 1' 'length_mm = 50' 'lenght_mm = 5' >bad.toml
+    run 2 translate $src --tool-table bad.toml -o no.nc t.nc
+    grep -q "^bad\.toml:5:1: error: unknown key 'lenght_mm' in \[\[tool\]\] #1" err || { report "unknown key"; show err; }
+    printf '%s\n' 'kin5_tools = 1' '[[tool]]' 'number = 1' 'length_mm = 50' '[[tool]]' 'number = 1' 'length_mm = 60' >bad.toml
+    run 2 translate $src --tool-table bad.toml -o no.nc t.nc
+    grep -q '^bad\.toml:6:10: error: \[\[tool\]\] #2 number 1 is given twice' err || { report "number twice"; show err; }
+    printf '%s\n' 'kin5_tools = 1' '[[tool]]' 'number = 1' 'length_mm = -50' >bad.toml
+    run 2 translate $src --tool-table bad.toml -o no.nc t.nc
+    grep -q '^bad\.toml:4:13: error: \[\[tool\]\] #1 length_mm must be 0 or more' err || { report "negative length"; show err; }
+    printf '%s\n' 'kin5_tools = 1' '[[tool]]' 'length_mm = 50' >bad.toml
+    run 2 translate $src --tool-table bad.toml -o no.nc t.nc
+    grep -q "^bad\.toml:2:1: error: missing key 'number' in \[\[tool\]\] #1" err || { report "missing number"; show err; }
+    run 2 translate $src --tool-table missing.toml -o no.nc t.nc
+    grep -q '^missing\.toml:1:1: error: cannot open the tool-table file' err || { report "missing file"; show err; }
+    [ -e no.nc ] && report "no.nc written"
+    # The table is for motion in machine coordinates: without a work offset it is a usage error.
+    run 1 translate --from ac-head --to ac-head --tool-table tools.toml -o no.nc t.nc
+    grep -q 'tool-table gives tool lengths .*--source-work-offset or --work-offset' err || { report "table alone accepted"; show err; }
     ;;
   *)
     echo "run.sh: unknown test '$name'" >&2

@@ -38,6 +38,7 @@
 #include <string_view>
 #include <vector>
 
+#include <kin5/machines/tool_table_file.hpp>
 #include <kin5/program/io.hpp>
 #include <kin5/program/number.hpp>
 #include <kin5/translate/run_report.hpp>
@@ -433,6 +434,7 @@ struct common_arguments {
   std::vector<std::string> work_offset_map;
   std::string report;  ///< --report FILE.json
   std::string output_mode;  ///< tcp | machine; empty: the output dialect's
+  std::string tool_table;   ///< --tool-table FILE
 };
 
 std::optional<std::vector<double>> parse_list(std::string_view text, std::size_t count);
@@ -469,6 +471,7 @@ bool parse_placement(std::string_view command, const common_arguments& a, common
     return false;
   }
   c.placement = parse_run_inputs(command, "", a.tool_length, a.work_offset);
+  c.placement_has_length = !a.tool_length.empty() || a.tool_table.empty();  // without a table: 0 for one tool
   return c.placement.has_value();
 }
 
@@ -483,17 +486,40 @@ bool parse_source_placement(std::string_view command, const common_arguments& a,
     c.tolerance_mm = *a.tolerance_mm;
   }
   if (a.source_work_offset.empty() && a.source_tool_length.empty()) return true;
-  if (a.source_work_offset.empty() || a.source_tool_length.empty()) {
-    std::cerr << "kin5 " << command << ": --source-work-offset and --source-tool-length go together: motion without "
-                                       "tool-tip tracking is read as machine coordinates only where both are known\n";
+  if (a.source_work_offset.empty() || (a.source_tool_length.empty() && a.tool_table.empty())) {
+    std::cerr << "kin5 " << command << ": --source-work-offset and --source-tool-length (or --tool-table) go together: "
+                                       "motion without tool-tip tracking is read as machine coordinates only where the "
+                                       "part's place and the tool lengths are known\n";
     return false;
   }
   c.source_placement = parse_run_inputs(command, "source-", a.source_tool_length, a.source_work_offset);
+  c.source_placement_has_length = !a.source_tool_length.empty();
   return c.source_placement.has_value();
 }
 
-/// `common_options` from `a`; prints the reason and returns nothing on bad input.
-std::optional<common_options> parse_common(std::string_view command, const common_arguments& a) {
+/// `c.tools` from --tool-table FILE; false, with the reasons printed (FILE:LINE:COL for a
+/// mistake in the file, `exit_code` then an input error), on bad input.
+bool parse_tool_table(std::string_view command, const common_arguments& a, common_options& c, int& exit_code) {
+  if (a.tool_table.empty()) return true;
+  if (a.work_offset.empty() && a.source_work_offset.empty()) {
+    std::cerr << "kin5 " << command << ": --tool-table gives tool lengths for motion in machine coordinates: give "
+                                       "--source-work-offset or --work-offset with it\n";
+    return false;
+  }
+  tool_table_result r = read_tool_table_file(a.tool_table);
+  if (!r.ok()) {
+    for (const auto& e : r.errors) std::cerr << e.to_string() << '\n';
+    exit_code = exit_codes::input_error;
+    return false;
+  }
+  c.tools = std::move(*r.table);
+  return true;
+}
+
+/// `common_options` from `a`; prints the reason and returns nothing on bad input, with the exit
+/// code in `exit_code` (a usage error unless said otherwise).
+std::optional<common_options> parse_common(std::string_view command, const common_arguments& a, int& exit_code) {
+  exit_code = exit_codes::usage;
   common_options c;
   if (a.angle_tolerance_deg) {
     if (!(*a.angle_tolerance_deg >= 0.0 && *a.angle_tolerance_deg <= 1.0)) {
@@ -518,7 +544,9 @@ std::optional<common_options> parse_common(std::string_view command, const commo
       std::cerr << "kin5 " << command << ": --m-map: '" << entry << "' is neither N=M (rename) nor N= (drop)\n";
       return std::nullopt;
     }
-  if (!parse_placement(command, a, c) || !parse_source_placement(command, a, c)) return std::nullopt;
+  if (!parse_placement(command, a, c) || !parse_source_placement(command, a, c) ||
+      !parse_tool_table(command, a, c, exit_code))
+    return std::nullopt;
   if (!a.output_mode.empty()) {
     c.coordinates = parse_output_mode(a.output_mode);
     if (!c.coordinates) {
@@ -561,6 +589,9 @@ void add_common_options(CLI::App* sub, common_arguments& a) {
                   "it (needs --work-offset; pieces within --tolerance). Default: tcp where the output dialect switches "
                   "tool-tip tracking")
       ->check(CLI::IsMember({"tcp", "machine"}));
+  sub->add_option("--tool-table", a.tool_table,
+                  "Tool lengths by tool number, a TOML file (docs/machine-files.md): motion read or written in machine "
+                  "coordinates takes the length of the tool in effect (its length register H, else its tool change)");
 }
 
 /// Adds --tool-length and --work-offset (the target's placement) to `sub`.
@@ -568,7 +599,8 @@ void add_placement_options(CLI::App* sub, common_arguments& a) {
   sub->add_option("--work-offset", a.work_offset,
                   "Where the workpiece zero sits on the target, X,Y,Z in mm (machine coordinates at the zero pose); "
                   "given, every output block's slides are checked against the target's linear travel");
-  sub->add_option("--tool-length", a.tool_length, "Tool length on the target, gauge point to tip, mm (with --work-offset; default 0)");
+  sub->add_option("--tool-length", a.tool_length, "Tool length on the target, gauge point to tip, mm, for one tool (with --work-offset; default 0, "
+                  "none with --tool-table; other tools' lengths come from --tool-table)");
 }
 
 /// Adds --tolerance to `sub`.
@@ -585,7 +617,8 @@ void add_source_options(CLI::App* sub, common_arguments& a) {
                   "Where the workpiece zero sat on the source, X,Y,Z in mm (machine coordinates at the zero pose); "
                   "with --source-tool-length, motion without tool-tip tracking is read as machine coordinates");
   sub->add_option("--source-tool-length", a.source_tool_length,
-                  "Tool length on the source, gauge point to tip, mm (with --source-work-offset)");
+                  "Tool length on the source, gauge point to tip, mm, for one tool (with --source-work-offset; other "
+                  "tools' lengths come from --tool-table)");
   add_tolerance_option(sub, a);
 }
 
@@ -696,8 +729,9 @@ int run_translate(const translate_arguments& a) {
     return exit_codes::usage;
   }
   options.output_dialect = j.output_dialect;
-  const auto common = parse_common("translate", a.common);
-  if (!common) return exit_codes::usage;
+  int common_error = exit_codes::usage;
+  const auto common = parse_common("translate", a.common, common_error);
+  if (!common) return common_error;
   options.common = *common;
   if (const auto why = translate_detail::output_mode_refusal(options.common, j.output_dialect)) {
     std::cerr << "kin5 translate: " << *why << '\n';
@@ -725,8 +759,9 @@ int run_reverse(const machine_arguments& a) {
   j.from_id = std::string(model.geometry.id);
   j.report_path = a.common.report;
   j.verbose = a.verbose;
-  const auto common = parse_common("reverse", a.common);
-  if (!common) return exit_codes::usage;
+  int common_error = exit_codes::usage;
+  const auto common = parse_common("reverse", a.common, common_error);
+  if (!common) return common_error;
   if (common->coordinates == output_mode::machine) {
     std::cerr << "kin5 reverse: --output-mode machine: APT CL data holds the tool tip and axis, not machine "
                  "coordinates\n";
@@ -755,8 +790,9 @@ int run_post(const machine_arguments& a) {
   j.report_path = a.common.report;
   j.verbose = a.verbose;
   const prog::dialect out = j.output_dialect;
-  const auto common = parse_common("post", a.common);
-  if (!common) return exit_codes::usage;
+  int common_error = exit_codes::usage;
+  const auto common = parse_common("post", a.common, common_error);
+  if (!common) return common_error;
   if (const auto why = translate_detail::output_mode_refusal(*common, out)) {
     std::cerr << "kin5 post: " << *why << '\n';
     return exit_codes::usage;

@@ -19,6 +19,7 @@
 /// @endcode
 #pragma once
 
+#include <algorithm>
 #include <optional>
 
 #include "block.hpp"
@@ -28,6 +29,12 @@ namespace kin5::program {
 /// Whether `b` moves the tool in the workpiece frame: it has axis words, not in machine
 /// coordinates.
 inline bool is_motion(const block& b) { return b.moves() && !b.machine_coordinates; }
+
+/// Whether block `b` changes the tool: `state.tool_change`, or M6, which every reader gives a
+/// tool change (`T5 M6`, `TOOL CALL 5`, `LOAD/TOOL,5`).
+inline bool changes_tool(const block& b) {
+  return b.state.tool_change || std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
+}
 
 /// Whether motion kind `k` is a circular move (G2/G3, C DR±).
 inline bool is_arc(motion_kind k) { return k == motion_kind::arc_cw || k == motion_kind::arc_ccw; }
@@ -134,7 +141,7 @@ struct modal_state {
   void apply_state(const block& b) {
     const state_words& s = b.state;
     if (b.tool) selected_tool = *b.tool;
-    if (s.tool_change) active_tool = selected_tool;
+    if (changes_tool(b)) active_tool = selected_tool;
     take_word(s.tool_spindle_axis, tool_spindle_axis);
     if (s.length_compensation == true && !s.length_register) length_register.reset();
     take_word(s.length_compensation, length_compensation);

@@ -30,7 +30,7 @@ class cl_target {
   explicit cl_target(program::dialect source_language) : source_language_(source_language) {}
 
   void set_tool_axis_tolerance(radians) {}  // nothing to reach: CL data names no machine
-  void set_placement(const std::optional<run_inputs>&) {}  // no slides either
+  void set_placement(const std::optional<run_inputs>&, tool_lengths = {}) {}  // no slides either
   void plan(const source_step&) {}
   void finish_plan() {}
 

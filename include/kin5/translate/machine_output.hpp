@@ -134,6 +134,9 @@ inline constexpr std::string_view machine_too_many =
     "rotary move in machine coordinates needs more than 100000 pieces to stay within --tolerance";
 inline constexpr std::string_view machine_whole_block =
     "rotary move in machine coordinates, cut into pieces, that also says (give it a block of its own): ";
+inline constexpr std::string_view machine_after_tool_change =
+    "feed move in machine coordinates whose rotary axes move, the first after a tool change: where the change left "
+    "the axes is not known, so neither is the tool tip's path; position with a rapid move first";
 
 /// The pose a machine-coordinate output last wrote: the tip (target workpiece frame) and angles.
 struct written_pose {
@@ -156,6 +159,8 @@ class machine_writer {
       : to_(to), in_(placement), tolerance_mm_(tolerance_mm), inverse_time_(inverse_time), all_inverse_time_(all_inverse_time) {}
 
   const run_inputs& placement() const { return in_; }
+  /// The tool length from the next move on (a tool change: `forget` the position too).
+  void set_tool_length(double length_mm) { in_.tool_length_mm = length_mm; }
   /// The pose written last, while the position is known.
   const std::optional<written_pose>& last() const { return last_; }
   /// The position is no longer known (a block passed through).

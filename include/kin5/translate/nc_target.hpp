@@ -90,9 +90,13 @@ class nc_target {
     planner_ = rotary_planner_values(to_, options, at_least);  // also the pole zone
   }
 
-  /// Where the part sits and the tool length: each block's slides are then checked against the
-  /// target's linear travel (`common_options::placement`); before the first `write`.
-  void set_placement(const std::optional<run_inputs>& placement) { placement_ = placement; }
+  /// Where the part sits and the tool lengths: each block's slides are then checked against the
+  /// target's linear travel (`common_options::placement`), with the length of the tool in effect
+  /// (tool_lengths.hpp); before the first `write`.
+  void set_placement(const std::optional<run_inputs>& placement, tool_lengths lengths = {}) {
+    placement_ = placement;
+    lengths_ = tool_length_tracker(std::move(lengths), "--tool-length");
+  }
 
   /// Motion as TCP or in machine coordinates (`mode`, else the dialect's; machine coordinates
   /// need the placement), pieces within `tolerance_mm`; after `set_placement`.
@@ -121,6 +125,8 @@ class nc_target {
       machine_.forget();
       return;
     }
+    if (program::changes_tool(b) || s.length_entry != length_entry_) tool_changed_ = true, length_entry_ = s.length_entry;
+    if (placement_ && s.what == source_step::kind::motion && !tool_length_at(b, s, out)) return;
     program::block o = b;
     if (auto error = map_plane_words(o, target_T_source_.rotation)) {
       out.errors.push_back(at(b, *error));
@@ -154,6 +160,9 @@ class nc_target {
   bool machine_mode_ = false;  // motion written in machine coordinates (machine_output.hpp)
   bool length_switched_on_ = false;  // machine coordinates: length compensation said for `post`
   machine_writer machine_;
+  tool_length_tracker lengths_;
+  std::optional<long long> length_entry_;  // the tool-table entry in effect (source_step::length_entry)
+  bool tool_changed_ = false;              // since the last motion written in machine coordinates
   bool output_inverse_time_ = false, tcp_switched_on_ = false, inverse_time_error_ = false;
   bool output_tcp_ = false;  // tool-tip tracking on in the output after the last block written
   bool restate_feed_ = false;  // the F in effect in the output is a piece's, not the program's
@@ -273,9 +282,13 @@ class nc_target {
     machine_writer::without_tcp(o);
     if (switch_tcp_on_ && !length_switched_on_) o.state.length_compensation = true;  // post: the tool's length
     length_switched_on_ = true;
-    if (!s.start_source_mm) machine_.forget();
-    const std::optional<double> time_min = machine_time(b, s, out);
-    if (!s.rapid && !time_min && s.start_source_mm) return;  // refused
+    if (tool_changed_ && !s.rapid && machine_.last() && *path_.angles[first] != machine_.last()->angles)
+      return out.errors.push_back(at(b, std::string(machine_after_tool_change)));
+    if (!s.start_source_mm || tool_changed_) machine_.forget();  // from where a tool change left the axes
+    tool_changed_ = false;
+    const bool from_known = machine_.last().has_value();
+    const std::optional<double> time_min = from_known ? machine_time(b, s, out) : std::nullopt;
+    if (!s.rapid && !time_min && from_known) return;  // refused
     if (program::is_arc(s.motion)) return write_machine_arc(b, s, std::move(o), first, out, emit);
     for (std::size_t k = 0; k < count; ++k) {
       const std::size_t j = first + k;
@@ -322,6 +335,20 @@ class nc_target {
     previous_step_ = s;
     machine_.arrive({target_T_source_.map_point(s.tip_source_mm), angles});
     emit(std::move(o));
+  }
+
+  /// The target's tool length at motion block `b` (step `s`) into the placement: the length of
+  /// the tool in effect (tool_lengths.hpp); false, with an error, when it is not known.
+  bool tool_length_at(const program::block& b, const source_step& s, translation& out) {
+    std::string why;
+    const auto length = lengths_.length_mm(s.length_entry, why);
+    if (!length) {
+      out.errors.push_back(at(b, "the target's tool length: " + why));
+      return false;
+    }
+    placement_->tool_length_mm = *length;
+    machine_.set_tool_length(*length);
+    return true;
   }
 
   /// The time (min) of feed move `b` (step `s`) on the source: its own in inverse time, the

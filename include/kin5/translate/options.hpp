@@ -24,6 +24,7 @@
 #include "../core/units.hpp"
 #include "../kinematics/forward.hpp"
 #include "../kinematics/matchability.hpp"
+#include "../kinematics/tool_table.hpp"
 #include "../program/block.hpp"
 #include "../program/dialect.hpp"
 #include "allowances.hpp"
@@ -66,6 +67,13 @@ struct common_options {
   /// (machine_output.hpp; needs `placement`). Empty: what the output dialect does
   /// (`default_output_mode`). `tolerance_mm` also bounds the tip's path between such blocks.
   std::optional<output_mode> coordinates;
+  /// Each tool's length by tool-table entry (`--tool-table`): where motion is read or written in
+  /// machine coordinates, a block takes the length of the entry in effect, its length register
+  /// else its tool (translate/tool_lengths.hpp). `placement`'s and `source_placement`'s
+  /// `tool_length_mm` serve one tool without an entry, when the flags below say they were given.
+  std::optional<tool_table> tools;
+  /// Whether `placement` / `source_placement` give a tool length, not only a work offset.
+  bool placement_has_length = true, source_placement_has_length = true;
 };
 
 /// How to translate.

@@ -82,6 +82,16 @@ inline program::diagnostic file_error(const std::string& file, std::string messa
   return {program::source_location{file, 0, 0}, std::move(message)};
 }
 
+/// The tool lengths of the source (`source_placement`) and of the target (`placement`) in `c`.
+inline tool_lengths source_lengths(const common_options& c) {
+  const bool single = c.source_placement && c.source_placement_has_length;
+  return {c.tools, single ? std::optional<double>(c.source_placement->tool_length_mm) : std::nullopt};
+}
+inline tool_lengths target_lengths(const common_options& c) {
+  const bool single = c.placement && c.placement_has_length;
+  return {c.tools, single ? std::optional<double>(c.placement->tool_length_mm) : std::nullopt};
+}
+
 /// `block_translator` for one source side and one target side.
 template <class Source, class Target>
 class two_pass_translator final : public block_translator {
@@ -178,7 +188,7 @@ class two_pass_translator final : public block_translator {
     first_.configure(source_, common_.allow);
     second_.configure(source_, common_.allow);
     target_.set_tool_axis_tolerance(tool_axis_tolerance(source_.tolerance, first_.source().rounded_values()));
-    target_.set_placement(common_.placement);
+    target_.set_placement(common_.placement, target_lengths(common_));
     if constexpr (requires { target_.set_output(common_.coordinates, common_.tolerance_mm); })
       target_.set_output(common_.coordinates, common_.tolerance_mm);
   }
@@ -242,7 +252,7 @@ inline std::unique_ptr<block_translator> make_translator(const machine_model& fr
   using namespace translate_detail;
   const program::dialect out = output_dialect_of(options, to.geometry.id);
   return std::make_unique<two_pass_translator<nc_source, nc_target>>(
-      nc_source{from, options.common.source_placement, options.common.tolerance_mm},
+      nc_source{from, options.common.source_placement, options.common.tolerance_mm, source_lengths(options.common)},
       nc_target(to, options.setup.value_or(default_setup(from.geometry.id, to.geometry.id)), options.feed,
                 source_language, out, false),
       file, out, detail,
@@ -258,7 +268,7 @@ inline std::unique_ptr<block_translator> make_reverse(const machine_model& m, pr
                                                       const common_options& common = {}) {
   using namespace translate_detail;
   return std::make_unique<two_pass_translator<nc_source, cl_target>>(
-      nc_source{m, common.source_placement, common.tolerance_mm}, cl_target(source_language), file, program::cl_data_dialect(), detail,
+      nc_source{m, common.source_placement, common.tolerance_mm, source_lengths(common)}, cl_target(source_language), file, program::cl_data_dialect(), detail,
       translate_detail::is_cl_data(source_language)
           ? std::optional<std::string>("the input is already APT CL data")
       : common.coordinates == output_mode::machine

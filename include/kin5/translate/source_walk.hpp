@@ -42,6 +42,7 @@
 #include "arc_plane.hpp"
 #include "options.hpp"
 #include "source_checks.hpp"
+#include "tool_lengths.hpp"
 #include "untracked.hpp"
 
 namespace kin5::translate_detail {
@@ -121,6 +122,8 @@ struct source_step {
   bool rotary_moves = false;  ///< an untracked block whose rotary axes move from a known start
   /// An untracked block at a feed per minute: its time (min), (K16) over the machine axes / F.
   std::optional<double> block_time_min;
+  /// The tool-table entry whose length is in effect (tool_lengths.hpp), when known.
+  std::optional<long long> length_entry;
 };
 
 /// The source pose of a motion step as a report shows it: "A=-77.954 B=3.536" (degrees, letters
@@ -159,6 +162,9 @@ struct nc_source {
   std::optional<run_inputs> untracked{};
   /// How far (mm) the tip of a subdivided untracked block may stray from the source's path.
   double tolerance_mm = 0.005;
+  /// Each tool's length (tool_lengths.hpp); `untracked`'s length is then the one for a tool
+  /// without an entry, when `lengths.single_mm` says so.
+  tool_lengths lengths{};
   static constexpr bool needs_tcp = true;
   static constexpr bool has_angles = true;
   /// Values rounded into a tool axis: one per rotary axis (angle_tolerance.hpp).
@@ -221,7 +227,12 @@ struct cl_source {
 template <class Source>
 class source_walker {
  public:
-  explicit source_walker(Source source = {}) : source_(std::move(source)) {}
+  explicit source_walker(Source source = {}) : source_(std::move(source)) {
+    if constexpr (Source::needs_tcp) {
+      lengths_ = tool_length_tracker(source_.lengths, "--source-tool-length");
+      if (source_.untracked) in_ = *source_.untracked;
+    }
+  }
   /// The source side it walks with.
   const Source& source() const { return source_; }
 
@@ -241,6 +252,9 @@ class source_walker {
     const program::modal_state before = modal_;
     modal_.apply(b);
     source_step s;
+    s.length_entry = length_entry(modal_);
+    if constexpr (Source::needs_tcp)  // where a tool change or another length leaves the tip is not known
+      if (source_.untracked && (program::changes_tool(b) || s.length_entry != length_entry(before))) last_tip_.reset();
     source_context ctx = context_;
     ctx.out = out;
     const bool kept_ok = b.kept_words.empty() || check_kept_words(b, ctx);
@@ -304,8 +318,9 @@ class source_walker {
   allowances allow_;
   std::optional<vec3> last_tip_;  // tip of the last motion (source workpiece frame), while known
   bool last_untracked_ = false;   // whether that motion was read as machine coordinates
-  std::optional<std::optional<long long>> untracked_tool_;                 // tool of the first untracked motion
-  std::optional<std::optional<program::work_offset>> untracked_offset_;    // and its work offset
+  std::optional<std::optional<program::work_offset>> untracked_offset_;  // work offset of the first untracked motion
+  tool_length_tracker lengths_;  // the tool length of each untracked motion
+  run_inputs in_{};              // the source's placement with the length in effect
 
   /// Where diagnostics go: the result of the first pass, or nowhere.
   struct report {
@@ -357,7 +372,7 @@ class source_walker {
     if (!on) {
       const auto angles = angles_of(modal_);
       if (!angles) return;
-      const run_inputs& in = *source_.untracked;
+      const run_inputs& in = in_;
       p = untracked_point(source_.from, linear_axes_for(source_.from, *angles, in.work_offset.map_point(p), in), in);
     }
     modal_.x_mm = p.x, modal_.y_mm = p.y, modal_.z_mm = p.z;
@@ -380,32 +395,38 @@ class source_walker {
     return angles;
   }
 
-  /// Whether the tool and the work offset are those the source's one tool length and one work
-  /// offset were given for: the first untracked motion's, where they matter (a head turns the
-  /// tool, a table carries the part); false, with an error, when not.
-  bool same_placement(const program::block& b, const report& to) {
+  /// The placement of untracked motion block `b` in `in_`: the length of the tool in effect
+  /// where it matters (a head turns the tool: tool_lengths.hpp), and the work offset the source's
+  /// one was given for, the first untracked motion's, where that matters (a table carries the
+  /// part); false, with an error, when either is not known.
+  bool place(const program::block& b, const report& to) {
     bool head = false, table = false;
     for (std::size_t i = 0; i < source_.from.rotary_count; ++i)
       (source_.from.rotary(i).side == mount::head ? head : table) = true;
-    if (!untracked_tool_) untracked_tool_ = modal_.active_tool, untracked_offset_ = modal_.work_offset;
-    const char* why = head && *untracked_tool_ != modal_.active_tool ? "another tool"
-                      : table && *untracked_offset_ != modal_.work_offset ? "another work offset"
-                                                                          : nullptr;
-    if (why) to.fail(at(b, std::string("motion without tool-tip tracking with ") + why +
-                               " than the first: --source-tool-length and --source-work-offset give one of each"));
-    return why == nullptr;
+    if (!untracked_offset_) untracked_offset_ = modal_.work_offset;
+    if (table && *untracked_offset_ != modal_.work_offset) {
+      to.fail(at(b, "motion without tool-tip tracking with another work offset than the first: --source-work-offset "
+                    "gives one"));
+      return false;
+    }
+    if (!head) return true;  // the tool turns with no axis: its length moves tip and program point alike (G8)
+    std::string why;
+    const auto length = lengths_.length_mm(length_entry(modal_), why);
+    if (!length) to.fail(at(b, "motion without tool-tip tracking: " + why));
+    else in_.tool_length_mm = *length;
+    return length.has_value();
   }
 
   /// Tip and axis of untracked motion block `b` (G9), its start, its arc, its pieces when its
   /// rotary axes move, and its time; false, with an error, when it cannot be read.
   bool untracked_tip(const program::block& b, const program::modal_state& before, source_step& s, const report& to) {
     const machine_model& m = source_.from;
-    const run_inputs& in = *source_.untracked;
+    const run_inputs& in = in_;
     if (s.rotary_count == 0) {
       to.fail(at(b, "a tool-axis vector without tool-tip tracking cannot be read as machine coordinates"));
       return false;
     }
-    if (!same_placement(b, to)) return false;
+    if (!place(b, to)) return false;
     untracked_move move;
     move.end_mm = s.tip_source_mm;
     for (std::size_t i = 0; i < s.rotary_count; ++i) move.end[i] = to_radians(degrees{s.rotary_source_deg[i]});
@@ -417,7 +438,8 @@ class source_walker {
       move.start_mm = last_untracked_ ? *s.start_source_mm
                                       : untracked_point(m, linear_axes_for(m, move.start, in.work_offset.map_point(*last_tip_), in), in);
     }
-    const bool turns = !start_known || move.start != move.end;
+    // Angles that stand still move the tip rigidly, from wherever it was (G9).
+    const bool turns = start_angles ? *start_angles != move.end : true;
     const tool_pose end = untracked_pose(m, move.end_mm, move.end, in);
     s.tip_source_mm = end.tip_mm, s.u_source = end.axis;
     s.start_source_mm = start_known ? std::optional<vec3>(move.at(m, in, 0.0).tip_mm) : std::nullopt;
@@ -461,7 +483,7 @@ class source_walker {
   /// by the chain's rigid map (G9); false, with an error, when the plane lands on no principal one.
   bool untracked_arc(const program::block& b, const kin5::rotary_values& angles, source_step& s, const report& to) const {
     const machine_model& m = source_.from;
-    const run_inputs& in = *source_.untracked;
+    const run_inputs& in = in_;
     arc_path& arc = s.arc_source;
     const vec3 origin = untracked_pose(m, {}, angles, in).tip_mm;
     const auto mapped = principal_plane(untracked_pose(m, plane_normal(arc.plane), angles, in).tip_mm - origin);
@@ -484,7 +506,7 @@ class source_walker {
   bool untracked_centre(const program::block& b, source_step& s, const report& to) const {
     const auto angles = angles_of(modal_);
     const machine_model& m = source_.from;
-    const run_inputs& in = *source_.untracked;
+    const run_inputs& in = in_;
     const vec3 n = plane_normal(b.arc->plane);
     const bool same_plane = angles && norm(untracked_pose(m, n, *angles, in).tip_mm - untracked_pose(m, {}, *angles, in).tip_mm - n) < 1e-9;
     if (!same_plane) {
