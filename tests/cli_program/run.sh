@@ -331,7 +331,7 @@ case "$name" in
     # post reads CL data: an NC program given to it is refused, by its markers or because no
     # statement of it is APT, never written as comments.
     run 2 post --machine dmu-80p -o p.h "$example"
-    grep -q 'not APT CL data: it reads as a siemens NC program' err || { report "Siemens program accepted"; show err; }
+    grep -q 'not APT CL data: it reads as an NC program in the siemens dialect' err || { report "Siemens program accepted"; show err; }
     printf '%s\n' '%' 'O1000' 'G0 X0 Y0 Z50' 'G1 X10 F500' 'M30' '%' >plain.nc
     run 2 post --machine dmu-80p -o p.h plain.nc
     # Without markers: no GOTO/ and the ISO reader finds fewer errors than APT's, so one error

@@ -99,7 +99,7 @@ enum class nc_evidence { markers, reader };
 inline std::string not_cl_data(std::size_t not_understood, std::optional<program::dialect> looks_like = {},
                                nc_evidence by = nc_evidence::markers) {
   std::string why = "not APT CL data: ";
-  why += looks_like ? "it reads as a " + std::string(program::name(*looks_like)) + " NC program" +
+  why += looks_like ? "it reads as an NC program in the " + std::string(program::name(*looks_like)) + " dialect" +
                           (by == nc_evidence::markers ? " (by its markers)" : " (no GOTO/, and its reader finds fewer errors)")
                     : "no GOTO/ moves the tool and " + std::to_string(not_understood) +
                           (not_understood == 1 ? " statement is" : " statements are") + " not APT";

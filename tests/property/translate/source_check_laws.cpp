@@ -386,13 +386,13 @@ TEST_CASE("post refuses an NC program given as CL data, and nothing reaches the 
   // Recognised by its markers: named.
   const auto siemens = post_text("%_N_P_MPF\nN10 TRAORI\nN20 G1 X0 Y0 Z50 A-30 B10 F500\nN30 M30\n");
   REQUIRE(siemens.errors.size() == 1);
-  CHECK(siemens.errors[0].message.find("it reads as a siemens NC program") != std::string::npos);
+  CHECK(siemens.errors[0].message.find("it reads as an NC program in the siemens dialect") != std::string::npos);
   // No marker: no GOTO/, and the ISO reader finds fewer errors than the APT reader (4): one
   // error naming the dialect, not one per line.
   const auto iso = post_text("%\nO1000\nG0 X0 Y0 Z50\nG1 X10 F500\nM30\n%\n");
   REQUIRE(iso.errors.size() == 1);
   CHECK(iso.errors[0].where.line == 0);  // about the whole file
-  CHECK(iso.errors[0].message == "not APT CL data: it reads as a iso NC program (no GOTO/, and its reader finds fewer "
+  CHECK(iso.errors[0].message == "not APT CL data: it reads as an NC program in the iso dialect (no GOTO/, and its reader finds fewer "
                                  "errors); post reads CL data, translate and reverse read NC programs");
   // APT with a mistake and no GOTO/ is still APT: its own errors, at their lines.
   const auto apt = post_text("PARTNO P\nUNITS/MM\nFEDRAT/MMPM,500.0\nGOTO/0.0,0.0\nFINI\n");
