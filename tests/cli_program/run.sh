@@ -336,7 +336,7 @@ case "$name" in
     run 2 post --machine dmu-80p -o p.h plain.nc
     # Without markers: no GOTO/ and the ISO reader finds fewer errors than APT's, so one error
     # names the dialect it reads as, not one APT error per line.
-    grep -q "^plain.nc: error: not APT CL data: it reads as a iso NC program" err || { report "plain ISO accepted"; show err; }
+    grep -q "^plain.nc: error: not APT CL data: it reads as an NC program in the iso dialect" err || { report "plain ISO accepted"; show err; }
     [ "$(grep -c 'error:' err)" = 1 ] || { report "not one error"; show err; }
     [ -e p.h ] && report "p.h written"
     ;;

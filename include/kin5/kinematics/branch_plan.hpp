@@ -65,9 +65,9 @@ constexpr double total_rotary_travel(std::span<const rotary_angles<M>> path) {
 /// grazing the pole decide a half turn of the free axis: a source alternating ±1e-7° about the
 /// pole turned C by 180° on every block. 1e-5 rad is about the rounding of an angle written with
 /// 3 decimals (±0.0005° = 8.7e-6 rad): the written program cannot tell the axis from the pole,
-/// and the tool axis moves by at most 1e-5 rad (0.001 mm at a 100 mm tool). A translation
-/// passes its own tool-axis tolerance instead (translate/angle_tolerance.hpp), so that a finer
-/// program keeps a finer tilt.
+/// and the tool axis moves by at most 1e-5 rad (0.001 mm at a 100 mm tool). It is fixed, not the
+/// run's angle tolerance: a jitter of 1e-4° about the pole in a 7-decimal program is still not
+/// worth a half turn of C per block.
 inline constexpr radians pole_zone{1e-5};
 
 /// The chosen path: per tool axis the commanded angles (N of them, continuous axes unwrapped

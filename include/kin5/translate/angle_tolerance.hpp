@@ -9,9 +9,7 @@
 /// It is used twice. A source rotary value outside its axis' travel by no more than it is on
 /// the edge (`source_checks.hpp`). A target tool axis within `tool_axis_tolerance` of the
 /// target's reach, or a target angle that far past a travel limit, is on the edge (and clamped
-/// to it), and a target tool axis that close to a pole is planned as the pole (its free angle
-/// kept from the neighbours, `branch_plan.hpp`): rounding each of n source angles by δ turns
-/// the tool axis by at most δ each (a rotation by δ moves a unit vector by at most δ), so by at
+/// to it): rounding each of n source angles by δ turns the tool axis by at most δ each (a rotation by δ moves a unit vector by at most δ), so by at
 /// most n·δ in all. CL data (APT)
 /// writes the tool axis as a vector: a component rounded by 0.5·10⁻ᵈ turns it by at most
 /// √3·0.5·10⁻ᵈ radians.

@@ -80,14 +80,14 @@ class nc_target {
         switch_tcp_on_(switch_tcp_on),
         planner_(to) {}
 
-  /// A tool axis this close to the target's reach or to a pole, or a planned angle this far past
-  /// a travel limit, counts as on the edge or the pole (angle_tolerance.hpp); before the first `plan`.
+  /// A tool axis this close to the target's reach, or a planned angle this far past a travel limit,
+  /// counts as on the edge (angle_tolerance.hpp); before the first `plan`.
   void set_tool_axis_tolerance(radians tolerance) {
     inverse_options options;
     const radians at_least{tolerance.value > 1e-9 ? tolerance.value : 1e-9};  // inverse's own rounding
     options.reach_tolerance = at_least;
     options.travel_slack = at_least;
-    planner_ = rotary_planner_values(to_, options, at_least);  // also the pole zone
+    planner_ = rotary_planner_values(to_, options);
   }
 
   /// Where the part sits and the tool lengths: each block's slides are then checked against the
