@@ -129,7 +129,10 @@ struct translation {
   /// Refusal `d` (`d.construct` names it): an error, or an allowed construct when `allow` has
   /// its name.
   void refuse(program::diagnostic d, const allowances& allow) {
-    (!d.construct.empty() && allow.allows(d.construct) ? allowed : errors).push_back(std::move(d));
+    // Not one `?:` over both: `allowed` is a vector and `errors` a diagnostic_list, so the
+    // conditional would be a copy of the vector, and the error would be added to the copy.
+    if (!d.construct.empty() && allow.allows(d.construct)) allowed.push_back(std::move(d));
+    else errors.push_back(std::move(d));
   }
 };
 
