@@ -15,6 +15,7 @@
 #include <kin5/kin5.hpp>
 #include <kin5/machines/every_machine.hpp>
 
+#include "chain_oracle.hpp"
 #include "generators.hpp"
 #include "segment_distance.hpp"
 
@@ -23,6 +24,8 @@ namespace {
 using namespace kin5;
 
 using test::distance;
+using test::chain_tip;
+using test::slides_for;
 using test::to_segment;
 
 /// The Eigen chain's tool pose for slides `x` and angles `rotary`.
@@ -33,25 +36,6 @@ Eigen::Isometry3d chain(const vec3& x, const rotary_angles<M>& rotary, const run
   q.rotary = rotary;
   return eigen::chain_work_T_tool<M>(q, in);
 }
-template <machine M>
-vec3 chain_tip(const vec3& x, const rotary_angles<M>& rotary, const run_inputs& in) {
-  return eigen::to_kin5(Eigen::Vector3d(chain<M>(x, rotary, in).translation()));
-}
-
-/// The slides a control without TCP drives to for program point `p`: the chain's tip with every
-/// rotary axis at zero is affine in the slides; solved here with Eigen.
-template <machine M>
-vec3 slides_for(const vec3& p, const run_inputs& in) {
-  const vec3 o = chain_tip<M>({}, {}, in);
-  Eigen::Matrix3d a;
-  for (int i = 0; i < 3; ++i) {
-    vec3 e{};
-    (i == 0 ? e.x : i == 1 ? e.y : e.z) = 1.0;
-    a.col(i) = eigen::to_eigen(chain_tip<M>(e, {}, in) - o);
-  }
-  return eigen::to_kin5(Eigen::Vector3d(a.colPivHouseholderQr().solve(eigen::to_eigen(p - o))));
-}
-
 std::optional<double> rotary_deg_of(const program::axis_words& w, axis_letter letter) {
   return letter == axis_letter::A ? w.a_deg : letter == axis_letter::B ? w.b_deg : w.c_deg;
 }

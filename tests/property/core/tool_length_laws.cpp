@@ -12,6 +12,7 @@
 #include <kin5/kin5.hpp>
 #include <kin5/machines/every_machine.hpp>
 
+#include "chain_oracle.hpp"
 #include "generators.hpp"
 #include "segment_distance.hpp"
 
@@ -20,29 +21,8 @@ namespace {
 using namespace kin5;
 
 using test::distance;
-
-/// The Eigen chain's tool tip for slides `x` and angles `rotary`.
-template <machine M>
-vec3 chain_tip(const vec3& x, const rotary_angles<M>& rotary, const run_inputs& in) {
-  axis_position<M> q{};
-  q.xyz_mm = x;
-  q.rotary = rotary;
-  return eigen::to_kin5(Eigen::Vector3d(eigen::chain_work_T_tool<M>(q, in).translation()));
-}
-
-/// The slides a control without TCP drives to for program point `p` (the chain's tip with every
-/// rotary axis at zero, affine in the slides), solved with Eigen.
-template <machine M>
-vec3 slides_for(const vec3& p, const run_inputs& in) {
-  const vec3 o = chain_tip<M>({}, {}, in);
-  Eigen::Matrix3d a;
-  for (int i = 0; i < 3; ++i) {
-    vec3 e{};
-    (i == 0 ? e.x : i == 1 ? e.y : e.z) = 1.0;
-    a.col(i) = eigen::to_eigen(chain_tip<M>(e, {}, in) - o);
-  }
-  return eigen::to_kin5(Eigen::Vector3d(a.colPivHouseholderQr().solve(eigen::to_eigen(p - o))));
-}
+using test::chain_tip;
+using test::slides_for;
 
 std::optional<double>& rotary_word(program::axis_words& w, axis_letter letter) {
   return letter == axis_letter::A ? w.a_deg : letter == axis_letter::B ? w.b_deg : w.c_deg;

@@ -14,6 +14,7 @@
 #include <kin5/kin5.hpp>
 #include <kin5/machines/every_machine.hpp>
 
+#include "chain_oracle.hpp"
 #include "generators.hpp"
 #include "segment_distance.hpp"
 
@@ -22,16 +23,8 @@ namespace {
 using namespace kin5;
 
 using test::distance;
+using test::chain_tip;
 using test::to_segment;
-
-/// The Eigen chain's tool tip for slides `x` and angles `rotary`.
-template <machine M>
-vec3 chain_tip(const vec3& x, const rotary_angles<M>& rotary, const run_inputs& in) {
-  axis_position<M> q{};
-  q.xyz_mm = x;
-  q.rotary = rotary;
-  return eigen::to_kin5(Eigen::Vector3d(eigen::chain_work_T_tool<M>(q, in).translation()));
-}
 
 /// The source machine at parameter s of a block from slides x0, angles a0 to x1, a1: every axis
 /// interpolated linearly, as the controller does.
