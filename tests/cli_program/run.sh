@@ -541,6 +541,14 @@ EOF
     run 2 translate --from ac-trunnion --to dmu-50v -o no.h u.mpf
     grep -q '^u\.mpf:2:1: error: .*--source-work-offset and --source-tool-length' err || { report "no refusal at line 2"; show err; }
     [ -e no.h ] && report "no.h written"
+    # With length compensation off (LinuxCNC G49), the point programmed is the gauge point, not
+    # the tip: refused at the first motion after it, even with the placement given.
+    printf '%s\n' 'T1 M6' 'G43 H1' 'G0 X0 Y0 Z50 A0 C0' 'G49' 'G1 Z40 F200' 'M2' >g49.ngc
+    run 2 translate --from ac-trunnion --to dmu-50v --from-dialect linuxcnc --source-work-offset 0,0,-200 \
+      --source-tool-length 100 -o no.h g49.ngc
+    grep -q '^g49\.ngc:5:1: error: motion without tool-tip tracking while tool length compensation is off' err ||
+      { report "G49 motion read as the tip"; show err; }
+    [ -e no.h ] && report "no.h written after G49"
     # The placement options are checked as the target's are: both or neither, 3 numbers, a length.
     run 1 translate --from ac-trunnion --to dmu-50v --source-work-offset 0,0 --source-tool-length 100 -o no.h u.mpf
     grep -q 'source-work-offset needs 3 numbers' err || { report "2 numbers accepted"; show err; }

@@ -345,6 +345,12 @@ class source_walker {
                                                                              : tcp_off_message)));
       return false;
     }
+    if (untracked_now() && modal_.length_compensation == false) {  // G49, Siemens D0
+      to.fail(at(b, "motion without tool-tip tracking while tool length compensation is off (G49, D0): the point "
+                    "programmed is the spindle's gauge point, not the tool tip; switch compensation on (G43 H, D1) "
+                    "before machine-coordinate motion"));
+      return false;
+    }
     const auto kind = modal_.motion_of(b);
     if (!kind) to.warn(at(b, "no motion mode in effect; taken as linear (G1)"));
     s.motion = kind.value_or(program::motion_kind::linear);
