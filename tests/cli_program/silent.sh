@@ -69,6 +69,22 @@ case "$name" in
     run 0 translate --from dmu-80p --to dmu-80p --to-dialect iso -o tc.nc tc.h
     has_line tc.nc 'N1 S13000 T9 M6( \(.*\))?'
     ;;
+  # A spindle speed with a fraction has no ISO spelling (S is a whole number on a Fanuc
+  # control): refused at the word; Siemens, whose S is a real, keeps it.
+  iso-spindle-whole)
+    printf '%s\n' '0 BEGIN PGM SP MM' '1 TOOL CALL 1 Z S8000.5' '2 M128' '3 L X+0 Y+0 Z+50 B+10 C+0 F500' \
+      '4 M129' '5 END PGM SP MM' >sp.h
+    run 2 translate --from dmu-80p --to dmu-80p --to-dialect iso -o sp.nc sp.h
+    error_at 'sp.h:2:17: error: S8000.5: iso reads a spindle speed as a whole number of revolutions per minute'
+    nothing sp.nc
+    printf '%s\n' 'PARTNO SP' 'UNITS/MM' 'LOAD/TOOL,1' 'SPINDL/RPM,8000.5,CLW' 'FEDRAT/MMPM,500' \
+      'GOTO/0,0,50,0,0,1' 'FINI' >sp.apt
+    run 2 post --machine dmu-80p --dialect iso -o sp.nc sp.apt
+    error_at 'sp.apt:4:1: error: S8000.5: iso reads a spindle speed as a whole number'
+    nothing sp.nc
+    run 0 translate --from dmu-80p --to dmu-80p --to-dialect siemens -o sp.mpf sp.h
+    has_line sp.mpf 'N1 S8000.5 T1 M6( ;.*)?'
+    ;;
   load-tool-apt)
     # APT LOAD/TOOL,4 is a tool change: a TOOL CALL 4 on the TNC.
     printf '%s\n' 'PARTNO TC' 'UNITS/MM' 'LOAD/TOOL,4' 'SPINDL/RPM,6000,CLW' 'FEDRAT/MMPM,500' \

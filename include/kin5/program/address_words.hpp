@@ -22,10 +22,12 @@
 
 #include <array>
 #include <cstddef>
+#include <map>
 #include <string_view>
 
 #include "block.hpp"
 #include "dialect.hpp"
+#include "lexing.hpp"
 #include "resolution.hpp"
 #include "text.hpp"
 
@@ -201,14 +203,66 @@ constexpr void for_each_address_word_in_text(std::string_view text, dialect d, F
   }
 }
 
+namespace detail {
+
+/// The parameter number of `#n` at `i` in `line` (digits after `#`) and the position after it; 0 if none.
+constexpr std::size_t hash_parameter(std::string_view line, std::size_t i, long& n) {
+  if (i >= line.size() || line[i] != '#') return 0;
+  std::size_t j = i + 1;
+  n = 0;
+  while (j < line.size() && is_digit(line[j]) && j - i <= 6) n = n * 10 + (line[j++] - '0');
+  return j > i + 1 ? j : 0;
+}
+
+}  // namespace detail
+
+/// Adds to `r` the decimals of the `#` parameters (ISO, LinuxCNC) that words use: a line
+/// `#1 = 10.1234` (after an optional block number) records 4 decimals for #1, and a later word
+/// `X#1` or `X-#1` counts them for X, as the literal `X10.1234` would, so that a number written
+/// only in a parameter keeps its decimals in the output. Text after `;` or `(` is not read.
+inline void count_parameter_words(std::string_view text, number_resolution& r) {
+  if (text.find('#') == std::string_view::npos) return;
+  std::map<long, int> decimals;  // per parameter assigned a number
+  for_each_line(text, [&](const text_line& line) {
+    const std::string_view s = line.text.substr(0, line.text.find_first_of(";("));
+    std::size_t i = lexing::skip_blanks(s, 0);
+    if (i < s.size() && (s[i] == 'N' || s[i] == 'n')) {
+      std::size_t k = i + 1;
+      while (k < s.size() && is_digit(s[k])) ++k;
+      i = lexing::skip_blanks(s, k);
+    }
+    long n = 0;
+    if (std::size_t k = detail::hash_parameter(s, i, n); k != 0) {
+      k = lexing::skip_blanks(s, k);
+      if (k < s.size() && s[k] == '=') {
+        int d = 0;
+        const std::size_t v = lexing::skip_blanks(s, k + 1);
+        if (detail::scan_number(s, v, d) != 0) decimals[n] = d;
+        else decimals.erase(n);
+        return;
+      }
+    }
+    for (std::size_t k = 0; k + 1 < s.size(); ++k) {
+      if (!is_letter(s[k]) || (k > 0 && !detail::word_boundary(s[k - 1]))) continue;
+      std::size_t j = k + 1;
+      if (j < s.size() && (s[j] == '-' || s[j] == '+')) ++j;
+      const std::size_t end = detail::hash_parameter(s, j, n);
+      if (end == 0 || (end < s.size() && s[end] == '=')) continue;
+      if (const auto it = decimals.find(n); it != decimals.end()) detail::count_word(r, to_upper(s[k]), it->second);
+    }
+  });
+}
+
 /// How finely `text`, a program in dialect `d`, writes its numbers (see the file comment): one
-/// pass over the bytes, no reading.
+/// pass over the bytes, no reading; the parameters words use count as their numbers
+/// (`count_parameter_words`).
 inline number_resolution scan_resolution(std::string_view text, dialect d) {
   number_resolution r;
   if (!capabilities_of(d).cl_data) {
     for_each_address_word_in_text(text, d, [&r](char letter, std::size_t, int decimals) {
       detail::count_word(r, letter, decimals);
     });
+    count_parameter_words(text, r);
     return r;
   }
   for_each_line(text, [&](const text_line& line) { detail::count_cl_statement(r, line.text); });

@@ -75,6 +75,9 @@ struct controller {
   bool paren_comments = false;  ///< `( … )` is a comment (ISO), not text to read
   bool m7_mist_coolant = true;  ///< M7 is mist coolant (false: no standard M7, as on a TNC)
   bool m91_m92_machine_coordinates = false;  ///< M91/M92 in a block: it moves in machine coordinates
+  /// S takes a whole number of revolutions per minute (Fanuc: a decimal point in S is an alarm,
+  /// another control drops the fraction): a spindle speed with a fraction cannot be written.
+  bool whole_spindle_speed = false;
 };
 
 /// A word that a dialect's reader keeps without interpreting it (`block::kept_words`) and whose

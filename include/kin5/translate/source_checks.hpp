@@ -7,6 +7,8 @@
 ///    kinematics would drop it — silently, were it not checked;
 ///  - a word the reader kept without interpreting it whose effect another dialect would lose as
 ///    a comment (`check_kept_words`: an ISO `G4` dwell, Siemens `T="NAME"`, …) is an error;
+///  - a spindle speed with a fraction where the output controller reads S as a whole number
+///    (`check_spindle_speed`) is an error at the word;
 ///  - a rotary value outside its axis' travel by more than the angle tolerance
 ///    (`angle_tolerance.hpp`) is an error naming the travel (A−150 on `sajo-12000p`, whose A
 ///    travels over [−120°, 30°]).
@@ -180,6 +182,25 @@ inline bool check_m_codes(const program::block& b, const source_context& ctx) {
          word, "--m-map " + std::to_string(m) + "="});
   }
   return ok;
+}
+
+/// Checks the spindle speed of block `b` against the output dialect: where the controller reads S
+/// as a whole number (`controller::whole_spindle_speed`: ISO/Fanuc), a speed with a fraction
+/// (`TOOL CALL 1 Z S8000.5`, `SPINDL/RPM,8000.5`) has no spelling there and is refused at its
+/// word. False on an error, reported to `ctx.out` when given.
+inline bool check_spindle_speed(const program::block& b, const source_context& ctx) {
+  const double s = *b.spindle_rpm;
+  if (!program::controller_of(ctx.output).whole_spindle_speed || std::floor(s) == s) return true;
+  if (ctx.out) {
+    const auto located = locate_word(b, 'S', ctx.language, s);
+    const std::string word = located ? located->text : "S" + short_number(s);
+    ctx.out->errors.push_back({located ? located->where : b.where,
+                               word + ": " + std::string(program::name(ctx.output)) +
+                                   " reads a spindle speed as a whole number of revolutions per minute (S takes no "
+                                   "decimal point): " + short_number(s) + " cannot be written there",
+                               word});
+  }
+  return false;
 }
 
 /// Checks the work offset block `b` selects against the output dialect (work_offset_map.hpp):

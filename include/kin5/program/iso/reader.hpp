@@ -81,6 +81,12 @@ struct no_own_words {
     return "setting parameter #" + std::to_string(n) + " is not supported: only #1-#33, #100-#199 and #500-#999 "
            "hold the program's own values (the others are the control's)";
   }
+  /// Whether letter `l` takes a whole number, so that the control rounds a parameter used there to
+  /// the nearest one (`S#1` with `#1 = 1000.5` is S1001, `H#1` with `#1 = 1.4` is H1: FANUC
+  /// Custom Macro B, "real versus integer values") and refuses a fraction written there
+  /// (`S8000.5`: S is no decimal-point address, Mitsubishi M700V §5.3). LinuxCNC's `own_words`
+  /// answers for LinuxCNC, whose S is a real.
+  static bool whole_address(char l) { return l == 'S' || l == 'T' || l == 'H' || l == 'D' || l == 'M' || l == 'P'; }
   template <class Error>
   void take(std::vector<word>&, block&, Error&&) {}
   template <class Error>
@@ -172,7 +178,11 @@ class basic_reader {
       std::string why;
       const parameter_literal* v = parameters_.value(*w.parameter, why);
       if (!v) return lex_problem{w.column, why};
-      const parameter_literal n = w.parameter_negated ? v->negated() : *v;
+      parameter_literal n = w.parameter_negated ? v->negated() : *v;
+      if (Own::whole_address(w.letter) && std::floor(n.value) != n.value) {  // the control rounds it
+        n.value = std::round(n.value);
+        n.written = format_number(n.value, 0);
+      }
       substituted_.push_back(std::string(1, w.letter) + n.written);
       w.value = n.value;
       w.text = substituted_.back();
@@ -246,7 +256,7 @@ class basic_reader {
   void rates() {
     const int inch = state_.inch && !state_.inverse_time ? 1 : 0;
     for (const word& w : words_)
-      if (w.letter == 'F' || w.letter == 'S')
+      if (w.letter == 'F' || (w.letter == 'S' && !Own::whole_address('S')))  // a whole S: refused in `take`
         if (auto why = unwritable_rate(w.value, detail::finest_rate_decimals + (w.letter == 'F' ? inch : 0),
                                        w.letter == 'F' ? "feed" : "spindle speed"))
           error(w.column, *why);
@@ -273,7 +283,13 @@ class basic_reader {
         l.radius = w.value;
         return;
       case 'F': b.feed = w.value; return;
-      case 'S': b.spindle_rpm = w.value; return;
+      case 'S':
+        if (Own::whole_address('S') && !lexing::is_whole(w.value))
+          return error(w.column, "spindle speed " + std::string(w.text) +
+                                     " is not a whole number: an ISO/Fanuc control reads S as whole revolutions "
+                                     "per minute (S takes no decimal point)");
+        b.spindle_rpm = w.value;
+        return;
       case 'T': if (whole(w, "tool number")) b.tool = static_cast<long long>(w.value); return;
       case 'N': if (whole(w, "block number")) b.number = static_cast<long long>(w.value); return;
       case 'O':

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <stdexcept>
@@ -40,6 +41,10 @@ struct write_options {
   /// 30i/31i/32i-B Operator's Manual, "Decimal point programming"). LinuxCNC's writer, whose
   /// controller reads `X10` as 10 mm, turns it off.
   bool decimal_point = true;
+  /// S as a whole number of revolutions per minute: S is no decimal-point address on a Fanuc
+  /// control (Mitsubishi M700V Programming Manual §5.3: a point there is dropped, on a Fanuc an
+  /// alarm); a speed with a fraction is an error. LinuxCNC's writer, whose S is a real, turns it off.
+  bool whole_spindle_speed = true;
 };
 
 namespace detail {
@@ -265,7 +270,12 @@ class writer {
   void codes(const block& b) {
     const int inch = inch_ && !inverse_time_ ? 1 : 0;
     if (b.feed) put('F', *b.feed, rate_decimals(*b.feed, options_.feed_decimals + inch, options_.finest_feed_decimals + inch));
-    if (b.spindle_rpm) {  // S takes no decimal point on a Fanuc control: as short as it reads
+    if (b.spindle_rpm && options_.whole_spindle_speed) {  // S takes no decimal point on a Fanuc control
+      if (std::floor(*b.spindle_rpm) != *b.spindle_rpm)
+        fail(b, "spindle speed S" + format_number(*b.spindle_rpm, options_.finest_feed_decimals) +
+                    " is not a whole number; S takes no decimal point");
+      words_.push_back('S' + format_number(*b.spindle_rpm, 0));
+    } else if (b.spindle_rpm) {  // as short as it reads
       const int d = rate_decimals(*b.spindle_rpm, options_.feed_decimals, options_.finest_feed_decimals, "spindle speed");
       words_.push_back('S' + format_number(*b.spindle_rpm, d));
     }

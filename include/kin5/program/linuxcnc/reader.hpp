@@ -70,6 +70,11 @@ class own_words {
            "values (the others are the control's: probe results, homes, offsets)";
   }
 
+  /// No letter is ISO's whole address here: LinuxCNC rounds no parameter. A fraction in T, H, D
+  /// or M is an error on it ("non-integer value for integer"), and in kin5 where those words are
+  /// read; S and P are reals.
+  static bool whole_address(char) { return false; }
+
   /// Reads and removes from `words` the words LinuxCNC reads itself.
   template <class Error>
   void take(std::vector<word>& words, block& b, Error&& error) {

@@ -74,6 +74,7 @@ class writer {
   /// LinuxCNC reads `X10` as 10 mm (LinuxCNC Manual, "G-Code Overview", numbers): no point needed.
   static iso::write_options without_decimal_point(iso::write_options o) {
     o.decimal_point = false;
+    o.whole_spindle_speed = false;  // S is a real (LinuxCNC User Manual, "G-code Overview", "S")
     return o;
   }
 

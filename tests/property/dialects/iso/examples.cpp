@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <kin5/program/address_words.hpp>
 #include <kin5/program/iso/dialect.hpp>
 
 #include "../example.hpp"
@@ -161,4 +162,40 @@ TEST_CASE("iso: a line not understood is refused and changes nothing, spaced kep
   const read_result ok = iso::read("G0 X0 Y0 Z0\nG 28 Z0\nO004200404\n", "p.nc");
   REQUIRE(ok.ok());
   CHECK(iso::write(ok.parsed) == "G0 X0. Y0. Z0.\nG 28 Z0.\nO004200404\n");
+}
+
+TEST_CASE("iso: a parameter in a whole-number word reads as the control rounds it") {
+  // FANUC Custom Macro B: a real value used where an integer is required is rounded to the
+  // nearest whole number (1000.5 -> 1001, 1.4 -> 1, 3.5 -> 4); axis words keep every decimal.
+  const std::string text =
+      "#1 = 1000.5\n"
+      "#2 = 1.4\n"
+      "#3 = 3.5\n"
+      "#4 = 10.1234\n"
+      "T#2 M6\n"
+      "G43 H#2\n"
+      "S#1 M#3\n"
+      "G1 X#4 F500.\n";
+  const read_result r = iso::read(text, "p.nc");
+  REQUIRE(r.errors.empty());
+  const auto& b = r.parsed.blocks;
+  REQUIRE(b.size() == 8);
+  CHECK(b[4].tool == 1);
+  CHECK(b[5].kept_words == strings{"G43", "H1"});
+  CHECK(b[6].spindle_rpm == 1001.0);
+  CHECK(b[6].m_codes == std::vector<int>{4});
+  CHECK(b[7].axes.x_mm == 10.1234);
+}
+
+TEST_CASE("iso: a number written only in a parameter counts for the program's resolution") {
+  // `X#1` with `#1 = 10.1234` is the literal X10.1234: 4 decimals for positions, so the output
+  // keeps them; a parameter reassigned to a coarser number counts as that from then on.
+  const dialect iso_id = id_of<iso::dialect>();
+  const auto r = scan_resolution("N5 #1 = 10.1234\n#2=-0.12345\nG1 X1.5 Y2. F100.\nG1 X#1 B-#2 (X#2)\n", iso_id);
+  CHECK(r.linear_decimals == 4);
+  CHECK(r.angle_decimals == 5);
+  const auto later = scan_resolution("#1 = 1.5\nG1 Z#1\n#1 = 1.12345\n", iso_id);
+  CHECK(later.linear_decimals == 1);
+  const auto unassigned = scan_resolution("G1 X#7 Y1.25\n", iso_id);
+  CHECK(unassigned.linear_decimals == 2);
 }

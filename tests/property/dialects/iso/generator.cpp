@@ -190,9 +190,9 @@ item draw_item(state& st) {
       break;
     case 10: {  // spindle, tool, M codes
       if (*rc::gen::arbitrary<bool>()) {
-        const double s = draw_decimal(1, 40000, 1);
+        const int s = *rc::gen::inRange(1, 40001);  // S is a whole number on a Fanuc control
         b.spindle_rpm = s;
-        it.words.push_back(spell_word('S', s, 1));
+        it.words.push_back(spell_code('S', s));
       }
       if (*rc::gen::arbitrary<bool>()) {
         const int t = *rc::gen::inRange(0, 100);
