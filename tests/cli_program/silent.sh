@@ -85,6 +85,24 @@ case "$name" in
     run 0 translate --from dmu-80p --to dmu-80p --to-dialect siemens -o sp.mpf sp.h
     has_line sp.mpf 'N1 S8000.5 T1 M6( ;.*)?'
     ;;
+  # An inch program keeps its own decimals of an inch in every dialect, 5 included (an IS-C
+  # control reads 0.00001 in), and never fewer than 4; --digits N writes N decimals of an inch.
+  inch-precision)
+    printf '%s\n' '%' 'O2000' 'G20 G90 G17' 'T1 M6' 'G43.4 H1' 'S8000 M3' 'G1 X1.2346 Y0.5 Z2. A0. C0. F20.' \
+      'X1.25 Y0.50001' 'G49' 'M30' '%' >in.nc
+    for d in iso linuxcnc siemens heidenhain; do
+      run 0 translate --from ac-trunnion --to ac-trunnion --from-dialect iso --to-dialect $d -o in.$d in.nc
+    done
+    has_line in.iso 'X1.25 Y0.50001 Z2. A0. C0.'
+    has_line in.linuxcnc 'X1.25 Y0.50001 Z2 A0 C0'
+    has_line in.siemens 'X1.25 Y0.50001 Z2 A0 C0'
+    has_line in.heidenhain '[0-9]+ L X\+1.25 Y\+0.50001 Z\+2 A\+0 C\+0'
+    run 0 reverse --machine ac-trunnion --dialect iso -o in.apt in.nc
+    has_line in.apt 'GOTO/1.25,0.50001,2,0,0,1'
+    run 0 translate --from ac-trunnion --to ac-trunnion --from-dialect iso --to-dialect siemens --digits 3 -o d3.mpf in.nc
+    has_line d3.mpf 'G1 X1.235 Y0.5 Z2 A0 C0 F20'
+    has_line d3.mpf 'X1.25 Y0.5 Z2 A0 C0'
+    ;;
   load-tool-apt)
     # APT LOAD/TOOL,4 is a tool change: a TOOL CALL 4 on the TNC.
     printf '%s\n' 'PARTNO TC' 'UNITS/MM' 'LOAD/TOOL,4' 'SPINDL/RPM,6000,CLW' 'FEDRAT/MMPM,500' \

@@ -118,6 +118,8 @@ class two_pass_translator final : public block_translator {
     ++result_.blocks_read;
     if (refused_) return;
     if (result_.blocks_read == 1) configure();
+    if (!precise_ && b.metric) inch_ = !*b.metric;
+    if (!precise_ && b.moves()) configure_precision();  // the unit is fixed from the first move on
     // The source kinematics (tool axis, branch) run once per block: in the pass that uses them.
     const source_step s = first_.next(b, &result_, Target::plans_with_tool_axis);
     if (Target::plans_with_tool_axis && s.what == source_step::kind::motion) principal_.push_back(s.principal);
@@ -126,6 +128,7 @@ class two_pass_translator final : public block_translator {
 
   void write(const program::block& b, const program::block_sink& emit) override {
     if (refused_) return;
+    if (!precise_) configure_precision();
     if (!planned_) target_.finish_plan(), planned_ = true;
     source_step s = second_.next(b, nullptr, !Target::plans_with_tool_axis);
     if (Target::plans_with_tool_axis && s.what == source_step::kind::motion) s.principal = principal_[motion_++];
@@ -164,22 +167,29 @@ class two_pass_translator final : public block_translator {
   source_context source_;
   common_options common_;
   bool planned_ = false;
+  bool precise_ = false;  // the output's decimals are chosen
+  bool inch_ = false;     // the program's lengths are inches (the unit its blocks said before the first move)
   source_walker<Source> first_, second_;
   std::vector<bool> principal_;  // per motion block when the first pass classified it: on branch 0
   std::size_t motion_ = 0;       // motion blocks written so far
 
-  /// The angle tolerance, from the options or the program's resolution, to both sides; the
-  /// output's decimals.
-  void configure() {
+  /// The output's decimals, in the program's unit (precision.hpp): once its unit is known, at
+  /// its first move (or before the second pass).
+  void configure_precision() {
+    precise_ = true;
     precision_notes notes;
     result_.output_decimals = output_decimals(resolution_, result_.output.language, common_.digits, &notes,
-                                              program::capabilities_of(source_.language).cl_data);
+                                              program::capabilities_of(source_.language).cl_data, inch_);
     if (!notes.rounded.empty()) result_.warnings.push_back(file_error(result_.output.file, notes.rounded));
     if (!notes.refused.empty()) {
       program::diagnostic d = file_error(result_.output.file, notes.refused);
       d.construct = "precision", d.option = "--digits";
       result_.errors.push_back(std::move(d));
     }
+  }
+
+  /// The angle tolerance, from the options or the program's resolution, to both sides.
+  void configure() {
     source_.tolerance = common_.angle_tolerance.value_or(default_angle_tolerance(resolution_));
     source_.output = result_.output.language;
     source_.m_codes = &common_.m_codes;

@@ -60,9 +60,13 @@ struct precision_notes {
 /// comment), and in `notes` what cannot be kept. `--digits` (`digits`) chooses positions and
 /// angles knowingly: nothing is refused then. `source_is_cl`: the source is CL data, whose
 /// decimals are the CAM system's arithmetic, not a controller's input: rounded with a warning.
+/// `inch`: the program's lengths are inches, and every writer writes them with one decimal more
+/// than `linear` (0.0001 in for 0.001 mm): the source's position decimals, the usual and the
+/// finest are then counted in inches (a 5-decimal inch source is 5 decimals of an inch, which an
+/// IS-C control reads), and `digits` is the inch decimals written (at least one).
 inline program::word_decimals output_decimals(const program::number_resolution& source, program::dialect out,
                                               std::optional<int> digits, precision_notes* notes = nullptr,
-                                              bool source_is_cl = false) {
+                                              bool source_is_cl = false, bool inch = false) {
   const program::controller limits = program::controller_of(out);
   const program::number_resolution s = source_decimals(source);
   precision_notes said;
@@ -75,12 +79,15 @@ inline program::word_decimals output_decimals(const program::number_resolution& 
     return finest;
   };
   program::word_decimals d;
-  d.linear = pick(s.linear_decimals, limits.usual.linear, limits.finest.linear, "positions", true);
+  const int in = inch ? 1 : 0;  // the writers' one decimal more for inches
+  d.linear = pick(s.linear_decimals, limits.usual.linear + in, limits.finest.linear + in,
+                  inch ? "positions (inch)" : "positions", true) - in;
   d.angle = pick(s.angle_decimals, limits.usual.angle, limits.finest.angle, "angles", source.angle_decimals.has_value());
   d.feed = pick(s.feed_decimals, limits.usual.feed, limits.finest.feed, "feeds", false);
   d.vector = pick(s.vector_decimals, limits.usual.vector, limits.finest.vector, "tool-axis vectors", false);
   if (digits) {
-    d.linear = d.angle = *digits;
+    d.linear = std::max(*digits - in, 0);
+    d.angle = *digits;
     said = {};
   }
   if (notes) {
