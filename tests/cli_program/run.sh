@@ -681,6 +681,26 @@ EOF
     run 1 translate --from ac-head --to ac-head --tool-table tools.toml -o no.nc t.nc
     grep -q 'tool-table gives tool lengths .*--source-work-offset or --work-offset' err || { report "table alone accepted"; show err; }
     ;;
+  tcp-word)
+    # --tcp-word chooses Heidenhain's TCP switch (docs/dialects/heidenhain.md): FUNCTION TCPM on a
+    # block of its own before the moves, FUNCTION RESET TCPM before the tool call and after it
+    # again; M128/M129 by default. Another output dialect has no choice: a usage error.
+    printf '%s\n' 'G90 G94 G21' 'T1 M6' 'S8000 M3' 'G43.4 H1' 'G1 X10 Y0 Z20 A-10 C20 F1000' 'T1 M6' \
+      'G1 X12 Y0 Z20 A-12 C20' 'G49' 'M30' >w.nc
+    pair="--from ac-trunnion --to ac-trunnion --from-dialect iso --to-dialect heidenhain"
+    run 0 translate $pair --tcp-word function-tcpm -o w.h w.nc
+    grep -q 'M12[89]' w.h && { report "M128/M129 with function-tcpm"; show w.h; }
+    awk '/FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS/ { on = 1 } /FUNCTION RESET TCPM/ { on = 0 }
+         /TOOL CALL [0-9]/ && on { bad = 1 } / L X\+10 / && !on { bad = 1 } / L X\+12 / && !on { bad = 1 }
+         END { exit bad }' w.h || { report "tracking not on around the moves, or on at a tool call"; show w.h; }
+    [ "$(grep -c 'FUNCTION RESET TCPM' w.h)" = 2 ] || { report "FUNCTION RESET TCPM not twice"; show w.h; }
+    run 0 translate $pair -o m.h w.nc
+    grep -q 'TCPM' m.h && { report "FUNCTION TCPM by default"; show m.h; }
+    grep -q 'M128' m.h || { report "M128 not written by default"; show m.h; }
+    run 1 translate --from ac-trunnion --to ac-trunnion --from-dialect iso --to-dialect iso --tcp-word m128 -o no.nc w.nc
+    grep -q -- '--tcp-word chooses Heidenhain' err || { report "--tcp-word into iso accepted"; show err; }
+    [ -e no.nc ] && report "no.nc written"
+    ;;
   *)
     echo "run.sh: unknown test '$name'" >&2
     exit 2

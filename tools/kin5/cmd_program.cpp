@@ -204,6 +204,8 @@ struct job {
   bool verbose = false;
   /// The translator for a program read in this dialect from this file.
   std::function<std::unique_ptr<block_translator>(prog::dialect, const std::string&)> make;
+  /// The writer settings the user chose (--tcp-word); the decimals come from the translation.
+  prog::write_settings writer_choices;
 };
 
 /// The report file (--report) of a run, written when the run ends, whatever its exit code, as
@@ -290,7 +292,7 @@ int translate_and_write(const job& j, std::string bytes, prog::dialect dialect, 
   // Both passes (translate/stream.hpp): the output reaches OUT's temporary file while the run is
   // clean; the rest is still translated after an error, so that one run lists every error.
   const stream_result run = stream_text(*translator, std::move(bytes), dialect, file, j.output_dialect, out,
-                                        report ? blocks.watch() : block_watch{});
+                                        report ? blocks.watch() : block_watch{}, j.writer_choices);
   const translation& result = translator->result();
   a = account_of(result, run, blocks, j.target, std::move(a));
   {
@@ -435,6 +437,7 @@ struct common_arguments {
   std::string report;  ///< --report FILE.json
   std::string output_mode;  ///< tcp | machine; empty: the output dialect's
   std::string tool_table;   ///< --tool-table FILE
+  std::string tcp_word;     ///< --tcp-word: translate and post into Heidenhain; empty: M128
 };
 
 std::optional<std::vector<double>> parse_list(std::string_view text, std::size_t count);
@@ -562,6 +565,28 @@ std::optional<common_options> parse_common(std::string_view command, const commo
       return std::nullopt;
     }
   return c;
+}
+
+/// The TCP switch of --tcp-word into `j.writer_choices`; false, with the reason printed, when
+/// the word is not one of the output dialect's (only Heidenhain has a choice).
+bool parse_tcp_word(std::string_view command, const std::string& word, job& j) {
+  if (word.empty()) return true;
+  if (j.output_dialect != prog::id_of<prog::heidenhain::dialect>()) {
+    std::cerr << "kin5 " << command << ": --tcp-word chooses Heidenhain's TCP switch; the output dialect is "
+              << prog::name(j.output_dialect) << '\n';
+    return false;
+  }
+  j.writer_choices.of<prog::heidenhain::dialect>().tcp =
+      word == "function-tcpm" ? prog::heidenhain::tcp_word::function_tcpm : prog::heidenhain::tcp_word::m128;
+  return true;
+}
+
+/// Adds --tcp-word (the output's TCP switch) to `sub`.
+void add_tcp_word_option(CLI::App* sub, common_arguments& a) {
+  sub->add_option("--tcp-word", a.tcp_word,
+                  "Heidenhain output: switch tool-tip tracking with m128 (M128/M129, the default) or function-tcpm "
+                  "(FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS / FUNCTION RESET TCPM)")
+      ->check(CLI::IsMember({"m128", "function-tcpm"}));
 }
 
 /// Adds the options of `common_arguments` to `sub`.
@@ -733,6 +758,7 @@ int run_translate(const translate_arguments& a) {
   const auto common = parse_common("translate", a.common, common_error);
   if (!common) return common_error;
   options.common = *common;
+  if (!parse_tcp_word("translate", a.common.tcp_word, j)) return exit_codes::usage;
   if (const auto why = translate_detail::output_mode_refusal(options.common, j.output_dialect)) {
     std::cerr << "kin5 translate: " << *why << '\n';
     return exit_codes::usage;
@@ -793,6 +819,7 @@ int run_post(const machine_arguments& a) {
   int common_error = exit_codes::usage;
   const auto common = parse_common("post", a.common, common_error);
   if (!common) return common_error;
+  if (!parse_tcp_word("post", a.common.tcp_word, j)) return exit_codes::usage;
   if (const auto why = translate_detail::output_mode_refusal(*common, out)) {
     std::cerr << "kin5 post: " << *why << '\n';
     return exit_codes::usage;
@@ -852,6 +879,7 @@ void add_program_commands(CLI::App& app, int& exit_code) {
     add_common_options(sub, a->common);
     add_placement_options(sub, a->common);
     add_source_options(sub, a->common);
+    add_tcp_word_option(sub, a->common);
     sub->add_flag("-v,--verbose", a->verbose, "Also list the blocks translated on the other solution branch");
     sub->add_option("input", a->input, "Input NC program; '-' for stdin")->required();
     sub->footer(default_dialect_table() + exit_code_footer);
@@ -879,6 +907,7 @@ void add_program_commands(CLI::App& app, int& exit_code) {
     add_common_options(sub, a->common);
     add_placement_options(sub, a->common);
     add_tolerance_option(sub, a->common);
+    add_tcp_word_option(sub, a->common);
     sub->add_flag("-v,--verbose", a->verbose, "Also list the blocks posted on the other solution branch");
     sub->add_option("input", a->input, "Input APT CL file; '-' for stdin")->required();
     sub->footer(default_dialect_table() + exit_code_footer);

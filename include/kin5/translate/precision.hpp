@@ -29,6 +29,7 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 
 #include "../program/io.hpp"
 #include "../program/resolution.hpp"
@@ -100,9 +101,11 @@ inline program::word_decimals output_decimals(const program::number_resolution& 
   return d;
 }
 
-/// Writer settings for dialect `out` with decimals `d` (the other dialects' stay at their defaults).
-inline program::write_settings write_settings_for(program::dialect out, const program::word_decimals& d) {
-  program::write_settings settings;
+/// Writer settings for dialect `out` with decimals `d`: the user's `chosen` settings (e.g.
+/// Heidenhain's TCP word) with the decimals of `out` replaced by `d`.
+inline program::write_settings write_settings_for(program::dialect out, const program::word_decimals& d,
+                                                  program::write_settings chosen = {}) {
+  program::write_settings settings = std::move(chosen);
   program::for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t i) {
     if (program::dialect(i) != out) return;
     auto& o = settings.of<D>();

@@ -120,11 +120,12 @@ inline std::optional<program::dialect> closest_nc_dialect(std::string_view text,
 }
 
 /// Both passes of `t` over the blocks `read` gives (see the file comment); output blocks are
-/// written in `output_language` to `sink`; `watch`, if given, sees each block of the first pass.
+/// written in `output_language` to `sink` with the writer settings `chosen` (decimals from the
+/// translation); `watch`, if given, sees each block of the first pass.
 template <text_sink Sink>
 stream_result stream_blocks(block_translator& t, const block_source& read, const std::string& file,
                             program::dialect source_language, program::dialect output_language, Sink& sink,
-                            const block_watch& watch = {}) {
+                            const block_watch& watch = {}, const program::write_settings& chosen = {}) {
   stream_result run;
   program::block_store records(file);
   bool says_something = false;  // a block with more than blanks
@@ -146,7 +147,7 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
     run.input.errors.push_back(translate_detail::file_error(file, not_cl_data(not_understood)));
   if (!run.input.ok()) return run;
 
-  program::write_settings settings = write_settings_for(output_language, t.result().output_decimals);
+  program::write_settings settings = write_settings_for(output_language, t.result().output_decimals, chosen);
   settings.program_metric = unit.metric;
   program::block_writer writer(output_language, source_language, file, settings);
   const program::block_sink emit = [&](program::block&& o) {
@@ -171,7 +172,7 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
 template <text_sink Sink>
 stream_result stream_text(block_translator& t, std::string text, program::dialect source_language,
                           const std::string& file, program::dialect output_language, Sink& sink,
-                          const block_watch& watch = {}) {
+                          const block_watch& watch = {}, const program::write_settings& chosen = {}) {
   const program::number_resolution resolution = program::scan_resolution(text, source_language);
   t.source_resolution(resolution);
   const block_source read = [&](program::read_result& diagnostics, const program::block_sink& on_block) {
@@ -196,7 +197,7 @@ stream_result stream_text(block_translator& t, std::string text, program::dialec
     if (diagnostics.resolution.empty()) diagnostics.resolution = resolution;
     std::string().swap(text);  // freed (assigning an empty string would keep the capacity)
   };
-  return stream_blocks(t, read, file, source_language, output_language, sink, watch);
+  return stream_blocks(t, read, file, source_language, output_language, sink, watch, chosen);
 }
 
 }  // namespace kin5

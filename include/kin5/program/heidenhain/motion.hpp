@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -167,6 +168,7 @@ class motion_reader : public word_checks {
   void axis_word(word& w) {
     if (!value_ok(w)) return;
     const std::size_t a = std::string_view("XYZABC").find(w.key[0]);
+    if (a >= std::size(axis_)) return error(w.pos, "unknown axis '" + w.key + "'");  // not reached: callers pass axes
     if (axis_[a]) return error(w.pos, "axis '" + w.key + "' given twice");
     axis_[a] = a < 3 ? *w.value * state_.mm_per_length() : *w.value;
   }

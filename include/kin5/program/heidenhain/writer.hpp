@@ -31,7 +31,16 @@ namespace kin5::program::heidenhain {
 
 struct dialect;  // this folder's entry of `program::dialects` (dialect.hpp)
 
-/// Decimals written for each kind of number.
+/// How the writer switches tool-tip tracking (TCP) on and off (`--tcp-word`). Both forms
+/// mean the same on a TNC 640 for what kin5 writes: the tool tip follows the programmed path,
+/// rotary words are axis positions and the axes interpolate linearly (TNC 640 User's Manual,
+/// M128 and FUNCTION TCPM, whose options F TCP, AXIS POS, PATHCTRL AXIS say exactly that).
+enum class tcp_word {
+  m128,           ///< `M128` on the block, `M129` off
+  function_tcpm,  ///< `FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS` / `FUNCTION RESET TCPM`, blocks of their own
+};
+
+/// Decimals written for each kind of number, and the TCP switch.
 struct write_options {
   int linear_decimals = 3;  ///< X Y Z, CC, CR radius (mm)
   int angle_decimals = 3;   ///< A B C (degrees)
@@ -41,6 +50,9 @@ struct write_options {
   /// The program's unit when known ahead (`program_unit`): BEGIN PGM says it even when the
   /// source states it only after its header (Siemens `%_N_P_MPF`, then `G700`).
   std::optional<bool> program_metric;
+  /// The TCP switch written. Empty: `M128` / `M129`, except that a program read as Heidenhain
+  /// keeps its own `FUNCTION TCPM` blocks.
+  std::optional<tcp_word> tcp;
 };
 
 /// Writes blocks as Heidenhain conversational text one at a time, numbering them from 0 and
@@ -81,12 +93,18 @@ class writer {
     if (!change && ((b.tool && same_) || b.spindle_rpm)) tool_call(b, moves, kept, bi, same_);
     if (b.tool) selected_tool_ = *b.tool;
     const std::string m_words = m_functions(b);
+    if (b.tcp && options_.tcp) {
+      // A chosen form replaces a read FUNCTION TCPM's options, which mean what M128 means.
+      if (same_ && *b.tcp) std::erase_if(kept, is_tcpm_option);
+      if (function_tcpm()) add(*b.tcp ? tcpm : reset_tcpm);
+    }
     const bool arc = b.motion == motion_kind::arc_cw || b.motion == motion_kind::arc_ccw;
     if (b.arc && b.arc->centre_mm && !b.motion && b.axes.empty()) {
       add(cc_line(*b.arc));
     } else if (moves) {
       motion_line(b, kept, m_words, bi);
-    } else if (b.tcp && *b.tcp && same_ && !kept.empty() && b.m_codes.empty() && !b.machine_coordinates) {
+    } else if (b.tcp && *b.tcp && same_ && !options_.tcp && !kept.empty() && b.m_codes.empty() &&
+               !b.machine_coordinates) {
       std::string l = "FUNCTION TCPM";
       for (const std::string& w : kept) l += " " + w;
       kept.clear();
@@ -241,13 +259,13 @@ class writer {
     const std::optional<long long> tool = b.tool ? b.tool : selected_tool_;
     if (!tool) fail(b, bi, "tool change (M6) without a tool number");
     if (*tool < 0) fail(b, bi, "tool number " + std::to_string(*tool) + " cannot be written");
-    if (tcp_on_) add("M129");
+    if (tcp_on_) add(function_tcpm() ? reset_tcpm : "M129");
     std::string l = "TOOL CALL " + std::to_string(*tool) + " Z";
     plane_ = arc_plane::xy;
     if (b.spindle_rpm) l += " S" + format_number(*b.spindle_rpm, rate(*b.spindle_rpm, "spindle speed"));
     if (b.feed && !moves) l += " F" + format_number(*b.feed, rate(*b.feed));
     add(l);
-    if (tcp_on_ && !b.tcp) add("M128");
+    if (tcp_on_ && !b.tcp) add(function_tcpm() ? tcpm : "M128");
   }
 
   /// A preset table row selected by Cycle 247 (TNC 640 User's Manual for Cycle Programming,
@@ -278,7 +296,13 @@ class writer {
     add(l);
   }
 
-  /// ` M3 M8 M91 M128`: the block's M functions, M91 for machine coordinates, M128/M129 for TCP.
+  static constexpr const char* tcpm = "FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS";
+  static constexpr const char* reset_tcpm = "FUNCTION RESET TCPM";
+  bool function_tcpm() const { return options_.tcp == tcp_word::function_tcpm; }
+  static bool is_tcpm_option(const std::string& w) { return w == "F TCP" || w == "AXIS POS" || w == "PATHCTRL AXIS"; }
+
+  /// ` M3 M8 M91 M128`: the block's M functions, M91 for machine coordinates, M128/M129 for TCP
+  /// (with `tcp_word::function_tcpm`, `write` puts the switch on a block of its own instead).
   std::string m_functions(const block& b) const {
     std::string m_words;
     for (int m : b.m_codes)
@@ -286,7 +310,7 @@ class writer {
     if (b.machine_coordinates &&
         std::find_if(b.m_codes.begin(), b.m_codes.end(), [](int m) { return m == 91 || m == 92; }) == b.m_codes.end())
       m_words += " M91";
-    if (b.tcp) m_words += *b.tcp ? " M128" : " M129";
+    if (b.tcp && !function_tcpm()) m_words += *b.tcp ? " M128" : " M129";
     return m_words;
   }
 

@@ -27,7 +27,11 @@ struct contract<program::heidenhain::dialect> : usual_contract<program::heidenha
   static constexpr bool numbers_from_zero = true;
 
   /// Nine decimals: more than any value read has, so the written text loses nothing.
-  static program::heidenhain::write_options fuzz_options() { return {9, 9, 9, 9}; }
+  static program::heidenhain::write_options fuzz_options() {
+    program::heidenhain::write_options o;
+    o.linear_decimals = o.angle_decimals = o.feed_decimals = o.finest_feed_decimals = 9;
+    return o;
+  }
   static constexpr comparison fuzz_read_back{.tolerance = 1e-9, .relative = 1e-15, .block_numbers = false};
   static constexpr comparison fuzz_fixed_point = fuzz_read_back;
   static constexpr bool writes_all_it_reads = false;
