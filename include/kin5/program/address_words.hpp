@@ -23,6 +23,7 @@
 #include <array>
 #include <cstddef>
 #include <map>
+#include <utility>
 #include <string_view>
 
 #include "block.hpp"
@@ -205,50 +206,58 @@ constexpr void for_each_address_word_in_text(std::string_view text, dialect d, F
 
 namespace detail {
 
-/// The parameter number of `#n` at `i` in `line` (digits after `#`) and the position after it; 0 if none.
-constexpr std::size_t hash_parameter(std::string_view line, std::size_t i, long& n) {
-  if (i >= line.size() || line[i] != '#') return 0;
+/// Whether `c` names a parameter: `#1` (ISO, LinuxCNC), `R1` (Siemens), `Q1` (Heidenhain).
+constexpr bool parameter_prefix(char c) { return c == '#' || c == 'R' || c == 'r' || c == 'Q' || c == 'q'; }
+
+/// The parameter at `i` in `line` (a prefix, then up to six digits): its prefix, upper case, and
+/// number in `name`, and the position after it; 0 if there is none.
+constexpr std::size_t parameter_at(std::string_view line, std::size_t i, std::pair<char, long>& name) {
+  if (i >= line.size() || !parameter_prefix(line[i])) return 0;
   std::size_t j = i + 1;
-  n = 0;
+  long n = 0;
   while (j < line.size() && is_digit(line[j]) && j - i <= 6) n = n * 10 + (line[j++] - '0');
+  name = {to_upper(line[i]), n};
   return j > i + 1 ? j : 0;
 }
 
 }  // namespace detail
 
-/// Adds to `r` the decimals of the `#` parameters (ISO, LinuxCNC) that words use: a line
-/// `#1 = 10.1234` (after an optional block number) records 4 decimals for #1, and a later word
-/// `X#1` or `X-#1` counts them for X, as the literal `X10.1234` would, so that a number written
-/// only in a parameter keeps its decimals in the output. Text after `;` or `(` is not read.
+/// Adds to `r` the decimals of the parameters that words use: an assignment of a number,
+/// `#1 = 10.1234`, `R1=10.1234` or `Q1 = +10.1234`, records 4 decimals for that parameter, and
+/// a later word that uses it, `X#1`, `X-#1`, `X=R1`, `F=-R1`, `X+Q1`, `FQ1` or `F Q1`, counts them for
+/// its letter as the literal `X10.1234` would: a number written only in a parameter keeps its
+/// decimals in the output. An assignment of anything else forgets the parameter. Which of
+/// these spellings a dialect has is its reader's to say (a word it does not read is refused
+/// there); text after `;` or `(` is not read.
 inline void count_parameter_words(std::string_view text, number_resolution& r) {
-  if (text.find('#') == std::string_view::npos) return;
-  std::map<long, int> decimals;  // per parameter assigned a number
+  std::map<std::pair<char, long>, int> decimals;  // per parameter assigned a number
   for_each_line(text, [&](const text_line& line) {
     const std::string_view s = line.text.substr(0, line.text.find_first_of(";("));
-    std::size_t i = lexing::skip_blanks(s, 0);
-    if (i < s.size() && (s[i] == 'N' || s[i] == 'n')) {
-      std::size_t k = i + 1;
-      while (k < s.size() && is_digit(s[k])) ++k;
-      i = lexing::skip_blanks(s, k);
-    }
-    long n = 0;
-    if (std::size_t k = detail::hash_parameter(s, i, n); k != 0) {
-      k = lexing::skip_blanks(s, k);
-      if (k < s.size() && s[k] == '=') {
-        int d = 0;
-        const std::size_t v = lexing::skip_blanks(s, k + 1);
-        if (detail::scan_number(s, v, d) != 0) decimals[n] = d;
-        else decimals.erase(n);
-        return;
+    if (decimals.empty() && s.find('=') == std::string_view::npos) return;  // nothing assigned, nothing to use
+    std::pair<char, long> name;
+    for (std::size_t k = 0; k < s.size(); ++k) {
+      const bool boundary = k == 0 || detail::word_boundary(s[k - 1]) || s[k] == '#';
+      if (!boundary) continue;
+      if (const std::size_t end = detail::parameter_at(s, k, name); end != 0) {  // `#1 = 5.25`
+        const std::size_t eq = lexing::skip_blanks(s, end);
+        if (eq < s.size() && s[eq] == '=') {
+          int d = 0;
+          const std::size_t v = lexing::skip_blanks(s, eq + 1);
+          const std::size_t after = detail::scan_number(s, v, d);
+          if (after != 0 && (after == s.size() || !detail::parameter_prefix(s[after]))) decimals[name] = d;
+          else decimals.erase(name);
+          k = eq;
+          continue;
+        }
       }
-    }
-    for (std::size_t k = 0; k + 1 < s.size(); ++k) {
-      if (!is_letter(s[k]) || (k > 0 && !detail::word_boundary(s[k - 1]))) continue;
-      std::size_t j = k + 1;
+      if (!is_letter(s[k])) continue;
+      std::size_t j = lexing::skip_blanks(s, k + 1);  // `X#1`, `X-#1`, `X=R1`, `F=-R1`, `X+Q1`, `FQ1`, `F Q1`
+      if (j < s.size() && s[j] == '=') ++j;
       if (j < s.size() && (s[j] == '-' || s[j] == '+')) ++j;
-      const std::size_t end = detail::hash_parameter(s, j, n);
+      const std::size_t end = detail::parameter_at(s, j, name);
       if (end == 0 || (end < s.size() && s[end] == '=')) continue;
-      if (const auto it = decimals.find(n); it != decimals.end()) detail::count_word(r, to_upper(s[k]), it->second);
+      if (const auto it = decimals.find(name); it != decimals.end()) detail::count_word(r, to_upper(s[k]), it->second);
+      k = end - 1;
     }
   });
 }

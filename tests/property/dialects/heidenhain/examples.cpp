@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <kin5/program/address_words.hpp>
 #include <kin5/program/heidenhain/dialect.hpp>
 
 using namespace kin5::program;
@@ -192,4 +193,15 @@ TEST_CASE("heidenhain: an L without coordinates is not written; its F goes to th
         "3 L X+5\n"
         "4 ;L FMAX\n"
         "5 L Z+6\n");
+}
+
+TEST_CASE("heidenhain: a number written only in a Q parameter counts for the program's resolution") {
+  // `L X+Q1` with `Q1 = +10.1234` is the literal X+10.1234; `F Q2` a feed of 2 decimals.
+  const dialect id = id_of<heidenhain::dialect>();
+  const auto r = scan_resolution("0 BEGIN PGM P MM\n1 Q1 = +10.1234\n2 FN 0: Q2 = 250.25\n3 L X+Q1 Y+1.5 F Q2\n"
+                                 "4 L Y-Q1 R0 FMAX\n5 END PGM P MM\n", id);
+  CHECK(r.linear_decimals == 4);
+  CHECK(r.feed_decimals == 2);
+  const auto unused = scan_resolution("1 Q1 = +10.1234\n2 L X+1.5 R0 FMAX\n", id);
+  CHECK(unused.linear_decimals == 1);
 }

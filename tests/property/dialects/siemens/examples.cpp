@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <kin5/program/address_words.hpp>
 #include <kin5/program/siemens/dialect.hpp>
 
 namespace {
@@ -263,4 +264,16 @@ TEST_CASE("siemens: write options set the decimals", "[siemens][quirks]") {
   o.vector_decimals = 4;
   const auto v = read_ok("G1 X-34.983 A-77.954 F1091.25 S4000.4\nG1 A3=0.123456789 B3=0 C3=1\n");
   CHECK(siemens::write(v.parsed, o) == "G1 X-35 A-77.95 F1091 S4000\nG1 A3=0.1235 B3=0 C3=1\n");
+}
+
+TEST_CASE("siemens: a number written only in an R parameter counts for the program's resolution") {
+  // `X=R1` with `R1=10.1234` is the literal X10.1234: 4 decimals for positions; `F=-R2`, an
+  // angle in `B=R3`; a parameter assigned an expression counts no more.
+  const dialect id = id_of<siemens::dialect>();
+  const auto r = scan_resolution("N10 R1=10.1234 R2=250.5\nN20 R3=-12.12345\nN30 G1 X=R1 Y2.5 B=R3 F=-R2\n", id);
+  CHECK(r.linear_decimals == 4);
+  CHECK(r.angle_decimals == 5);
+  CHECK(r.feed_decimals == 1);
+  const auto computed = scan_resolution("R1=10.1234\nR1=R2*2\nG1 X=R1 Y1.5\n", id);
+  CHECK(computed.linear_decimals == 1);
 }
