@@ -166,6 +166,28 @@ case "$name" in
     error_at 'g42.mpf:2:8: error: G42: cutter radius compensation'
     nothing g42.nc
     ;;
+  # In every dialect compensation is refused at its word until it is translated
+  # (docs/dialects/compensation.md), never passed on as a comment or dropped.
+  compensation-g41-iso)
+    printf '%s\n' '%' 'O3000' 'G21 G90 G17' 'T1 M6' 'G43.4 H1' 'G1 X0. Y0. Z50. A0. C0. F500.' \
+      'G41 D1 X10. Y0.' 'X20. Y10.' 'G40 X30. Y10.' 'G49' 'M30' '%' >g41.nc
+    run 2 translate --from ac-trunnion --to ac-trunnion --from-dialect iso --to-dialect siemens -o g41.mpf g41.nc
+    error_at 'g41.nc:7:1: error: G41: cutter radius compensation'
+    nothing g41.mpf
+    ;;
+  compensation-g41-linuxcnc)
+    printf '%s\n' 'G21 G90 G17' 'T1 M6' 'G43' 'M428' 'G1 X0 Y0 Z50 A0 C0 F500' 'G42 X10 Y0' 'G40 X20' 'M429' 'M30' >g42.ngc
+    run 2 translate --from xyzac-trt --to xyzac-trt --from-dialect linuxcnc --to-dialect iso -o g42.nc g42.ngc
+    error_at 'g42.ngc:6:1: error: G42: cutter radius compensation'
+    nothing g42.nc
+    ;;
+  compensation-cutcom)
+    printf '%s\n' 'PARTNO CC' 'UNITS/MM' 'LOAD/TOOL,1' 'FEDRAT/MMPM,500' 'GOTO/0,0,50,0,0,1' 'CUTCOM/LEFT,1' \
+      'GOTO/10,0,50,0,0,1' 'CUTCOM/OFF' 'FINI' >cc.apt
+    run 2 post --machine dmu-80p --dialect heidenhain -o cc.h cc.apt
+    error_at 'cc.apt:6:1: error: CUTCOM/LEFT: cutter radius compensation'
+    nothing cc.h
+    ;;
   # A drilling cycle and its M99 calls are refused, never a comment plus an M99 (a subprogram
   # return on a Fanuc control).
   cycle-200-m99)
