@@ -213,7 +213,7 @@ case "$name" in
     done
     printf 'N5 T1 M6\nN10 TRAORI\nN20 G1 X0 Y0 Z0 A-10 B20 F100\nN30 G1 X10 F0.04\nN40 M30\n' >small.mpf
     run 0 $translate -o o.h small.mpf
-    grep -q '^3 L X-10 .* F0\.04$' o.h || { report "F0.04 not kept"; show o.h; }
+    grep -q '^4 L X-10 .* F0\.04$' o.h || { report "F0.04 not kept"; show o.h; }
     printf 'N5 T1 M6\nN10 TRAORI\nN20 G1 X0 Y0 Z0 A-10 B20 F100\nN30 G1 X1000000 F0.4\nN40 M30\n' >tiny.mpf
     rm -f o.nc
     run 2 $translate --to-dialect iso --feed inverse-time -o o.nc tiny.mpf

@@ -261,9 +261,9 @@ case "$name" in
     printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z5 A0 B0 F100' 'N30 G0 X0 Y0 Z50' 'N40 X10' 'N45 X12 F300' \
       'N50 G1 X20' 'N60 TRAFOOF' 'N70 M30' >rapid.mpf
     run 0 translate --from sajo-12000p --to dmu-80p -o rapid.h rapid.mpf
-    has_line rapid.h '3 L X-10 Y\+50 Z\+0 B\+180 C\+0 FMAX'
-    has_line rapid.h '4 L X-12 Y\+50 Z\+0 B\+180 C\+0 FMAX'
-    has_line rapid.h '5 L X-20 Y\+50 Z\+0 B\+180 C\+0 F300'
+    has_line rapid.h '4 L X-10 Y\+50 Z\+0 B\+180 C\+0 FMAX'
+    has_line rapid.h '5 L X-12 Y\+50 Z\+0 B\+180 C\+0 FMAX'
+    has_line rapid.h '6 L X-20 Y\+50 Z\+0 B\+180 C\+0 F300'
     run 0 translate --from sajo-12000p --to sajo-12000p -o same.mpf rapid.mpf
     has_line same.mpf 'N50 G1 X20 Y0 Z50 A0 B0 F300'
     ;;

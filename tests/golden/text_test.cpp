@@ -221,7 +221,7 @@ TEST_CASE("a program end is written once in every dialect") {
   CHECK(s.parsed.blocks[2].m_codes == std::vector<int>{5});
   CHECK(s.parsed.blocks[2].program_end == "M2");
   CHECK(iso::write(s.parsed) == "(program P)\nN10 M30\nN20 M5 M2\n");
-  CHECK(heidenhain::write(s.parsed) == "0 BEGIN PGM P MM\n1 END PGM P MM\n2 M5\n3 END PGM P MM\n");
+  CHECK(heidenhain::write(s.parsed) == "0 BEGIN PGM P MM\n1 M30\n2 M5 M2\n3 END PGM P MM\n");
   CHECK(apt::write(s.parsed) == "PARTNO P\nFINI\nSPINDL/OFF\nFINI\n");
   CHECK(siemens::write(s.parsed) == "%_N_P_MPF\nN10 M30\nN20 M5 M2\n");
 
@@ -234,14 +234,23 @@ TEST_CASE("a program end is written once in every dialect") {
   // A tool change is written once: TOOL CALL and LOADTL are the change, no M6 beside them.
   const auto tc = siemens::read("T1 M6\nS6000 M3\n", "tool.mpf");
   REQUIRE(tc.ok());
-  CHECK(heidenhain::write(tc.parsed) == "0 TOOL CALL 1 Z\n1 TOOL CALL S6000\n2 M3\n");
+  CHECK(heidenhain::write(tc.parsed) == "0 BEGIN PGM PGM MM\n1 TOOL CALL 1 Z\n2 TOOL CALL S6000\n3 M3\n4 END PGM PGM MM\n");
   CHECK(apt::write(tc.parsed) == "LOADTL/1\nSPINDL/6000,CLW\n");
   CHECK(iso::write(tc.parsed) == "T1 M6\nS6000 M3\n");
 
   const auto i = iso::read("O1234\nN5 M30\n", "end.nc");
   REQUIRE(i.ok());
-  CHECK(heidenhain::write(i.parsed) == "0 BEGIN PGM 1234 MM\n1 END PGM 1234 MM\n");
+  CHECK(heidenhain::write(i.parsed) == "0 BEGIN PGM 1234 MM\n1 M30\n2 END PGM 1234 MM\n");
   CHECK(siemens::write(i.parsed) == "%_N_1234_MPF\nN5 M30\n");
+  // The tape marks and ;$PATH= frame the program: BEGIN/END PGM stand for them, no copy as text.
+  const auto tape = iso::read("%\nO1234\nN5 M30\n%\n", "end.nc");
+  REQUIRE(tape.ok());
+  CHECK(tape.parsed.blocks[0].framing);
+  CHECK(heidenhain::write(tape.parsed) == "0 BEGIN PGM 1234 MM\n1 M30\n2 END PGM 1234 MM\n");
+  const auto path = siemens::read("%_N_P_MPF\n;$PATH=/_N_MPF_DIR\nN10 M30\n", "path.mpf");
+  REQUIRE(path.ok());
+  CHECK(path.parsed.blocks[1].framing);
+  CHECK(heidenhain::write(path.parsed) == "0 BEGIN PGM P MM\n1 M30\n2 END PGM P MM\n");
 }
 
 TEST_CASE("APT feed-only, rapid-only and units blocks in the G-code and Heidenhain dialects") {
@@ -258,7 +267,8 @@ TEST_CASE("APT feed-only, rapid-only and units blocks in the G-code and Heidenha
         "4 L X+1 Y+2 Z+3 FMAX\n"
         "5 L X+4 Y+5 Z+6 F800\n"
         "6 L X+7 Y+8 Z+9\n"
-        "7 END PGM X MM\n");
+        "7 M30\n"
+        "8 END PGM X MM\n");
   // G code has words for all of them.
   CHECK(siemens::write(a.parsed) ==
         "%_N_X_MPF\nG710\nG94 F800\nG0\nG0 X1 Y2 Z3\nG1 X4 Y5 Z6\nG1 X7 Y8 Z9\nM30\n");
@@ -274,7 +284,7 @@ TEST_CASE("APT feed-only, rapid-only and units blocks in the G-code and Heidenha
   empty.text = "UNITS/XYZ";
   p.blocks = {empty};
   CHECK(siemens::write(p) == "; UNITS/XYZ\n");
-  CHECK(heidenhain::write(p) == "0 ;UNITS/XYZ\n");
+  CHECK(heidenhain::write(p) == "0 BEGIN PGM PGM MM\n1 ;UNITS/XYZ\n2 END PGM PGM MM\n");
 }
 
 TEST_CASE("kin5 post of APT CL data to Heidenhain: no coordinate-less L, no empty block") {
@@ -285,9 +295,9 @@ TEST_CASE("kin5 post of APT CL data to Heidenhain: no coordinate-less L, no empt
   REQUIRE(t.ok());
   const std::string text = heidenhain::write(t.output);
   CAPTURE(text);
-  CHECK(text.find("0 ;UNITS/MM\n1 ;RAPID\n2 L X+0 Y-20 Z+60") == 0);
-  CHECK(text.find("FMAX M128\n3 ;FEDRAT/MMPM,800\n4 L X+0 Y-20 Z+10") != std::string::npos);
-  CHECK(text.find(" F800\n5 L X+10 Y-20 Z+10") != std::string::npos);
+  CHECK(text.find("0 BEGIN PGM PGM MM\n1 ;UNITS/MM\n2 ;RAPID\n3 L X+0 Y-20 Z+60") == 0);
+  CHECK(text.find("FMAX M128\n4 ;FEDRAT/MMPM,800\n5 L X+0 Y-20 Z+10") != std::string::npos);
+  CHECK(text.find(" F800\n6 L X+10 Y-20 Z+10") != std::string::npos);
   CHECK(text.find("L F") == std::string::npos);
   CHECK(text.find("L FMAX") == std::string::npos);
   CHECK(heidenhain::read(text, "cl.h").ok());

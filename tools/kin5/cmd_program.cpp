@@ -291,8 +291,11 @@ int translate_and_write(const job& j, std::string bytes, prog::dialect dialect, 
 
   // Both passes (translate/stream.hpp): the output reaches OUT's temporary file while the run is
   // clean; the rest is still translated after an error, so that one run lists every error.
+  // A program named by its output file when the source names none (Heidenhain BEGIN PGM).
+  prog::write_settings choices = j.writer_choices;
+  if (j.output_path != "-") choices.program_name = std::filesystem::path(j.output_path).stem().string();
   const stream_result run = stream_text(*translator, std::move(bytes), dialect, file, j.output_dialect, out,
-                                        report ? blocks.watch() : block_watch{}, j.writer_choices);
+                                        report ? blocks.watch() : block_watch{}, choices);
   const translation& result = translator->result();
   a = account_of(result, run, blocks, j.target, std::move(a));
   {

@@ -131,6 +131,10 @@ struct block {
   /// Not understood and with no axis words: written back unchanged (same dialect) or
   /// carried as text (another dialect) — never interpreted.
   bool passthrough = false;
+  /// Text that only frames the program for transfer or storage, with no effect on motion: the
+  /// tape marks `%` of ISO and LinuxCNC, Siemens `;$PATH=…`. The writer of the same dialect
+  /// writes it back; a writer of another dialect writes its own frame instead, never this text.
+  bool framing = false;
   /// Tool change, compensation, spindle, coolant, work offset, plane, distance mode, dwell and
   /// stop, as the text says them (state_words.hpp). Readers fill these instead of `m_codes` and
   /// `kept_words` for the words they map, so every such word has one meaning in every dialect.

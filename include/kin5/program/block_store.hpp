@@ -96,7 +96,7 @@ class block_store {
     has_y = 1u << 15, has_z = 1u << 16, has_a = 1u << 17, has_b = 1u << 18, has_c = 1u << 19,
     has_tool_axis = 1u << 20, has_arc = 1u << 21, arc_centre = 1u << 22, arc_radius = 1u << 23,
     has_feed = 1u << 24, feed_rapid = 1u << 25, machine_coordinates = 1u << 26, has_kept = 1u << 27,
-    passthrough = 1u << 28, has_state = 1u << 29,
+    passthrough = 1u << 28, has_state = 1u << 29, framing = 1u << 30,
   };
 
   std::string file_;
@@ -191,6 +191,7 @@ class block_store {
     set(b.machine_coordinates, machine_coordinates);
     set(!b.kept_words.empty(), has_kept);
     set(b.passthrough, passthrough);
+    set(b.framing, framing);
     set(!b.state.empty(), has_state);
     // An upper bound of the record's size: the fixed part, then the strings and lists (a
     // LEB128 size takes at most 10 bytes).
@@ -304,6 +305,7 @@ class block_store {
     }
     if (flags & has_state) p = get(p, b.state);
     b.passthrough = (flags & passthrough) != 0;
+    b.framing = (flags & framing) != 0;
     return p;
   }
 };

@@ -74,6 +74,9 @@ struct write_settings {
   /// The program's unit when known ahead (`program_unit`, units.hpp), for writers whose dialect
   /// states it once at the top (their `write_options::program_metric`).
   std::optional<bool> program_metric;
+  /// The program's name when known ahead, for writers that name their program at the top
+  /// (their `write_options::program_name`).
+  std::optional<std::string> program_name;
 
   template <class D>
   typename D::write_options& of() {
@@ -106,6 +109,16 @@ class block_writer {
     std::visit([&](auto& w) { w.write(out, b); }, writer_);
   }
 
+  /// Appends what the dialect writes after the last block (Heidenhain: `END PGM`) to `out`;
+  /// call once, after the last `write`.
+  void finish(std::string& out) {
+    std::visit(
+        [&](auto& w) {
+          if constexpr (requires { w.finish(out); }) w.finish(out);
+        },
+        writer_);
+  }
+
  private:
   using any_writer = typename detail::writer_of<dialects>::type;
   any_writer writer_;
@@ -116,6 +129,8 @@ class block_writer {
         [&]<class D>(std::type_identity<D>) {
           typename D::write_options o = settings.of<D>();
           if constexpr (requires { o.program_metric; }) o.program_metric = settings.program_metric;
+          if constexpr (requires { o.program_name; })
+            if (!o.program_name) o.program_name = settings.program_name;
           return any_writer(std::in_place_type<typename D::writer>, source, std::move(file), o);
         },
         []() -> any_writer { throw std::invalid_argument("block_writer: no such dialect"); });

@@ -115,12 +115,12 @@ struct block_counts {
   std::size_t refused = 0;       ///< an error at the block; every block, after an error about the whole file
 };
 
-/// Whether block `b` holds nothing but a comment, blanks, a block number or text carried over.
+/// Whether block `b` holds nothing but a comment, blanks, a block number, framing or text carried over.
 inline bool comment_only(const program::block& b) {
   if (b.moves()) return false;
   program::block content = b;
   content.where = {}, content.text.clear(), content.number.reset(), content.comment.reset();
-  content.passthrough = false;
+  content.passthrough = content.framing = false;  // framing text (`%`, `;$PATH=`) is text too
   return content == program::block{};
 }
 

@@ -37,6 +37,7 @@
 #include "../program/block.hpp"
 #include "../program/block_store.hpp"
 #include "../program/io.hpp"
+#include "../program/program_name.hpp"
 #include "pipeline.hpp"
 
 namespace kin5 {
@@ -121,7 +122,8 @@ inline std::optional<program::dialect> closest_nc_dialect(std::string_view text,
 
 /// Both passes of `t` over the blocks `read` gives (see the file comment); output blocks are
 /// written in `output_language` to `sink` with the writer settings `chosen` (decimals from the
-/// translation); `watch`, if given, sees each block of the first pass.
+/// translation; `chosen.program_name` names a program whose source names none, Heidenhain's
+/// BEGIN PGM); `watch`, if given, sees each block of the first pass.
 template <text_sink Sink>
 stream_result stream_blocks(block_translator& t, const block_source& read, const std::string& file,
                             program::dialect source_language, program::dialect output_language, Sink& sink,
@@ -130,10 +132,12 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
   program::block_store records(file);
   bool says_something = false;  // a block with more than blanks
   std::size_t moving = 0, not_understood = 0;
-  program::program_unit unit;  // for writers that state the unit at the top
+  program::program_unit unit;  // for writers that state the unit and name at the top
+  program::program_name name;
   read(run.input, [&](program::block&& b) {
     says_something = says_something || !blank(b);
     unit.take(b);
+    name.take(b);
     moving += b.moves() ? 1 : 0;
     not_understood += b.passthrough ? 1 : 0;
     t.plan(b);
@@ -149,6 +153,8 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
 
   program::write_settings settings = write_settings_for(output_language, t.result().output_decimals, chosen);
   settings.program_metric = unit.metric;
+  settings.program_name = name.name();
+  if (!settings.program_name) settings.program_name = chosen.program_name;
   program::block_writer writer(output_language, source_language, file, settings);
   const program::block_sink emit = [&](program::block&& o) {
     if (run.writer_error || run.sink_failed || !t.result().ok()) return;
@@ -164,11 +170,16 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
     run.sink_failed = !sink.flush_if_full();
   };
   records.replay([&](const program::block& b) { t.write(b, emit); });
+  if (!run.writer_error && !run.sink_failed && t.result().ok()) {
+    writer.finish(sink.buffer());
+    run.sink_failed = !sink.flush_if_full();
+  }
   return run;
 }
 
 /// Both passes of `t` over the program `text` in `source_language` (`file` names it in
-/// diagnostics); `text` is freed after the first pass. Output and `watch` as `stream_blocks`.
+/// diagnostics); `text` is freed after the first pass. Output, `watch` and `chosen` as
+/// `stream_blocks`.
 template <text_sink Sink>
 stream_result stream_text(block_translator& t, std::string text, program::dialect source_language,
                           const std::string& file, program::dialect output_language, Sink& sink,

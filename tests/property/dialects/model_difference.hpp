@@ -24,6 +24,10 @@ struct comparison {
   double relative = 1e-12;   ///< times |value|, added to `tolerance`
   bool block_numbers = true; ///< compare N / Heidenhain block numbers
   bool locations = false;    ///< compare each block's `where` and `text`
+  /// The second model was written by a writer that frames every program (Heidenhain: BEGIN PGM
+  /// first, END PGM last): an opening first block or closing last block the first model lacks
+  /// is not a difference.
+  bool framed = false;
 };
 
 namespace detail {
@@ -121,12 +125,18 @@ inline std::string block_difference(const program::block& a, const program::bloc
 
 /// "" when `a` and `b` hold the same blocks under `c`, else which block and field differ.
 inline std::string model_difference(const program::program& a, const program::program& b, const comparison& c = {}) {
-  if (a.blocks.size() != b.blocks.size())
-    return "block count " + std::to_string(a.blocks.size()) + " vs " + std::to_string(b.blocks.size());
+  std::size_t first = 0, end = b.blocks.size();  // b's blocks to compare
+  if (c.framed) {
+    const auto& ab = a.blocks;
+    if (end > 0 && b.blocks[0].program_begin && (ab.empty() || !ab[0].program_begin)) ++first;
+    if (end > first && b.blocks[end - 1].program_end && (ab.empty() || !ab.back().program_end)) --end;
+  }
+  if (a.blocks.size() != end - first)
+    return "block count " + std::to_string(a.blocks.size()) + " vs " + std::to_string(end - first);
   for (std::size_t i = 0; i < a.blocks.size(); ++i) {
-    const std::string d = block_difference(a.blocks[i], b.blocks[i], c);
-    if (!d.empty())
-      return "block " + std::to_string(i + 1) + " ('" + a.blocks[i].text + "' vs '" + b.blocks[i].text + "'): " + d;
+    const program::block& bb = b.blocks[first + i];
+    const std::string d = block_difference(a.blocks[i], bb, c);
+    if (!d.empty()) return "block " + std::to_string(i + 1) + " ('" + a.blocks[i].text + "' vs '" + bb.text + "'): " + d;
   }
   return {};
 }

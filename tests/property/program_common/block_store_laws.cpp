@@ -70,6 +70,7 @@ block any_block(const std::string& file) {
   b.machine_coordinates = *rc::gen::arbitrary<bool>();
   b.kept_words = *rc::gen::container<std::vector<std::string>>(*rc::gen::inRange(0, 4), any_string());
   b.passthrough = *rc::gen::arbitrary<bool>();
+  b.framing = *rc::gen::arbitrary<bool>();
   if (*rc::gen::inRange(0, 2)) {  // the state words, kept as bytes
     b.state.tool_change = *rc::gen::arbitrary<bool>();
     if (*rc::gen::inRange(0, 2))

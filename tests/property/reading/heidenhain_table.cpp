@@ -74,7 +74,7 @@ TEST_CASE("heidenhain: `~` lines before a passthrough's text stay when no number
   const std::string written = heidenhain::write(r.parsed);
   INFO(written);
   CHECK(errors_of(written).empty());
-  CHECK(written.find("0 ~\n~\nBLK FORM 0.1 Z X+0 Y+0 Z-40\n") != std::string::npos);
+  CHECK(written.find("1 ~\n~\nBLK FORM 0.1 Z X+0 Y+0 Z-40\n") != std::string::npos);  // after BEGIN PGM
 }
 
 TEST_CASE("heidenhain: cycle parameters after `;comment~` stay in their cycle's block") {

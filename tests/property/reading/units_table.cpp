@@ -162,16 +162,16 @@ TEST_CASE("units: inch programs between dialects keep their inch values") {
              "G700\nG1 X1.2345 Y2 Z3 F10\n");
   // The unit Siemens states after its header is the BEGIN PGM's (program_unit).
   round_trip(id_of<siemens::dialect>(), "%_N_P_MPF\nG700\nG1 X1.2345 Y2 Z3 F10\nM30\n", id_of<heidenhain::dialect>(),
-             "0 BEGIN PGM P INCH\n1 ;G700\n2 L X+1.2345 Y+2 Z+3 F100\n3 END PGM P INCH\n");
+             "0 BEGIN PGM P INCH\n1 ;G700\n2 L X+1.2345 Y+2 Z+3 F100\n3 M30\n4 END PGM P INCH\n");
 }
 
 TEST_CASE("units: a unit Heidenhain cannot say is refused by its writer") {
-  // An inch block without BEGIN PGM … INCH before it, and a unit change after BEGIN PGM.
+  // An inch program without a header of its own is framed BEGIN PGM … INCH; a unit change
+  // after BEGIN PGM cannot be said.
   const read_result iso_inch = read(id_of<iso::dialect>(), "G20\nG1 X1. F10.\n", "t");
   REQUIRE(iso_inch.ok());
-  CHECK_THROWS_WITH(write(id_of<heidenhain::dialect>(), iso_inch.parsed),
-                    "t:1: block cannot be written in heidenhain: inch units: a TNC program says INCH in its BEGIN "
-                    "PGM line, and this program has none");
+  CHECK(write(id_of<heidenhain::dialect>(), iso_inch.parsed) ==
+        "0 BEGIN PGM PGM INCH\n1 ;G20\n2 L X+1 F100\n3 END PGM PGM INCH\n");
   const read_result switched = read(id_of<siemens::dialect>(), "%_N_P_MPF\nG710\nG1 X1 F10\nG700 X2\nM30\n", "t");
   REQUIRE(switched.ok());
   CHECK_THROWS_WITH(write(id_of<heidenhain::dialect>(), switched.parsed),

@@ -1,7 +1,10 @@
 /// @file program/heidenhain/writer.hpp
 /// Blocks written as Heidenhain conversational text: one line per block (a `TOOL CALL` or `CC`
 /// line first when another dialect's block needs one), numbered 0, 1, 2, … as the control
-/// requires; source block numbers are not written. A block without coordinates is never an `L`
+/// requires; source block numbers are not written. Every program opens with `BEGIN PGM name
+/// MM|INCH` and closes with `END PGM` of that name (`finish`), the frame the control reads a
+/// program in: another dialect's frame (`%`, `;$PATH=…`; its name from `O`, `%_N_…`, PARTNO)
+/// is never copied as text, and a source end (M2, M30, FINI) is an `M2`/`M30` before it. A block without coordinates is never an `L`
 /// (the control's L needs its end point): a feed-only block's F goes to the next move without an
 /// F, a rapid-only block's FMAX to the next move; a block left with nothing Heidenhain can say
 /// (APT `UNITS/MM`, `RAPID`, a read `L F800`) becomes a comment carrying its source text.
@@ -22,6 +25,7 @@
 #include "../block.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
+#include "../program_name.hpp"
 #include "../text.hpp"
 #include "../units.hpp"
 #include "../work_offsets.hpp"
@@ -53,6 +57,9 @@ struct write_options {
   /// The TCP switch written. Empty: `M128` / `M129`, except that a program read as Heidenhain
   /// keeps its own `FUNCTION TCPM` blocks.
   std::optional<tcp_word> tcp;
+  /// The program's name when known ahead (`program_name`: the source's, or the output file's),
+  /// for a program whose first block names none; else `PGM`.
+  std::optional<std::string> program_name;
 };
 
 /// Writes blocks as Heidenhain conversational text one at a time, numbering them from 0 and
@@ -71,9 +78,13 @@ class writer {
   void write(std::string& out, const block& b_mm) {
     const std::size_t bi = index_++;
     line_count_ = 0;
+    if (b_mm.framing) return;  // always another dialect's (`%`, `;$PATH=`): BEGIN/END PGM stand for it
+    if (closed_) return after_end(b_mm, bi);
+    const bool opens = !begin_name_ && b_mm.program_begin && !b_mm.passthrough;
+    if (!begin_name_ && !opens) open(out, options_.program_name);
     if (b_mm.passthrough) return passthrough(out, b_mm);
     if (b_mm.feed_mode == feed_unit::inverse_time) fail(b_mm, bi, "inverse-time feed (G93)");
-    if (b_mm.program_begin) {
+    if (opens) {
       begin_name_ = program_name(b_mm.program_begin);
       begin_unit(!b_mm.metric.value_or(options_.program_metric.value_or(true)));
       add("BEGIN PGM " + *begin_name_ + unit_word());
@@ -92,7 +103,7 @@ class writer {
     else if (b.tool && !same_) add("TOOL DEF " + std::to_string(*b.tool));  // selected, not changed
     if (!change && ((b.tool && same_) || b.spindle_rpm)) tool_call(b, moves, kept, bi, same_);
     if (b.tool) selected_tool_ = *b.tool;
-    const std::string m_words = m_functions(b);
+    const std::string m_words = m_functions(b) + end_word(b);
     if (b.tcp && options_.tcp) {
       // A chosen form replaces a read FUNCTION TCPM's options, which mean what M128 means.
       if (same_ && *b.tcp) std::erase_if(kept, is_tcpm_option);
@@ -114,10 +125,29 @@ class writer {
     }
     if (b.arc && b.arc->centre_mm && !arc && (b.motion || !b.axes.empty()))
       fail(b, bi, "circle centre on a block that is not an arc");
-    if (b.program_end) add("END PGM " + program_name(b.program_end) + unit_word());
     kept.insert(kept.end(), foreign.begin(), foreign.end());
     if (b.tcp) tcp_on_ = *b.tcp;
+    if (b.program_end && same_) {  // END PGM: the text ends; `finish` writes the closing line
+      closed_ = true;
+      if (line_count_ == 0 && kept.empty()) return void(end_comment_ = b.comment);
+    }
     emit(out, b, kept, dropped);
+  }
+
+  /// Appends the closing `END PGM name MM|INCH` to `out`, with BEGIN PGM's name (the control
+  /// pairs them by name) and the comment of the source's END PGM line. Nothing for a program
+  /// without a block.
+  void finish(std::string& out) {
+    if (!begin_name_) return;
+    out += std::to_string(number_++) + " END PGM " + *begin_name_ + unit_word();
+    if (end_comment_) {
+      std::string c = *end_comment_;
+      std::replace(c.begin(), c.end(), '\n', ' ');
+      std::replace(c.begin(), c.end(), '\r', ' ');
+      out += " ;" + without_continuation(c);
+    }
+    out += '\n';
+    begin_name_.reset();
   }
 
  private:
@@ -128,7 +158,9 @@ class writer {
   long long number_ = 0;   // the next block number written
   arc_plane plane_ = arc_plane::xy;
   std::optional<vec3> centre_;
-  std::optional<std::string> begin_name_;
+  std::optional<std::string> begin_name_;  // set once BEGIN PGM is written
+  std::optional<std::string> end_comment_; // the comment on the source's END PGM line
+  bool closed_ = false;                    // a Heidenhain END PGM was read: the program text ends
   std::optional<bool> inch_;  // the unit BEGIN PGM said (INCH: true)
   std::optional<long long> selected_tool_;  // the last tool number written or selected
   bool tcp_on_ = false;                     // M128 / FUNCTION TCPM in effect after the last block
@@ -141,6 +173,29 @@ class writer {
   std::size_t line_count_ = 0;
   std::string line_;                // the motion line being built
 
+  /// Opens a program whose first block names none: `BEGIN PGM` with the name known ahead (or
+  /// `PGM`) and the program's unit, a line of its own (TNC 620 User's Manual 10/2017 §4.2 p. 154:
+  /// the first block is BEGIN PGM, name and unit, the last END PGM; docs/dialects/heidenhain.md).
+  void open(std::string& out, const std::optional<std::string>& name) {
+    begin_name_ = program_name(name);
+    begin_unit(!options_.program_metric.value_or(true));
+    out += std::to_string(number_++) + " BEGIN PGM " + *begin_name_ + unit_word() + "\n";
+  }
+
+  /// A G-code or APT program end (M2, M30, FINI) as the M function that ends the program run on
+  /// a TNC (` M2`, else ` M30`); a Heidenhain END PGM is the frame's closing line instead.
+  std::string end_word(const block& b) const {
+    if (!b.program_end || same_) return {};
+    return *b.program_end == "M2" ? " M2" : " M30";
+  }
+
+  /// A block after a Heidenhain END PGM: the control reads no further, so a blank line is
+  /// dropped and anything else refused (it cannot come before the closing line unchanged).
+  void after_end(const block& b, std::size_t bi) const {
+    if (b.text.find_first_not_of(" \t\f\v\r\n") == std::string::npos && b.passthrough) return;
+    fail(b, bi, "block after END PGM (the control reads a program only up to its END PGM)");
+  }
+
   /// The program's unit, said once by BEGIN PGM: INCH makes lengths inches (one decimal more)
   /// and F 1/10 inch/min (TNC 620 User's Manual, "Feed rate F"; docs/dialects/heidenhain.md).
   void begin_unit(bool inch) {
@@ -151,13 +206,11 @@ class writer {
   std::string unit_word() const { return inch_.value_or(false) ? " INCH" : " MM"; }
 
   /// A unit word after BEGIN PGM: the same unit says nothing; another cannot be written, since a
-  /// TNC program has one unit, its BEGIN PGM's (and without one, millimetres).
+  /// TNC program has one unit, its BEGIN PGM's.
   void unit_change(const block& b, bool inch, std::size_t bi) const {
     if (inch == inch_.value_or(false)) return;
-    if (!inch_ && inch)
-      fail(b, bi, "inch units: a TNC program says INCH in its BEGIN PGM line, and this program has none");
     fail(b, bi, std::string("a change of units to ") + (inch ? "inch" : "millimetres") +
-                    " inside the program: a TNC program has one unit, its BEGIN PGM's (" + (*inch_ ? "INCH" : "MM") + ")");
+                    " inside the program: a TNC program has one unit, its BEGIN PGM's (" + (inch_.value_or(false) ? "INCH" : "MM") + ")");
   }
 
   /// `b` with its lengths and F in the program's unit (inches and 1/10 inch/min after BEGIN PGM
@@ -431,7 +484,8 @@ class writer {
   }
 };
 
-/// Writes `p` as a Heidenhain conversational program, blocks numbered from 0.
+/// Writes `p` as a Heidenhain conversational program, blocks numbered from 0, in its frame
+/// (`BEGIN PGM` first, `END PGM` last).
 /// Throws std::invalid_argument naming the block (`file:line`) when a block cannot be written.
 inline std::string write(const program& p, const write_options& options = {}) {
   write_options chosen = options;
@@ -440,9 +494,15 @@ inline std::string write(const program& p, const write_options& options = {}) {
     for (const block& b : p.blocks) unit.take(b);
     chosen.program_metric = unit.metric;
   }
+  if (!chosen.program_name) {
+    program_name name;
+    for (const block& b : p.blocks) name.take(b);
+    chosen.program_name = name.name();
+  }
   writer w(p.language, p.file, chosen);
   std::string out;
   for (const block& b : p.blocks) w.write(out, b);
+  w.finish(out);
   return out;
 }
 

@@ -132,8 +132,9 @@ class basic_reader {
     block b;
     b.where = {file_, line.number, first + 1};
     b.text = std::string(s.substr(first, end - first));
-    if (s[first] == '%') {
+    if (s[first] == '%') {  // a tape mark (FANUC B-64014EN/03 §2.5; LinuxCNC file delimiters)
       b.passthrough = true;
+      b.framing = true;
       on_block_(std::move(b));
       return;
     }

@@ -184,6 +184,13 @@ inline std::optional<std::string> program_header(std::string_view line) {
   return name;
 }
 
+/// Whether `line` is the `;$PATH=…` comment that says which directory a program is loaded
+/// into: framing, like the `%_N_…` header before it.
+inline bool path_line(std::string_view line) {
+  line = lexing::trim(line);
+  return line.size() > 7 && line.front() == ';' && lexing::upper(line.substr(1, 6)) == "$PATH=";
+}
+
 /// The words of a plain motion line, as `read_plain_motion` collects them.
 struct plain_motion {
   std::optional<long long> number;
@@ -269,6 +276,7 @@ class line_reader {
       state_.program_name = *name;
     } else if (!read_plain_motion(line.text, b, state_)) {
       b = read_words(line, std::move(b), diagnostics);
+      b.framing = path_line(line.text);
     }
     on_block(std::move(b));
   }

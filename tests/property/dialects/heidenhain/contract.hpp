@@ -3,7 +3,8 @@
 /// readings compare exactly; the writer numbers blocks 0, 1, 2, … itself, so a written program
 /// reads back with other numbers (and a passthrough line's content is its text after the number).
 /// The writer may refuse a block it names (an L without coordinates is never written as an L:
-/// its F and FMAX move to the next move), so only programs without one must round-trip.
+/// its F and FMAX move to the next move), so only programs without one must round-trip. It
+/// frames every program (BEGIN PGM first, END PGM last): a read-back may have both in addition.
 #pragma once
 
 #include <string_view>
@@ -23,7 +24,7 @@ struct contract<program::heidenhain::dialect> : usual_contract<program::heidenha
       .open = "BEGIN PGM T MM\nL X+10 Y+20 Z+30 FMAX\n",
       .etx_in_comment = "* - a\x03~\n"};
   static constexpr comparison read_exactly{.relative = 0};
-  static constexpr comparison read_back{.relative = 0, .block_numbers = false};
+  static constexpr comparison read_back{.relative = 0, .block_numbers = false, .framed = true};
   static constexpr bool numbers_from_zero = true;
 
   /// Nine decimals: more than any value read has, so the written text loses nothing.
@@ -32,12 +33,16 @@ struct contract<program::heidenhain::dialect> : usual_contract<program::heidenha
     o.linear_decimals = o.angle_decimals = o.feed_decimals = o.finest_feed_decimals = 9;
     return o;
   }
-  static constexpr comparison fuzz_read_back{.tolerance = 1e-9, .relative = 1e-15, .block_numbers = false};
+  static constexpr comparison fuzz_read_back{.tolerance = 1e-9, .relative = 1e-15, .block_numbers = false, .framed = true};
   static constexpr comparison fuzz_fixed_point = fuzz_read_back;
   static constexpr bool writes_all_it_reads = false;
+  /// Also outside: a BEGIN PGM after the first block (the frame opens before it).
   static bool round_trips(const program::program& p) {
-    for (const program::block& b : p.blocks)
+    for (std::size_t i = 0; i < p.blocks.size(); ++i) {
+      const program::block& b = p.blocks[i];
       if (b.axes.empty() && !b.arc && (b.motion || b.feed_rapid)) return false;
+      if (b.program_begin && i > 0) return false;
+    }
     return true;
   }
 };

@@ -64,8 +64,14 @@ TEST_CASE("heidenhain: the writer names the block it cannot write") {
   b.axes.x_mm = 1;
   b.metric = false;
   p.blocks.push_back(b);
-  CHECK_THROWS_WITH(heidenhain::write(p), "part.nc:12: block cannot be written in heidenhain: inch units: a TNC "
-                                          "program says INCH in its BEGIN PGM line, and this program has none");
+  // An inch program without a header of its own is framed BEGIN PGM … INCH; a later unit change
+  // cannot be said.
+  CHECK(heidenhain::write(p) == "0 BEGIN PGM PGM INCH\n1 L X+0.0394\n2 END PGM PGM INCH\n");
+  p.blocks.push_back(b);
+  p.blocks[1].metric = true;
+  CHECK_THROWS_WITH(heidenhain::write(p), "part.nc:12: block cannot be written in heidenhain: a change of units to "
+                                          "millimetres inside the program: a TNC program has one unit, its BEGIN PGM's (INCH)");
+  p.blocks.pop_back();
   p.blocks[0].metric.reset();
   p.blocks[0].feed_mode = feed_unit::inverse_time;
   CHECK_THROWS_WITH(heidenhain::write(p), "part.nc:12: block cannot be written in heidenhain: inverse-time feed (G93)");

@@ -132,7 +132,7 @@ TEST_CASE("heidenhain: the writer numbers blocks from 0 in Heidenhain style") {
       "21\n"
       "22 M5 M9\n"
       "23 M30\n"
-      "24 END PGM 100 MM\n";
+      "24 END PGM BRACKET MM\n";  // the control pairs BEGIN PGM and END PGM by name
   CHECK(heidenhain::write(r.parsed) == expected);
 }
 
@@ -180,19 +180,22 @@ TEST_CASE("heidenhain: blocks from another dialect are written, and what has no 
         "4 C X+20 Y+0 DR+ F250\n"
         "5 TOOL CALL 4 Z\n"  // TOOL CALL is the tool change: the ISO M6 is not written again
         "6 L Z+0 FMAX M91\n"
-        "7 END PGM O1234_BRACKET MM ;end\n");
+        "7 M30 ;end\n"  // ISO's end of program run, then the frame's closing line
+        "8 END PGM O1234_BRACKET MM\n");
 }
 
 TEST_CASE("heidenhain: an L without coordinates is not written; its F goes to the next move") {
   const auto r = heidenhain::read("0 L X+1 Y+2 Z+3 FMAX\n1 L F800 M3\n2 L X+4\n3 L X+5\n4 L FMAX\n5 L Z+6\n", "t.h");
   REQUIRE(r.ok());
   CHECK(heidenhain::write(r.parsed) ==
-        "0 L X+1 Y+2 Z+3 FMAX\n"
-        "1 M3\n"
-        "2 L X+4 F800\n"
-        "3 L X+5\n"
-        "4 ;L FMAX\n"
-        "5 L Z+6\n");
+        "0 BEGIN PGM PGM MM\n"
+        "1 L X+1 Y+2 Z+3 FMAX\n"
+        "2 M3\n"
+        "3 L X+4 F800\n"
+        "4 L X+5\n"
+        "5 ;L FMAX\n"
+        "6 L Z+6\n"
+        "7 END PGM PGM MM\n");
 }
 
 TEST_CASE("heidenhain: a number written only in a Q parameter counts for the program's resolution") {

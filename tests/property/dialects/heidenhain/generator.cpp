@@ -265,14 +265,7 @@ item draw_item(modal& m) {
       b.comment = c;
       return it;
     }
-    case 11: {  // BEGIN / END PGM
-      const bool begin = *rc::gen::arbitrary<bool>();
-      const std::string name = *rc::gen::element<std::string>("P1", "YL-05", "part_7", "Bracket");
-      t = draw_case(begin ? "BEGIN" : "END") + gap() + draw_case("PGM") + gap() + name + gap() + draw_case("MM");
-      (begin ? b.program_begin : b.program_end) = name;
-      b.metric = true;
-      break;
-    }
+    case 11:  // BEGIN / END PGM: only first and last (draw_frame)
     case 12: {  // FUNCTION TCPM
       if (*rc::gen::arbitrary<bool>()) {
         t = draw_case("FUNCTION") + gap() + draw_case("RESET") + gap() + draw_case("TCPM");
@@ -313,6 +306,17 @@ item draw_item(modal& m) {
   return it;
 }
 
+/// A program's `BEGIN PGM name MM` (`begin`) or `END PGM name MM` line.
+item draw_frame(bool begin, const std::string& name) {
+  item it;
+  block& b = it.expected;
+  it.text = draw_case(begin ? "BEGIN" : "END") + gap() + draw_case("PGM") + gap() + name + gap() + draw_case("MM");
+  (begin ? b.program_begin : b.program_end) = name;
+  b.metric = true;
+  add_comment(it.text, b);
+  return it;
+}
+
 /// Generated text and the program it must read as.
 struct generated {
   std::string text;
@@ -326,9 +330,12 @@ generated draw_program() {
   modal m;
   const std::string eol = *rc::gen::element<std::string>("\n", "\r\n", "\r");
   const auto n = *rc::gen::inRange(0, 30);
-  for (int k = 0; k < n; ++k) {
+  // A program opens with BEGIN PGM and closes with END PGM of the same name, or lacks either.
+  const std::string name = *rc::gen::element<std::string>("P1", "YL-05", "part_7", "Bracket");
+  const bool begins = *rc::gen::arbitrary<bool>(), ends = *rc::gen::arbitrary<bool>();
+  for (int k = begins ? -1 : 0; k < n + (ends ? 1 : 0); ++k) {
     if (*rc::gen::inRange(0, 8) == 0) g.text += *rc::gen::element<std::string>("", "  ", "\t") + eol;  // blank lines are skipped
-    item it = draw_item(m);
+    item it = k < 0 ? draw_frame(true, name) : k == n ? draw_frame(false, name) : draw_item(m);
     if (!it.expected.number) {
       switch (*rc::gen::inRange(0, 4)) {
         case 0: break;  // unnumbered, as NX writes its header
