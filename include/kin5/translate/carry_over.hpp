@@ -2,9 +2,9 @@
 /// Dialect text a translation carries over without interpreting it. A block the reader did not
 /// understand (`passthrough`) and the words it kept without interpreting them (`kept_words`:
 /// G40, G54, H1, …) mean something only in the source dialect, so in a program of another
-/// dialect they travel as a comment, never as code (`carry_over`). The one exception is plane
-/// selection: kept G17/G18/G19 are rewritten through the setup rotation, as arc planes are
-/// (`map_plane_words`), or refused when the plane has no principal image on the target.
+/// dialect they travel as a comment, never as code (`carry_over`). The working plane
+/// (`state.working_plane`, and kept G17/G18/G19) is rewritten through the setup rotation, as arc
+/// planes are (`map_plane_words`), or refused when the plane has no principal image on the target.
 /// @code
 ///   program::block o = b;
 ///   if (auto error = map_plane_words(o, target_R_source)) fail(*error);
@@ -27,6 +27,11 @@ namespace kin5::translate_detail {
 /// Maps the plane-selection words G17/G18/G19 kept in a block through the setup rotation
 /// `target_R_source`; the reason, when a plane has no principal image on the target.
 inline std::optional<std::string> map_plane_words(program::block& b, const mat3& target_R_source) {
+  if (auto& p = b.state.working_plane) {  // G17/G18/G19 read as the working plane
+    const auto mapped = principal_plane(target_R_source * plane_normal(*p));
+    if (!mapped) return "working plane " + std::string(plane_name(*p)) + " has no principal image on the target";
+    p = mapped->first;
+  }
   for (auto& w : b.kept_words) {
     std::string upper;
     for (char c : w) upper.push_back(program::to_upper(c));

@@ -55,6 +55,12 @@ class writer {
     }
     // CL data are in the part's frame: APT has no statement that selects a work offset.
     if (b.state.work_offset) fail(b, "work offset " + spelling(*b.state.work_offset) + " has no APT form");
+    // GOTO points are absolute tip positions and arcs are not written, so absolute mode, the
+    // working plane and a radius compensation cancel change nothing in CL data; incremental
+    // positioning would, and compensation on is not written yet.
+    if (b.state.distance == distance_mode::incremental) fail(b, "incremental positioning (G91) has no APT form");
+    if (b.state.radius_compensation && *b.state.radius_compensation != cutter_side::off)
+      fail(b, "cutter radius compensation (G41/G42) is not written yet");
     lines_.clear();
     foreign_note_ = false;
     if (b.metric) inch_ = !*b.metric;

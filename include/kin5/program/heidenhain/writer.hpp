@@ -93,6 +93,7 @@ class writer {
     }
     const block b = in_program_unit(b_mm);
     if (b.state.work_offset) preset_selection(b, *b.state.work_offset, bi);
+    state_words(b, bi);
     const bool dropped = carry_feed(b);
     const bool moves = is_move(b);
     std::vector<std::string> kept = b.kept_words;  // written verbatim (same dialect) or into the comment
@@ -319,6 +320,19 @@ class writer {
     if (b.feed && !moves) l += " F" + format_number(*b.feed, rate(*b.feed));
     add(l);
     if (tcp_on_ && !b.tcp) add(function_tcpm() ? tcpm : "M128");
+  }
+
+  /// Absolute positions and R0 are what the writer's text always says (no `I` prefix, no RL/RR:
+  /// TNC 640 User's Manual, "Absolute/incremental coordinates", "Tool radius compensation"), so
+  /// G90 and G40 need no word; incremental positioning and radius compensation on are refused.
+  /// The working plane needs no word either: `TOOL CALL … Z` makes it XY, every circle names its
+  /// own plane in its CC line, and a radius arc (CR) outside XY is refused where it stands
+  /// (`arc_keyword`), so a G18 or G19 leaves nothing the text would read otherwise.
+  void state_words(const block& b, std::size_t bi) const {
+    const auto& s = b.state;
+    if (s.distance == distance_mode::incremental) fail(b, bi, "incremental positioning (G91)");
+    if (s.radius_compensation && *s.radius_compensation != cutter_side::off)
+      fail(b, bi, "cutter radius compensation (G41/G42) is not written yet");
   }
 
   /// A preset table row selected by Cycle 247 (TNC 640 User's Manual for Cycle Programming,

@@ -6,8 +6,10 @@
 /// per-minute feeds are converted to mm: units.hpp). Errors: G91 (except in `G91 G28`/`G30`
 /// homing blocks), G95, a unit change after motion, active frames (G68, G68.2, G51, G52 with
 /// offsets, G92), canned cycles, G41/G42, G10, macro and subprogram calls (G65, G66, M98, M97,
-/// M99), and any word not understood, moving or not: each at its word, naming it. Harmless modal
-/// words (G40, G90, G05.1 Q1, H1, D1, …) are kept as written; `%` lines pass through. Work offsets
+/// M99), a move while G91 is in effect, and any word not understood, moving or not: each at its
+/// word, naming it. G17/G18/G19, G90 (G91 of a homing block) and G40 are read into `state`
+/// (working plane, distance mode, radius compensation off). Harmless modal words (G05.1 Q1, H1,
+/// D1, …) are kept as written; `%` lines pass through. Work offsets
 /// G54 … G59 and G54.1 P n are read into `state.work_offset` (work_offsets.hpp). A parameter
 /// assigned a number (`#1 = 5000`, a line of its own, passed through) stands for that number in
 /// the words that use it (`F#1`, `X-#1`: ../parameters.hpp); an expression, or a variable the
@@ -362,10 +364,12 @@ class basic_reader {
     if (g >= 0 && g <= 30 && g % 10 == 0) return;  // motion, done in `classify`
     if (g == 170 || g == 180 || g == 190) {
       state_.plane = g == 170 ? arc_plane::xy : g == 180 ? arc_plane::zx : arc_plane::yz;
-      keep();
+      b.state.working_plane = state_.plane;
     } else if (g == 900) {
       state_.incremental = false;
-      keep();
+      b.state.distance = distance_mode::absolute;
+    } else if (g == 400) {
+      b.state.radius_compensation = cutter_side::off;
     } else if (g >= 540 && g <= 590 && g % 10 == 0) {
       select_offset(b, w, {work_offset_family::g54, g / 10 - 53}, l);
     } else if (g == 541) {
@@ -375,7 +379,7 @@ class basic_reader {
     } else if (g == 910) {
       if (!l.homing) return error(w.column, "incremental positioning (G91) is not supported");
       state_.incremental = true, state_.incremental_line = line_;
-      keep();
+      b.state.distance = distance_mode::incremental;
     } else if (g == 930 || g == 940) {
       state_.inverse_time = g == 930;
       b.feed_mode = g == 930 ? feed_unit::inverse_time : feed_unit::per_minute;
@@ -430,10 +434,9 @@ class basic_reader {
       if (b.axes.y_mm) state_.last[1].reset();
       if (b.axes.z_mm) state_.last[2].reset();
     } else if (state_.incremental && b.moves()) {
-      // Posts write `G91 G28 Z0` to home and mean the following moves as absolute; say so once.
-      result_.add_warning({b.where, "G91 of line " + std::to_string(state_.incremental_line) +
-                                               " not cancelled by G90: axis words read as absolute"});
-      state_.incremental = false;
+      // `G91 G28 Z0` homes; G91 stays in effect, so a move after it without G90 is incremental.
+      error(b.where.column, "incremental positioning (G91 of line " + std::to_string(state_.incremental_line) +
+                                ", not cancelled by G90) is not supported");
     }
   }
 

@@ -18,12 +18,13 @@ inline int g_code(double v) {
   return (std::abs(v * 10 - t) < 1e-6 && t >= 0 && t < 100000) ? static_cast<int>(t) : -1;
 }
 
-/// G codes kept as written: they change no geometry (times ten).
+/// G codes kept as written: they change no geometry (times ten). G17–G19, G40 and G90 are
+/// read into the block's state instead.
 inline bool kept_g(int g) {
   switch (g) {
-    case 40: case 50: case 51: case 80: case 131: case 150: case 170: case 180: case 190: case 400: case 430:
+    case 40: case 50: case 51: case 80: case 131: case 150: case 430:
     case 500: case 501:
-    case 610: case 611: case 640: case 690: case 800: case 900: case 980: case 990:
+    case 610: case 611: case 640: case 690: case 800: case 980: case 990:
       return true;
     default:
       return false;

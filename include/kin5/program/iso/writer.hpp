@@ -1,6 +1,7 @@
 /// @file program/iso/writer.hpp
 /// Blocks written as ISO / Fanuc G code, one block per line, words in the order
-/// `N  kept G  G0-G3  G43.4/G43.5/G49  G93/G94  G21/G20  X Y Z A B C  I J K  R  F S T M  kept  (comment)`.
+/// `N  G90/G91 G17-G19 G40  kept G  G0-G3  G43.4/G43.5/G49  G93/G94  G21/G20  X Y Z A B C  I J K  R  F S T M
+/// kept  (comment)`.
 /// After a block that says inch (`metric == false`, written G20) lengths and per-minute feeds are
 /// written in inches with one decimal more. Every coordinate, angle, I J K, R and F has a decimal
 /// point (`X10.`, `write_options::decimal_point`). A block ISO cannot express (a tool-axis vector outside
@@ -163,6 +164,7 @@ class writer {
       if (!name.empty() && name.find_first_not_of("0123456789") == std::string::npos) words_.push_back("O" + name);
       else note("program " + name);
     }
+    state_words(b);
     bool machine_word = false;
     for (const std::string& k : b.kept_words) {
       if (!same_) note(k);
@@ -175,6 +177,22 @@ class writer {
       plane_ = b.arc->plane;
       words_.push_back(plane_ == arc_plane::xy ? "G17" : plane_ == arc_plane::zx ? "G18" : "G19");
     }
+  }
+
+  /// G90 / G91, G17 / G18 / G19, G40: the distance mode, working plane and radius compensation
+  /// cancel the block says (Fanuc 30i/31i/32i-B Operator's Manual, "Absolute and incremental
+  /// programming (G90, G91)", "Plane selection", "Cutter compensation"). G41/G42 are not written:
+  /// no reader gives them yet.
+  void state_words(const block& b) {
+    const auto& s = b.state;
+    if (s.distance) words_.push_back(*s.distance == distance_mode::absolute ? "G90" : "G91");
+    if (s.working_plane) {
+      plane_ = *s.working_plane;
+      words_.push_back(plane_ == arc_plane::xy ? "G17" : plane_ == arc_plane::zx ? "G18" : "G19");
+    }
+    if (s.radius_compensation && *s.radius_compensation != cutter_side::off)
+      fail(b, "cutter radius compensation (G41/G42) is not written yet");
+    if (s.radius_compensation) words_.push_back("G40");
   }
 
   /// G54 … G59 (work offsets 1 … 6), G54.1 P n (extended offset n): ISO's only forms (Fanuc

@@ -42,9 +42,10 @@ inline bool is_kept_keyword(std::string_view w) {
   return std::find(words.begin(), words.end(), w) != words.end();
 }
 
-/// G codes kept as written: they change no geometry.
+/// G codes kept as written: they change no geometry. (G17–G19, G40 and G90 are read into the
+/// block's state.)
 inline bool is_kept_g(long long g) {
-  return g == 9 || g == 40 || g == 60 || g == 64 || (g >= 641 && g <= 645) || (g >= 601 && g <= 603) || g == 90;
+  return g == 9 || g == 60 || g == 64 || (g >= 641 && g <= 645) || (g >= 601 && g <= 603);
 }
 
 /// Frame words that are harmless alone (they reset the programmable frame) and errors with axes.

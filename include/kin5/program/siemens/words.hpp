@@ -279,7 +279,11 @@ class word_reader {
       out_.motion_word = canonical;
     } else if (g >= 17 && g <= 19) {
       out_.plane = g == 17 ? arc_plane::xy : g == 18 ? arc_plane::zx : arc_plane::yz;
-      b.kept_words.push_back(canonical);
+      b.state.working_plane = out_.plane;
+    } else if (g == 90) {
+      b.state.distance = distance_mode::absolute;
+    } else if (g == 40) {
+      b.state.radius_compensation = cutter_side::off;
     } else if ((g >= 54 && g <= 57) || g == 500 || (g >= 505 && g <= 599)) {
       // Settable zero offsets: G54 … G57 are the first four, G505 … G599 the others, G500 none
       const work_offset w = g <= 57 ? work_offset{work_offset_family::g54, static_cast<int>(g) - 53}

@@ -1,6 +1,6 @@
 /// @file program/siemens/writer.hpp
 /// Blocks written as Siemens 840D text, one line per block, in the order
-/// `N  TRAORI/TRAFOOF  G710/G700  G93/G94  kept words  SUPA  G17-G19  G0-G3  X Y Z A B C  A3= B3= C3=
+/// `N  TRAORI/TRAFOOF  G710/G700  G93/G94  G90/G91 G17-G19 G40  kept words  G54…  SUPA  G17-G19  G0-G3  X Y Z A B C  A3= B3= C3=
 /// I J K / CR=  F  S  T  D H T="name"  M  ;comment`. Blocks read from another dialect keep their
 /// passthrough text and kept words in a comment. Units are written `G710` (mm) or `G700` (inch),
 /// the forms that also set the unit of F: after `G700` lengths and per-minute feeds are written in
@@ -175,6 +175,7 @@ class writer {
     }
     if (b.feed_mode) inverse_time_ = *b.feed_mode == feed_unit::inverse_time;
     if (b.feed_mode) detail::append_word(line, inverse_time_ ? "G93" : "G94");
+    state_words(line, b, file);
     if (same_) {
       for (const auto& w : b.kept_words) {
         if (detail::is_late_kept(w)) continue;
@@ -184,6 +185,23 @@ class writer {
     }
     if (b.state.work_offset) work_offset_word(line, b, file, *b.state.work_offset);
     if (b.machine_coordinates) detail::append_word(line, "SUPA");
+  }
+
+  /// G90 / G91, G17 / G18 / G19, G40: the distance mode, working plane and radius compensation
+  /// cancel the block says (SINUMERIK 840D sl Programming Manual Fundamentals, "Absolute
+  /// dimensions (G90, AC)", "Incremental dimensions (G91, IC)", "Selection of the working plane
+  /// (G17/G18/G19)", "Tool radius compensation (G40, G41, G42, OFFN)"). G41/G42 are not written:
+  /// no reader gives them yet.
+  void state_words(std::string& line, const block& b, const std::string& file) {
+    const auto& s = b.state;
+    if (s.distance) detail::append_word(line, *s.distance == distance_mode::absolute ? "G90" : "G91");
+    if (s.working_plane) {
+      written_.plane = *s.working_plane;
+      detail::append_word(line, detail::plane_word(*s.working_plane));
+    }
+    if (s.radius_compensation && *s.radius_compensation != cutter_side::off)
+      fail(b, file, "cutter radius compensation (G41/G42) is not written yet");
+    if (s.radius_compensation) detail::append_word(line, "G40");
   }
 
   /// G54 … G57 (settable zero offsets 1 … 4), G505 … G599, G500 (none): the 840D's only forms

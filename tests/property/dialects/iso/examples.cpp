@@ -26,7 +26,7 @@ TEST_CASE("iso: a Fanuc post style program with G43.4, homing and arcs") {
       "T05 M06\r\n"
       "G05.1 Q1\r\n"
       "G54\r\n"
-      "G00 B-30. C45. S8000 M03\r\n"
+      "G90 G00 B-30. C45. S8000 M03\r\n"
       "G43.4 G90 X10. Y-5.5 H05\r\n"
       "Z3.\r\n"
       "G01 Z-1. F250.\r\n"
@@ -40,16 +40,18 @@ TEST_CASE("iso: a Fanuc post style program with G43.4, homing and arcs") {
       "%\r\n";
   const read_result r = iso::read(text, "b.nc");
   REQUIRE(r.errors.empty());
-  REQUIRE(r.warnings.size() == 1);
-  CHECK(r.warnings[0].to_string("warning") == "b.nc:9:1: warning: G91 of line 4 not cancelled by G90: axis words read as absolute");
+  CHECK(r.warnings.empty());
   const auto& b = r.parsed.blocks;
   REQUIRE(b.size() == 20);
   CHECK((b[0].passthrough && b[0].text == "%"));
   CHECK((b[1].program_begin == "0042" && b[1].comment == "BRACKET"));
   CHECK(b[2].number == 10);
-  CHECK(b[2].kept_words == strings{"G40", "G17", "G90", "G80"});
+  CHECK(b[2].kept_words == strings{"G80"});
+  CHECK((b[2].state.radius_compensation == cutter_side::off && b[2].state.working_plane == arc_plane::xy &&
+         b[2].state.distance == distance_mode::absolute));
   CHECK((b[2].tcp == false && b[2].metric == true));
-  CHECK((b[3].machine_coordinates && b[3].kept_words == strings{"G91", "G28"} && b[3].axes.z_mm == 0.0));
+  CHECK((b[3].machine_coordinates && b[3].kept_words == strings{"G28"} && b[3].axes.z_mm == 0.0));
+  CHECK(b[3].state.distance == distance_mode::incremental);
   CHECK(b[3].m_codes == std::vector<int>{5});
   CHECK((b[4].machine_coordinates && b[4].axes.b_deg == 0.0));
   CHECK((b[5].tool == 5 && b[5].m_codes == std::vector<int>{6}));
@@ -57,7 +59,8 @@ TEST_CASE("iso: a Fanuc post style program with G43.4, homing and arcs") {
   CHECK((b[7].kept_words.empty() && b[7].state.work_offset == work_offset{work_offset_family::g54, 1}));
   CHECK((b[8].motion == motion_kind::rapid && b[8].axes.b_deg == -30.0 && b[8].axes.c_deg == 45.0));
   CHECK((b[8].spindle_rpm == 8000.0 && b[8].m_codes == std::vector<int>{3}));
-  CHECK((b[9].tcp == true && b[9].kept_words == strings{"G90", "H05"} && b[9].axes.x_mm == 10.0));
+  CHECK(b[8].state.distance == distance_mode::absolute);
+  CHECK((b[9].tcp == true && b[9].kept_words == strings{"H05"} && b[9].axes.x_mm == 10.0));
   CHECK((!b[10].motion && b[10].axes.z_mm == 3.0));
   CHECK((b[11].motion == motion_kind::linear && b[11].feed == 250.0));
   // Arc from (20, -5.5, -1): centre 5 mm further in X.

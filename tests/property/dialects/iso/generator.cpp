@@ -32,8 +32,24 @@ struct state {
   std::optional<motion_kind> motion;
   arc_plane plane = arc_plane::xy;
   bool vector_tcp = false;
+  bool incremental = false;  // G91 of a homing block: the next block says G90
   std::optional<double> last[3];
 };
+
+/// The state words G17/G18/G19, G40 and G90 read into (`block::state`); false for another word.
+bool read_as_state(const std::string& g, block& b, state& st) {
+  if (g == "G17" || g == "G18" || g == "G19") {
+    st.plane = g == "G17" ? arc_plane::xy : g == "G18" ? arc_plane::zx : arc_plane::yz;
+    b.state.working_plane = st.plane;
+  } else if (g == "G40") {
+    b.state.radius_compensation = cutter_side::off;
+  } else if (g == "G90") {
+    b.state.distance = distance_mode::absolute;
+  } else {
+    return false;
+  }
+  return true;
+}
 
 /// A whole code (`G1`, `M03`): random case and leading zero.
 std::string spell_code(char letter, int v) {
@@ -126,6 +142,7 @@ void draw_motion(item& it, state& st) {
 item draw_item(state& st) {
   item it;
   block& b = it.expected;
+  const bool cancel_incremental = st.incremental;  // after `G91 G28 Z0`: G90 before any move
   if (*rc::gen::inRange(0, 5) == 0) {
     const auto n = *rc::gen::inRange<long long>(0, 100000);
     b.number = n;
@@ -148,13 +165,10 @@ item draw_item(state& st) {
           continue;
         }
         std::string w = draw_case(g);
-        b.kept_words.push_back(w);
+        if (!read_as_state(g, b, st)) b.kept_words.push_back(w);
         it.words.push_back(w);
-        if (std::string(g) == "G17") st.plane = arc_plane::xy;
-        if (std::string(g) == "G18") st.plane = arc_plane::zx;
-        if (std::string(g) == "G19") st.plane = arc_plane::yz;
       }
-      if (it.words.empty()) it.words.push_back("G90"), b.kept_words.push_back("G90");
+      if (it.words.empty()) it.words.push_back("G90"), b.state.distance = distance_mode::absolute;
       if (*rc::gen::arbitrary<bool>()) draw_motion(it, st);
       break;
     }
@@ -223,9 +237,10 @@ item draw_item(state& st) {
       const int kind = *rc::gen::inRange(0, 4);
       const char* g = kind == 0 ? "G53" : kind == 2 ? "G30" : "G28";
       b.machine_coordinates = true;
-      if (kind == 3) {  // the homing idiom `G91 G28 Z0`: accepted (later moves warn, read absolute)
-        b.kept_words.push_back(draw_case("G91"));
-        it.words.push_back(b.kept_words.back());
+      if (kind == 3) {  // the homing idiom `G91 G28 Z0`: accepted (a later move needs G90 first)
+        b.state.distance = distance_mode::incremental;
+        it.words.push_back(draw_case("G91"));
+        st.incremental = true;
       }
       b.kept_words.push_back(draw_case(g));
       it.words.push_back(b.kept_words.back());
@@ -250,12 +265,17 @@ item draw_item(state& st) {
       return it;
     }
   }
+  if (cancel_incremental && b.state.distance != distance_mode::incremental) {
+    it.words.push_back(draw_case("G90"));
+    b.state.distance = distance_mode::absolute;
+    st.incremental = false;
+  }
   if (*rc::gen::inRange(0, 4) == 0) {
     const std::string c = draw_words();
     b.comment = c;
     it.words.push_back(*rc::gen::arbitrary<bool>() ? "(" + draw_blanks() + c + draw_blanks() + ")" : ";" + c);
   }
-  if (it.words.empty()) it.words.push_back("G90"), b.kept_words.push_back("G90");
+  if (it.words.empty()) it.words.push_back("G90"), b.state.distance = distance_mode::absolute;
   return it;
 }
 

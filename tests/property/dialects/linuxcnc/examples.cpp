@@ -41,7 +41,9 @@ TEST_CASE("linuxcnc: a trt program: M428/M429, G43 without H, G59.1, G93, G4 P i
   const auto b = kin5::test::read_example<linuxcnc::dialect>(text, "l.ngc", 19);
   CHECK(b[0].passthrough);
   CHECK(b[1].comment == "MSG, load the fixture");
-  CHECK(b[2].kept_words == strings{"g91.1", "g17", "g90", "g40", "g64", "p0.01"});
+  CHECK(b[2].kept_words == strings{"g91.1", "g64", "p0.01"});
+  CHECK((b[2].state.working_plane == arc_plane::xy && b[2].state.distance == distance_mode::absolute &&
+         b[2].state.radius_compensation == cutter_side::off));
   CHECK(b[2].metric == true);
   CHECK(b[3].state.work_offset == work_offset{work_offset_family::g54, 7});
   CHECK((b[4].tool == 7 && b[4].m_codes == std::vector<int>{6}));

@@ -109,19 +109,25 @@ void draw_modes(item& it, state& st) {
   block& b = it.expected;
   for (const char* g : {"G17", "G18", "G19", "G40", "G90", "G80", "G61", "G98"}) {
     if (*rc::gen::inRange(0, 4) != 0) continue;
-    b.kept_words.push_back(draw_case(g));
-    it.words.push_back(b.kept_words.back());
     const std::string name = g;
-    if (name == "G17") st.plane = arc_plane::xy;
-    if (name == "G18") st.plane = arc_plane::zx;
-    if (name == "G19") st.plane = arc_plane::yz;
+    it.words.push_back(draw_case(g));
+    if (name == "G17" || name == "G18" || name == "G19") {  // read into the block's state
+      st.plane = name == "G17" ? arc_plane::xy : name == "G18" ? arc_plane::zx : arc_plane::yz;
+      b.state.working_plane = st.plane;
+    } else if (name == "G40") {
+      b.state.radius_compensation = cutter_side::off;
+    } else if (name == "G90") {
+      b.state.distance = distance_mode::absolute;
+    } else {
+      b.kept_words.push_back(it.words.back());
+    }
   }
   if (*rc::gen::arbitrary<bool>()) {
     const int n = *rc::gen::inRange(1, 10);
     b.state.work_offset = work_offset{work_offset_family::g54, n};
     it.words.push_back(draw_case(spelling(*b.state.work_offset)));
   }
-  if (it.words.empty()) it.words.push_back("G90"), b.kept_words.push_back("G90");
+  if (it.words.empty()) it.words.push_back("G90"), b.state.distance = distance_mode::absolute;
 }
 
 /// Tracking on (only with the loaded tool's length in effect: G43 in the line if need be) or off.

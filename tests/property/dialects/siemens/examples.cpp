@@ -64,7 +64,8 @@ TEST_CASE("siemens: a whole program with header, set-up, TRAORI and end", "[siem
   REQUIRE(bl.size() == 10);
   CHECK(bl[0].program_begin == "SAJO");
   CHECK(bl[1].comment == "$PATH=/_N_MPF_DIR");
-  CHECK(bl[2].kept_words == std::vector<std::string>{"G17", "G90", "SOFT", "FFWON", "G642"});
+  CHECK(bl[2].kept_words == std::vector<std::string>{"SOFT", "FFWON", "G642"});
+  CHECK((bl[2].state.working_plane == arc_plane::xy && bl[2].state.distance == distance_mode::absolute));
   CHECK(bl[2].metric == true);
   CHECK(bl[2].feed_mode == feed_unit::per_minute);
   CHECK(bl[3].kept_words == std::vector<std::string>{"T=\"MILL_6\"", "D1"});
@@ -85,7 +86,7 @@ TEST_CASE("siemens: a whole program with header, set-up, TRAORI and end", "[siem
   CHECK(siemens::write(r.parsed) ==
         "%_N_SAJO_MPF\n"
         "; $PATH=/_N_MPF_DIR\n"
-        "N10 G710 G94 G17 G90 SOFT FFWON G642\n"
+        "N10 G710 G94 G90 G17 SOFT FFWON G642\n"
         "N20 T=\"MILL_6\" D1 M6\n"
         "N30 S4000 M3\n"
         "N40 TRAORI\n"
@@ -115,7 +116,8 @@ TEST_CASE("siemens: spelling quirks", "[siemens][quirks]") {
   const block& c = r.parsed.blocks[2];
   CHECK(c.where == source_location{"q.mpf", 3, 3});
   CHECK(c.text == "  N30\tg01 d02 g017 x 1\tM 03");
-  CHECK(c.kept_words == std::vector<std::string>{"G17", "D2"});
+  CHECK(c.kept_words == std::vector<std::string>{"D2"});
+  CHECK(c.state.working_plane == arc_plane::xy);
   CHECK(c.number == 30);
   CHECK(c.axes.x_mm == 1);
   CHECK(c.m_codes == std::vector<int>{3});

@@ -98,12 +98,19 @@ void add_kept(line& l, state& s, const std::string& word) {
     l.words.push_back(spell_code('G', std::stoll(word.substr(1))));
     return;
   }
-  l.expected.kept_words.push_back(word);
   const bool numbered = word[0] == 'G' || word[0] == 'D' || word[0] == 'H';
   l.words.push_back(numbered ? spell_code(word[0], std::stoll(word.substr(1))) : draw_case(word));
-  if (word == "G17") s.plane = arc_plane::xy;
-  if (word == "G18") s.plane = arc_plane::zx;
-  if (word == "G19") s.plane = arc_plane::yz;
+  state_words& st = l.expected.state;  // G17 … G19, G40, G90 are read into the block's state
+  if (word == "G17" || word == "G18" || word == "G19") {
+    s.plane = word == "G17" ? arc_plane::xy : word == "G18" ? arc_plane::zx : arc_plane::yz;
+    st.working_plane = s.plane;
+  } else if (word == "G40") {
+    st.radius_compensation = cutter_side::off;
+  } else if (word == "G90") {
+    st.distance = distance_mode::absolute;
+  } else {
+    l.expected.kept_words.push_back(word);
+  }
 }
 
 void maybe_number(line& l) {

@@ -1,0 +1,201 @@
+// Working plane (G17/G18/G19), distance mode (G90/G91) and radius compensation cancel (G40)
+// between every ordered pair of dialects. The table, written here independently of the code
+// (docs/dialects/*.md): ISO, LinuxCNC and Siemens read and write the three as codes; Heidenhain
+// and APT write no word for them, because their text is absolute and uncompensated anyway and
+// every circle carries its own plane (a Heidenhain CC line; APT writes no circles from NC), so
+// the plane is compared there through the arcs only, not as a state; both refuse G91.
+//
+// 1. writers and readers: a generated program of state words and moves, written by the target's
+//    writer and read back by its reader, is in the same effective state at every move (absolute,
+//    XY and no compensation where nothing was said); or the writer refuses G91, exactly where the
+//    table says it cannot say it.
+// 2. translation: the program, as text of its own dialect, translated (`translate`, or `reverse`
+//    into APT): the output read back is in the same effective state at every move.
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <rapidcheck.h>
+
+#include <kin5/kin5.hpp>
+
+using namespace kin5;
+using namespace kin5::program;
+using program_text = kin5::program::program;
+
+namespace {
+
+const std::vector<dialect> every_dialect = {id_of<iso::dialect>(), id_of<linuxcnc::dialect>(), id_of<siemens::dialect>(),
+                                            id_of<heidenhain::dialect>(), id_of<apt::dialect>()};
+/// The dialects whose readers give these state words.
+const std::vector<dialect> reading_dialects = {id_of<iso::dialect>(), id_of<linuxcnc::dialect>(), id_of<siemens::dialect>()};
+
+/// Whether dialect `d` writes the working plane as a word (the documented table).
+bool writes_plane(dialect d) { return d != id_of<heidenhain::dialect>() && d != id_of<apt::dialect>(); }
+/// Whether dialect `d` can say incremental positioning.
+bool writes_incremental(dialect d) { return d != id_of<heidenhain::dialect>() && d != id_of<apt::dialect>(); }
+
+/// The effective state at a move: plane (when compared), distance mode, radius compensation.
+using effective = std::tuple<std::optional<arc_plane>, distance_mode, cutter_side>;
+
+/// The state in effect at each move of `blocks`; the plane only when `with_plane`.
+std::vector<effective> trace_of(const std::vector<block>& blocks, bool with_plane) {
+  std::vector<effective> t;
+  modal_state m;
+  for (const block& b : blocks) {
+    m.apply(b);
+    if (!is_motion(b)) continue;
+    t.emplace_back(with_plane ? std::optional<arc_plane>(m.working_plane.value_or(arc_plane::xy)) : std::nullopt,
+                   m.distance.value_or(distance_mode::absolute), m.radius_compensation.value_or(cutter_side::off));
+  }
+  return t;
+}
+
+/// Blocks of state words and moves as the reader of `from` gives them; under tool-tip tracking
+/// with the rotary words of a B/C machine when `rotary` (for the translation), else X Y Z moves.
+std::vector<block> draw_program(dialect from, bool rotary) {
+  std::vector<block> out;
+  if (rotary) {  // a tool change, then tracking on with the tool's length
+    block change;
+    change.tool = 1;
+    change.m_codes = {6};
+    out.push_back(change);
+    block on;
+    on.tcp = true;
+    if (from == id_of<linuxcnc::dialect>()) on.state.length_compensation = true;  // G43 M428
+    out.push_back(on);
+  }
+  const int n = *rc::gen::inRange(1, 12);
+  double x = 0;
+  for (int k = 0; k < n; ++k) {
+    block b;
+    if (*rc::gen::inRange(0, 3) == 0) {
+      if (*rc::gen::inRange(0, 2)) b.state.working_plane = *rc::gen::element(arc_plane::xy, arc_plane::zx, arc_plane::yz);
+      if (*rc::gen::inRange(0, 2)) b.state.distance = distance_mode::absolute;
+      if (*rc::gen::inRange(0, 2) || b.state.empty()) b.state.radius_compensation = cutter_side::off;
+    } else {
+      b.motion = motion_kind::linear;
+      b.axes.x_mm = x += 1, b.axes.y_mm = 2.5, b.axes.z_mm = 10;
+      if (rotary) b.axes.b_deg = 10, b.axes.c_deg = 20;
+      b.feed = 500;
+    }
+    out.push_back(b);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("modal words: every ordered pair of dialects writes the plane, G90 and G40 or says them by its text") {
+  for (const dialect from : reading_dialects)
+    for (const dialect to : every_dialect) {
+      const std::string name = std::string(kin5::program::name(from)) + " -> " + std::string(kin5::program::name(to));
+      const bool ok = rc::check(name, [from, to] {
+        program_text p;
+        p.language = from;
+        p.file = "gen";
+        p.blocks = draw_program(from, false);
+        // G91 between moves, cancelled before the next: only where the target cannot say it
+        // (the readers of the others refuse a G91 outside a homing block).
+        const bool incremental = !writes_incremental(to) && *rc::gen::inRange(0, 4) == 0;
+        if (incremental) {
+          block g91;
+          g91.state.distance = distance_mode::incremental;
+          p.blocks.insert(p.blocks.begin() + *rc::gen::inRange<std::size_t>(0, p.blocks.size() + 1), g91);
+        }
+        std::string text;
+        try {
+          text = write(to, p);
+        } catch (const std::invalid_argument& e) {
+          RC_ASSERT(incremental);
+          RC_ASSERT(std::string(e.what()).find("incremental positioning (G91)") != std::string::npos);
+          return;
+        }
+        RC_ASSERT(!incremental);
+        const read_result back = read(to, text, "back");
+        RC_ASSERT(back.ok());
+        RC_ASSERT(trace_of(back.parsed.blocks, writes_plane(to)) == trace_of(p.blocks, writes_plane(to)));
+      });
+      CHECK(ok);
+    }
+}
+
+TEST_CASE("modal words: translation keeps the plane, G90 and G40 in every ordered pair of dialects") {
+  using M = machines::dmu_80p;  // to itself: the setup is the identity, planes map to themselves
+  for (const dialect from : reading_dialects)
+    for (const dialect to : every_dialect) {
+      const std::string name = std::string(kin5::program::name(from)) + " -> " + std::string(kin5::program::name(to));
+      const bool ok = rc::check(name, [from, to] {
+        program_text p;
+        p.language = from;
+        p.file = "m";
+        p.blocks = draw_program(from, true);
+        const std::string text = write(from, p);
+        std::unique_ptr<block_translator> t;
+        if (to == id_of<apt::dialect>()) {
+          t = make_reverse<M>(from, "m", report_detail::exceptions_only, {});
+        } else {
+          translate_options options;
+          options.output_dialect = to;
+          t = make_translator<M, M>(from, "m", options, report_detail::exceptions_only);
+        }
+        string_sink out;
+        const auto run = stream_text(*t, text, from, "m", to, out);
+        RC_ASSERT(run.input.ok());
+        RC_ASSERT(run.ok(*t));
+        const read_result back = read(to, out.text, "back");
+        RC_ASSERT(back.ok());
+        RC_ASSERT(trace_of(back.parsed.blocks, writes_plane(to)) == trace_of(p.blocks, writes_plane(to)));
+      });
+      CHECK(ok);
+    }
+}
+
+TEST_CASE("modal words: each reader's spellings, and G91 left in effect refused at the move") {
+  struct row {
+    dialect d;
+    const char* text;
+    std::optional<arc_plane> plane;
+    std::optional<distance_mode> distance;
+    std::optional<cutter_side> radius;
+    const char* error;  // the first error, or empty
+  };
+  const auto iso = id_of<iso::dialect>(), lc = id_of<linuxcnc::dialect>(), sie = id_of<siemens::dialect>();
+  const std::vector<row> rows = {
+      {iso, "G90 G17 G40\n", arc_plane::xy, distance_mode::absolute, cutter_side::off, ""},
+      {iso, "g18\n", arc_plane::zx, std::nullopt, std::nullopt, ""},
+      {iso, "G19 G18\n", arc_plane::zx, std::nullopt, std::nullopt, ""},
+      {iso, "G91 G28 Z0.\nG90\nG0 X1.\n", std::nullopt, distance_mode::absolute, std::nullopt, ""},
+      {iso, "G91 G28 Z0.\nG0 X1.\n", std::nullopt, std::nullopt, std::nullopt,
+       "t:2:1: error: incremental positioning (G91 of line 1, not cancelled by G90) is not supported"},
+      {iso, "G91 G0 X1.\n", std::nullopt, std::nullopt, std::nullopt, "t:1:1: error: incremental positioning (G91) is not supported"},
+      {lc, "G19 G90 G40\n", arc_plane::yz, distance_mode::absolute, cutter_side::off, ""},
+      {lc, "G91 G28 Z0\nG1 X1 F100\n", std::nullopt, std::nullopt, std::nullopt,
+       "t:2:1: error: incremental positioning (G91 of line 1, not cancelled by G90) is not supported"},
+      {sie, "N10 G17 G90 G40\n", arc_plane::xy, distance_mode::absolute, cutter_side::off, ""},
+      {sie, "N10 G018\n", arc_plane::zx, std::nullopt, std::nullopt, ""},
+      {sie, "N10 G91 X1\n", std::nullopt, std::nullopt, std::nullopt, "t:1:5: error: incremental positioning (G91) is not supported"},
+  };
+  for (const row& r : rows) {
+    INFO(r.text);
+    const read_result got = read(r.d, r.text, "t");
+    if (*r.error) {
+      REQUIRE_FALSE(got.errors.empty());
+      CHECK(got.errors[0].to_string() == r.error);
+      continue;
+    }
+    CHECK(got.errors.empty());
+    modal_state m;
+    for (const block& b : got.parsed.blocks) {
+      m.apply(b);
+      for (const std::string& w : b.kept_words)  // never kept as text: a comment elsewhere would lose them
+        for (const char* g : {"G17", "G18", "G19", "G40", "G90", "G91"}) CHECK(w != g);
+    }
+    CHECK(m.working_plane == r.plane);
+    CHECK(m.distance == r.distance);
+    CHECK(m.radius_compensation == r.radius);
+  }
+}
