@@ -49,9 +49,17 @@ inline std::optional<std::string> map_plane_words(program::block& b, const mat3&
 
 /// Makes `b` a block of dialect `to`: text kin5 did not interpret (`passthrough`) and words it
 /// kept without interpreting (`kept_words`) mean something only in the source dialect `from`, so
-/// they travel as a comment instead of being written as code.
+/// they travel as a comment instead of being written as code. A CL data statement that is not
+/// passed through is read whole into the model (the APT reader refuses the rest), and the
+/// statements it keeps (`MULTAX`) say how CL records are laid out, nothing an NC program has:
+/// neither its text nor its kept words travel.
 inline void carry_over(program::block& b, program::dialect from, program::dialect to) {
   if (from == to) return;
+  if (!b.passthrough && program::capabilities_of(from).cl_data) {
+    b.text.clear();
+    b.kept_words.clear();
+    return;
+  }
   std::string note;
   if (b.passthrough) {
     note = b.text;  // the whole line, its own comment included

@@ -162,3 +162,33 @@ static_assert([] {
 }());
 static_assert(!kin5::parse_feed_policy("") && !kin5::parse_feed_policy("fast") && !kin5::parse_feed_policy("TCP") &&
               !kin5::parse_feed_policy("block_time") && !kin5::parse_feed_policy("tcp "));
+
+TEST_CASE("post: an understood APT statement is said in the NC dialect or not at all (never as its text)") {
+  // Every statement here is read into the model; only the $$ and PPRINT text is a comment.
+  const std::string cl =
+      "PARTNO/TEST\nUNITS/MM\nMULTAX/ON\nLOADTL/3\nSELECT/TOOL,4\nSPINDL/RPM,8000,CLW\nCOOLNT/FLOOD\n"
+      "FEDRAT/MMPM,500\nRAPID\nGOTO/10,0,5,0,0,1\nPPRINT/CHECK\nGOTO/0,10,5,0,0,1\n$$ note\nFINI\n";
+  const program::dialect apt = program::id_of<program::apt::dialect>();
+  for (const std::string_view name : {"iso", "siemens", "heidenhain", "linuxcnc"}) {
+    CAPTURE(name);
+    const program::dialect d = *program::parse_dialect(name);
+    const auto t = make_post<machines::ac_trunnion>(apt, d, "t.cls");
+    string_sink out;
+    const auto run = stream_text(*t, cl, apt, "t.cls", d, out);  // as the tool runs it
+    const std::string& text = out.text;
+    CAPTURE(text);
+    REQUIRE(run.ok(*t));
+    CHECK(run.input.warnings.empty());
+    CHECK(t->result().warnings.empty());
+    CHECK(t->result().passed_through == 0);
+    for (const char* statement : {"UNITS", "MULTAX", "LOADTL", "SELECT", "SPINDL", "COOLNT", "FEDRAT", "RAPID", "GOTO"})
+      CHECK(text.find(statement) == std::string::npos);
+    CHECK(text.find("CHECK") != std::string::npos);
+    CHECK(text.find("note") != std::string::npos);
+    // the selection: T4 alone after the change to T3 (ISO, Siemens, LinuxCNC), TOOL DEF 4 (Heidenhain)
+    CHECK(text.find(name == "heidenhain" ? " TOOL DEF 4\n" : "\nT4\n") != std::string::npos);
+    // no line without content (a bare block number or an empty line)
+    CHECK(text.find("\n\n") == std::string::npos);
+    for (std::size_t k = 0; k < 20; ++k) CHECK(text.find("\n" + std::to_string(k) + "\n") == std::string::npos);
+  }
+}

@@ -3,10 +3,11 @@
 /// `GOTO/x,y,z[,i,j,k]` (tool tip, tool-axis vector), `RAPID` (the next GOTO is rapid),
 /// `FEDRAT/[MMPM,|IPM,|INVERS,]f`, `SPINDL/[RPM,]n[,CLW|CCLW]`, `SPINDL/ON|OFF|CLW|CCLW`,
 /// `LOADTL/n` and `LOAD/TOOL,n` (a tool change: the tool and M6, as ISO's `T n M6`),
+/// `SELECT/TOOL,n` (the tool alone, as ISO's `T n`), `MULTAX[/ON|OFF]` (a kept word),
 /// `COOLNT/ON|FLOOD|MIST|OFF`, `STOP`, `OPSTOP`, `UNITS/MM|INCHES` (also `UNIT/`), `PARTNO name`,
 /// `FINI`, `PPRINT/text` and `$$ text` comments. After `UNITS/INCHES` GOTO points and unit-less
 /// feeds are inches, converted to mm (units.hpp); `IPM` feeds always are. Statements that only
-/// describe (vocabulary.hpp: `MULTAX`, `CUTTER`, `SELECT/TOOL`, …) and an identity `CSYS`/`MSYS`
+/// describe (vocabulary.hpp: `CUTTER`, `TLDATA`, …) and an identity `CSYS`/`MSYS`
 /// pass through; every other statement is refused at its major word, with the reason (`CYCLE`,
 /// `INSERT`, `TLAXIS`, `CUTCOM`, unknown words, …), as are per-revolution feeds, `CIRCLE`, and GOTO
 /// with other than 3 or 6 values.
@@ -133,6 +134,10 @@ class statement_reader {
       load_tool(b, 0);
     } else if (m == "LOAD" && !args_.empty() && lexing::upper(args_[0].text) == "TOOL") {
       load_tool(b, 1);
+    } else if (m == "SELECT" && !args_.empty() && lexing::upper(args_[0].text) == "TOOL") {
+      load_tool(b, 1, false);
+    } else if (m == "MULTAX") {
+      multax(b, word);
     } else if (m == "COOLNT") {
       if (word == "ON" || word == "FLOOD") b.m_codes.push_back(8);
       else if (word == "MIST") b.m_codes.push_back(7);
@@ -251,16 +256,26 @@ class statement_reader {
     if (direction) b.m_codes.push_back(direction);
   }
 
-  /// `LOADTL/n` (`at` = 0) or `LOAD/TOOL,n` (`at` = 1): a tool change, the tool and M6.
-  void load_tool(block& b, std::size_t at) {
+  /// `MULTAX`, `MULTAX/ON`, `MULTAX/OFF`: whether GOTOs carry a tool axis, which their value
+  /// count already says; kept (`kept_words`) so that APT is written back with it.
+  void multax(block& b, const std::string& word) {
+    if (!word.empty() && word != "ON" && word != "OFF")
+      return error(c_.major_at, "MULTAX/" + word + " is not supported (only MULTAX, MULTAX/ON and MULTAX/OFF are read)",
+                   "MULTAX");
+    b.kept_words.push_back(word.empty() ? "MULTAX" : "MULTAX/" + word);
+  }
+
+  /// `LOADTL/n` (`at` = 0) or `LOAD/TOOL,n` (`at` = 1): a tool change, the tool and M6;
+  /// `SELECT/TOOL,n` (`change` false): the tool made ready, as ISO's `T n` alone.
+  void load_tool(block& b, std::size_t at, bool change = true) {
     double t = 0;
-    const std::string name = at == 0 ? "LOADTL" : "LOAD/TOOL";
+    const std::string name = !change ? "SELECT/TOOL" : at == 0 ? "LOADTL" : "LOAD/TOOL";
     if (!c_.slash || args_.size() != at + 1) return error(c_.major_at, name + " needs one tool number", c_.major);
     if (!number(args_[at], t)) return;
     if (t < 0 || t != static_cast<double>(static_cast<long long>(t)))
       return error(args_[at].offset, "tool number must be a whole number");
     b.tool = static_cast<long long>(t);
-    b.m_codes.push_back(6);
+    if (change) b.m_codes.push_back(6);
   }
 };
 

@@ -22,15 +22,12 @@ namespace kin5::program::apt::detail {
 /// these cannot write back (`unwritable_rate`).
 inline constexpr int finest_rate_decimals = 6;
 
-/// Whether statement `major`/`tail` only describes the program (tool, post, display, data
-/// format) and changes no motion: `MULTAX` (the GOTOs' value count says whether a tool axis
-/// follows), `CUTTER` and `TLDATA` (the tool's shape; CL points are already tool-tip points),
-/// `TPRINT`, `MACHIN`, `CLPRNT`, `PAINT`, `SELECT/TOOL` (a tool made ready; `LOADTL` changes
-/// it), NX's `TOOL PATH/…` header and `END-OF-PATH`.
+/// Whether statement `major`/`tail` only describes the program (tool, post, display) and
+/// changes no motion: `CUTTER` and `TLDATA` (the tool's shape; CL points are already tool-tip
+/// points), `TPRINT`, `MACHIN`, `CLPRNT`, `PAINT`, NX's `TOOL PATH/…` header and `END-OF-PATH`.
+/// (`MULTAX` and `SELECT/TOOL` are read: reader.hpp.)
 inline bool described(std::string_view major, std::string_view tail) {
   const std::string rest = lexing::upper(tail);
-  if (major == "MULTAX") return rest.empty() || rest == "ON" || rest == "OFF";
-  if (major == "SELECT") return rest.rfind("TOOL", 0) == 0;
   if (major == "TOOL") return rest.rfind("PATH", 0) == 0;
   if (major == "END") return rest == "-OF-PATH";
   return major == "CUTTER" || major == "TLDATA" || major == "TPRINT" || major == "MACHIN" || major == "CLPRNT" ||
@@ -60,6 +57,7 @@ inline std::string refusal(std::string_view major, std::string_view tail) {
   if (m == "ORIGIN" || m == "TRANS" || m == "TRACUT" || m == "COPY" || m == "INDEX" || m == "TRNTYP")
     return named + ": a transformation of the points that follow is not supported";
   if (m == "LOAD") return named + ": only LOAD/TOOL,n (a tool change) is read";
+  if (m == "SELECT") return named + ": only SELECT/TOOL,n (a tool made ready) is read";
   return "APT statement " + m +
          " is not supported: only statements known not to change the motion are passed on";
 }

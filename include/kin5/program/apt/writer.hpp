@@ -108,8 +108,9 @@ class writer {
     return s;
   }
 
-  /// PARTNO, UNITS/MM, LOADTL.
+  /// PARTNO, APT's own kept statements (MULTAX), UNITS/MM, LOADTL.
   void setup(const block& b) {
+    if (same_) lines_.insert(lines_.end(), b.kept_words.begin(), b.kept_words.end());
     if (b.program_begin) {
       const std::string& name = one_line(b, *b.program_begin);
       lines_.push_back(name.empty() ? "PARTNO" : name.front() == '/' ? "PARTNO/" + name : "PARTNO " + name);
@@ -156,7 +157,7 @@ class writer {
     } else if (b.feed_mode) {
       foreign_note_ = true;
     }
-    if (b.tcp || !b.kept_words.empty()) foreign_note_ = true;
+    if (b.tcp || (!b.kept_words.empty() && !same_)) foreign_note_ = true;
   }
 
   /// RAPID and GOTO/x,y,z[,i,j,k].

@@ -487,6 +487,7 @@ class writer {
       std::replace(comment.begin(), comment.end(), '\r', ' ');
       has_comment = true;
     }
+    if (line_count_ == 0 && !has_comment && !same_) return;  // nothing to say, no source text (APT MULTAX)
     if (line_count_ == 0) add("");
     for (std::size_t k = 0; k < line_count_; ++k) {
       char digits[24];

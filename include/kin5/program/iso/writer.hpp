@@ -112,6 +112,7 @@ class writer {
     if (!notes_.empty()) words_.push_back(detail::as_comment(notes_));
     if (b.comment) words_.push_back(detail::as_comment(*b.comment));
     if (words_.empty() && !same_ && !b.text.empty()) words_.push_back(detail::as_comment(b.text));
+    if (words_.empty() && !same_) return;  // nothing to say and no source text (APT MULTAX): no empty line
     std::string line;
     for (const std::string& w : words_) line += (line.empty() ? "" : " ") + w;
     out += line + '\n';

@@ -147,6 +147,7 @@ class writer {
     if (own.empty()) return line;
     std::string words;
     for (const std::string& w : own) words += (words.empty() ? "" : " ") + w;
+    if (line.empty()) return words + "\n";  // the ISO writer had nothing to say
     std::size_t at = 0;
     if (!line.empty() && line[0] == 'N') {
       at = 1;

@@ -18,17 +18,18 @@ TEST_CASE("apt: reading goes on after an error and keeps every statement") {
   CHECK(r.parsed.blocks[1].axes.x_mm == 0.0);
 }
 
-TEST_CASE("apt: LOAD/TOOL and LOADTL are a tool change; what only describes passes through") {
-  const read_result r = apt::read("LOAD/TOOL,12\nloadtl / 3\nSELECT/TOOL,6\nCUTTER/6,0,3\n", "t.cls");
+TEST_CASE("apt: LOAD/TOOL and LOADTL are a tool change, SELECT/TOOL a selection; what only describes passes through") {
+  const read_result r = apt::read("LOAD/TOOL,12\nloadtl / 3\nSELECT/TOOL,6\nCUTTER/6,0,3\nmultax/ on\n", "t.cls");
   REQUIRE(r.ok());
   const auto& b = r.parsed.blocks;
-  REQUIRE(b.size() == 4);
+  REQUIRE(b.size() == 5);
   CHECK((b[0].tool == 12 && b[0].m_codes == std::vector<int>{6} && !b[0].passthrough));
   CHECK((b[1].tool == 3 && b[1].m_codes == std::vector<int>{6}));
-  CHECK((b[2].passthrough && !b[2].tool));  // a tool made ready: no change, no motion
+  CHECK((b[2].tool == 6 && b[2].m_codes.empty() && !b[2].passthrough));  // a tool made ready, as ISO's T6 alone
   CHECK(b[3].passthrough);
+  CHECK((b[4].kept_words == std::vector<std::string>{"MULTAX/ON"} && !b[4].passthrough));
   // Written back in APT the change is LOADTL; in ISO it is T n M6.
-  CHECK(apt::write(r.parsed) == "LOADTL/12\nLOADTL/3\nSELECT/TOOL,6\nCUTTER/6,0,3\n");
+  CHECK(apt::write(r.parsed) == "LOADTL/12\nLOADTL/3\nSELECT/TOOL,6\nCUTTER/6,0,3\nMULTAX/ON\n");
 }
 
 TEST_CASE("apt: the writer names the block it cannot write") {

@@ -38,7 +38,7 @@ TEST_CASE("apt: a post-processor style file") {
   CHECK((b[4].tool == 4 && b[4].m_codes == std::vector<int>{6}));
   CHECK((b[5].spindle_rpm == 8000.0 && b[5].m_codes == std::vector<int>{3}));
   CHECK(b[6].m_codes == std::vector<int>{8});
-  CHECK(b[7].passthrough);
+  CHECK((b[7].kept_words == std::vector<std::string>{"MULTAX/ON"} && !b[7].passthrough));
   CHECK((b[8].motion == motion_kind::rapid && b[8].feed_rapid && b[8].axes.empty()));
   CHECK(b[9].motion == motion_kind::rapid);
   CHECK((b[9].axes.x_mm == 10.0 && b[9].axes.y_mm == -20.5 && b[9].axes.z_mm == 50.0));

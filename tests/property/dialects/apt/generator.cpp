@@ -40,7 +40,7 @@ std::string statement(const std::string& major, const std::vector<std::string>& 
 item draw_item(bool& rapid_pending) {
   item it;
   block& b = it.expected;
-  switch (*rc::gen::inRange(0, 14)) {
+  switch (*rc::gen::inRange(0, 15)) {
     case 0:
     case 1:
     case 2: {  // GOTO, 3 or 6 values
@@ -126,10 +126,22 @@ item draw_item(bool& rapid_pending) {
       it.text = *rc::gen::arbitrary<bool>() ? "$$" + draw_blanks() + c : statement("PPRINT", {c});
       return it;  // already a comment
     }
+    case 13: {
+      if (*rc::gen::arbitrary<bool>()) {  // MULTAX, kept as the APT statement it is
+        const std::string form = *rc::gen::element<std::string>("", "ON", "OFF");
+        b.kept_words = {form.empty() ? "MULTAX" : "MULTAX/" + form};
+        it.text = form.empty() ? draw_case("MULTAX") : statement("MULTAX", {draw_case(form)});
+      } else {  // a tool made ready, not changed: a T without M6
+        const auto t = *rc::gen::inRange<long long>(0, 1000);
+        b.tool = t;
+        it.text = statement("SELECT", {draw_case("TOOL"), draw_spelling(static_cast<double>(t), 0)});
+      }
+      break;
+    }
     default: {
       b.passthrough = true;
       // Only statements that change no motion pass through (vocabulary.hpp); the rest are refused.
-      it.text = *rc::gen::element<std::string>("MULTAX/ON", "MULTAX/OFF", "MULTAX", "CUTTER/10,0.5", "SELECT/TOOL,3",
+      it.text = *rc::gen::element<std::string>("CUTTER/10,0.5",
                                                "TOOL PATH/ROUGH,TOOL,EM10", "MSYS/0,0,0,1,0,0,0,1,0",
                                                "CSYS/1,0,0,0,0,1,0,0,0,0,1,0", "TLDATA/MILL,10,0.5,75,0");
       b.text = it.text;
