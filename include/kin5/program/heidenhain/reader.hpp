@@ -32,6 +32,7 @@
 #include "../transmission.hpp"
 #include "lexer.hpp"
 #include "motion.hpp"
+#include "tcpm_options.hpp"
 
 namespace kin5::program::heidenhain::detail {
 
@@ -268,7 +269,7 @@ class block_reader : public word_checks {
     for (std::size_t t = 0; t < tokens.size(); t += 2) {
       std::string kw = tokens[t] + (t + 1 < tokens.size() ? " " + tokens[t + 1] : "");
       if (kw == "AXIS SPAT") error(at[t], "FUNCTION TCPM AXIS SPAT is not supported");
-      else if (kw != "F TCP" && kw != "AXIS POS" && kw != "PATHCTRL AXIS")
+      else if (!is_tcpm_option(kw))
         error(at[t], "FUNCTION TCPM " + kw + " is not supported (kin5 reads F TCP, AXIS POS, PATHCTRL AXIS)");
       b_.kept_words.push_back(std::move(kw));
     }

@@ -30,6 +30,7 @@
 #include "../units.hpp"
 #include "../work_offsets.hpp"
 #include "lexer.hpp"
+#include "tcpm_options.hpp"
 
 namespace kin5::program::heidenhain {
 
@@ -365,8 +366,8 @@ class writer {
 
   static constexpr const char* tcpm = "FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS";
   static constexpr const char* reset_tcpm = "FUNCTION RESET TCPM";
+  static_assert(std::string_view(tcpm).substr(14) == tcpm_options_text, "FUNCTION TCPM and its options");
   bool function_tcpm() const { return options_.tcp == tcp_word::function_tcpm; }
-  static bool is_tcpm_option(const std::string& w) { return w == "F TCP" || w == "AXIS POS" || w == "PATHCTRL AXIS"; }
 
   /// ` M3 M8 M91 M128`: the block's M functions, M91 for machine coordinates, M128/M129 for TCP
   /// (with `tcp_word::function_tcpm`, `write` puts the switch on a block of its own instead).
