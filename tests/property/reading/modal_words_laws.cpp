@@ -22,14 +22,16 @@
 
 #include <kin5/kin5.hpp>
 
+#include "dialect_pairs.hpp"
+#include "law_move.hpp"
+
 using namespace kin5;
 using namespace kin5::program;
 using program_text = kin5::program::program;
 
 namespace {
 
-const std::vector<dialect> every_dialect = {id_of<iso::dialect>(), id_of<linuxcnc::dialect>(), id_of<siemens::dialect>(),
-                                            id_of<heidenhain::dialect>(), id_of<apt::dialect>()};
+const std::vector<dialect> every_dialect = kin5::test::all_dialects();
 /// The dialects whose readers give these state words.
 const std::vector<dialect> reading_dialects = {id_of<iso::dialect>(), id_of<linuxcnc::dialect>(), id_of<siemens::dialect>()};
 
@@ -58,16 +60,7 @@ std::vector<effective> trace_of(const std::vector<block>& blocks, bool with_plan
 /// with the rotary words of a B/C machine when `rotary` (for the translation), else X Y Z moves.
 std::vector<block> draw_program(dialect from, bool rotary) {
   std::vector<block> out;
-  if (rotary) {  // a tool change, then tracking on with the tool's length
-    block change;
-    change.tool = 1;
-    change.m_codes = {6};
-    out.push_back(change);
-    block on;
-    on.tcp = true;
-    if (from == id_of<linuxcnc::dialect>()) on.state.length_compensation = true;  // G43 M428
-    out.push_back(on);
-  }
+  if (rotary) out = kin5::test::tracking_start(from);  // tool 1, tracking on with its length
   const int n = *rc::gen::inRange(1, 12);
   double x = 0;
   for (int k = 0; k < n; ++k) {
@@ -77,10 +70,7 @@ std::vector<block> draw_program(dialect from, bool rotary) {
       if (*rc::gen::inRange(0, 2)) b.state.distance = distance_mode::absolute;
       if (*rc::gen::inRange(0, 2) || b.state.empty()) b.state.radius_compensation = cutter_side::off;
     } else {
-      b.motion = motion_kind::linear;
-      b.axes.x_mm = x += 1, b.axes.y_mm = 2.5, b.axes.z_mm = 10;
-      if (rotary) b.axes.b_deg = 10, b.axes.c_deg = 20;
-      b.feed = 500;
+      b = kin5::test::law_move(x += 1, rotary);
     }
     out.push_back(b);
   }
@@ -90,68 +80,58 @@ std::vector<block> draw_program(dialect from, bool rotary) {
 }  // namespace
 
 TEST_CASE("modal words: every ordered pair of dialects writes the plane, G90 and G40 or says them by its text") {
-  for (const dialect from : reading_dialects)
-    for (const dialect to : every_dialect) {
-      const std::string name = std::string(kin5::program::name(from)) + " -> " + std::string(kin5::program::name(to));
-      const bool ok = rc::check(name, [from, to] {
-        program_text p;
-        p.language = from;
-        p.file = "gen";
-        p.blocks = draw_program(from, false);
-        // G91 between moves, cancelled before the next: only where the target cannot say it
-        // (the readers of the others refuse a G91 outside a homing block).
-        const bool incremental = !writes_incremental(to) && *rc::gen::inRange(0, 4) == 0;
-        if (incremental) {
-          block g91;
-          g91.state.distance = distance_mode::incremental;
-          p.blocks.insert(p.blocks.begin() + *rc::gen::inRange<std::size_t>(0, p.blocks.size() + 1), g91);
-        }
-        std::string text;
-        try {
-          text = write(to, p);
-        } catch (const std::invalid_argument& e) {
-          RC_ASSERT(incremental);
-          RC_ASSERT(std::string(e.what()).find("incremental positioning (G91)") != std::string::npos);
-          return;
-        }
-        RC_ASSERT(!incremental);
-        const read_result back = read(to, text, "back");
-        RC_ASSERT(back.ok());
-        RC_ASSERT(trace_of(back.parsed.blocks, writes_plane(to)) == trace_of(p.blocks, writes_plane(to)));
-      });
-      CHECK(ok);
+  kin5::test::check_each_pair(reading_dialects, every_dialect, [](dialect from, dialect to) {
+    program_text p;
+    p.language = from;
+    p.file = "gen";
+    p.blocks = draw_program(from, false);
+    // G91 between moves, cancelled before the next: only where the target cannot say it
+    // (the readers of the others refuse a G91 outside a homing block).
+    const bool incremental = !writes_incremental(to) && *rc::gen::inRange(0, 4) == 0;
+    if (incremental) {
+      block g91;
+      g91.state.distance = distance_mode::incremental;
+      p.blocks.insert(p.blocks.begin() + *rc::gen::inRange<std::size_t>(0, p.blocks.size() + 1), g91);
     }
+    std::string text;
+    try {
+      text = write(to, p);
+    } catch (const std::invalid_argument& e) {
+      RC_ASSERT(incremental);
+      RC_ASSERT(std::string(e.what()).find("incremental positioning (G91)") != std::string::npos);
+      return;
+    }
+    RC_ASSERT(!incremental);
+    const read_result back = read(to, text, "back");
+    RC_ASSERT(back.ok());
+    RC_ASSERT(trace_of(back.parsed.blocks, writes_plane(to)) == trace_of(p.blocks, writes_plane(to)));
+  });
 }
 
 TEST_CASE("modal words: translation keeps the plane, G90 and G40 in every ordered pair of dialects") {
   using M = machines::dmu_80p;  // to itself: the setup is the identity, planes map to themselves
-  for (const dialect from : reading_dialects)
-    for (const dialect to : every_dialect) {
-      const std::string name = std::string(kin5::program::name(from)) + " -> " + std::string(kin5::program::name(to));
-      const bool ok = rc::check(name, [from, to] {
-        program_text p;
-        p.language = from;
-        p.file = "m";
-        p.blocks = draw_program(from, true);
-        const std::string text = write(from, p);
-        std::unique_ptr<block_translator> t;
-        if (to == id_of<apt::dialect>()) {
-          t = make_reverse<M>(from, "m", report_detail::exceptions_only, {});
-        } else {
-          translate_options options;
-          options.output_dialect = to;
-          t = make_translator<M, M>(from, "m", options, report_detail::exceptions_only);
-        }
-        string_sink out;
-        const auto run = stream_text(*t, text, from, "m", to, out);
-        RC_ASSERT(run.input.ok());
-        RC_ASSERT(run.ok(*t));
-        const read_result back = read(to, out.text, "back");
-        RC_ASSERT(back.ok());
-        RC_ASSERT(trace_of(back.parsed.blocks, writes_plane(to)) == trace_of(p.blocks, writes_plane(to)));
-      });
-      CHECK(ok);
+  kin5::test::check_each_pair(reading_dialects, every_dialect, [](dialect from, dialect to) {
+    program_text p;
+    p.language = from;
+    p.file = "m";
+    p.blocks = draw_program(from, true);
+    const std::string text = write(from, p);
+    std::unique_ptr<block_translator> t;
+    if (to == id_of<apt::dialect>()) {
+      t = make_reverse<M>(from, "m", report_detail::exceptions_only, {});
+    } else {
+      translate_options options;
+      options.output_dialect = to;
+      t = make_translator<M, M>(from, "m", options, report_detail::exceptions_only);
     }
+    string_sink out;
+    const auto run = stream_text(*t, text, from, "m", to, out);
+    RC_ASSERT(run.input.ok());
+    RC_ASSERT(run.ok(*t));
+    const read_result back = read(to, out.text, "back");
+    RC_ASSERT(back.ok());
+    RC_ASSERT(trace_of(back.parsed.blocks, writes_plane(to)) == trace_of(p.blocks, writes_plane(to)));
+  });
 }
 
 TEST_CASE("modal words: each reader's spellings, and G91 left in effect refused at the move") {

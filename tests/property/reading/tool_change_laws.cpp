@@ -13,6 +13,9 @@
 
 #include <kin5/program/io.hpp>
 
+#include "dialect_pairs.hpp"
+#include "law_move.hpp"
+
 using namespace kin5::program;
 
 namespace {
@@ -93,9 +96,7 @@ std::vector<block> draw_program(dialect from) {
         b.tcp = *rc::gen::arbitrary<bool>();
         break;
       default:
-        b.motion = motion_kind::linear;
-        b.axes.x_mm = x += 1, b.axes.y_mm = 2.5, b.axes.z_mm = 10;
-        b.feed = 500;
+        b = kin5::test::law_move(x += 1);
     }
     out.push_back(b);
   }
@@ -105,36 +106,30 @@ std::vector<block> draw_program(dialect from) {
 }  // namespace
 
 TEST_CASE("tool changes: every ordered pair of dialects keeps the tool and tracking at every move") {
-  for (std::size_t i = 0; i < dialect_count; ++i)
-    for (std::size_t j = 0; j < dialect_count; ++j) {
-      const dialect from{i}, to{j};
-      if (from == to) continue;
-      const std::string name = std::string(kin5::program::name(from)) + " -> " + std::string(kin5::program::name(to));
-      const bool ok = rc::check(name, [from, to] {
-        program p;
-        p.language = from;
-        p.file = "gen";
-        p.blocks = draw_program(from);
-        std::string text;
-        try {
-          text = write(to, p);
-        } catch (const std::invalid_argument& e) {
-          // only a change with no tool number, or ISO tracking with no tool for its H, may be refused
-          const std::string why = e.what();
-          RC_ASSERT((why.find("tool change (M6) without a tool number") != std::string::npos ||
-                     why.find("tracking switched on before any tool change") != std::string::npos));
-          return;
-        }
-        const read_result back = read(to, text, "back");
-        RC_ASSERT(back.ok());
-        const trace want = trace_of(p.blocks), got = trace_of(back.parsed.blocks);
-        RC_ASSERT(got.moves.size() == want.moves.size());
-        for (std::size_t k = 0; k < want.moves.size(); ++k) {
-          RC_ASSERT(got.moves[k].tool == want.moves[k].tool);
-          if (capabilities_of(to).tcp_switch) RC_ASSERT(got.moves[k].tcp == want.moves[k].tcp);
-        }
-        RC_ASSERT(!got.change_under_tcp);
-      });
-      CHECK(ok);
+  using kin5::test::all_dialects;
+  kin5::test::check_each_pair(all_dialects(), all_dialects(), [](dialect from, dialect to) {
+    program p;
+    p.language = from;
+    p.file = "gen";
+    p.blocks = draw_program(from);
+    std::string text;
+    try {
+      text = write(to, p);
+    } catch (const std::invalid_argument& e) {
+      // only a change with no tool number, or ISO tracking with no tool for its H, may be refused
+      const std::string why = e.what();
+      RC_ASSERT((why.find("tool change (M6) without a tool number") != std::string::npos ||
+                 why.find("tracking switched on before any tool change") != std::string::npos));
+      return;
     }
+    const read_result back = read(to, text, "back");
+    RC_ASSERT(back.ok());
+    const trace want = trace_of(p.blocks), got = trace_of(back.parsed.blocks);
+    RC_ASSERT(got.moves.size() == want.moves.size());
+    for (std::size_t k = 0; k < want.moves.size(); ++k) {
+      RC_ASSERT(got.moves[k].tool == want.moves[k].tool);
+      if (capabilities_of(to).tcp_switch) RC_ASSERT(got.moves[k].tcp == want.moves[k].tcp);
+    }
+    RC_ASSERT(!got.change_under_tcp);
+  }, kin5::test::pairs::distinct);
 }

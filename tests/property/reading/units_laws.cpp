@@ -14,6 +14,8 @@
 
 #include <kin5/program/io.hpp>
 
+#include "dialect_pairs.hpp"
+
 using namespace kin5::program;
 
 namespace {
@@ -96,59 +98,49 @@ std::optional<program> through(dialect to, const program& p, std::string& why) {
 }  // namespace
 
 TEST_CASE("units: an inch program keeps its unit, positions and feeds between every pair of dialects") {
-  for (std::size_t i = 0; i < dialect_count; ++i)
-    for (std::size_t j = 0; j < dialect_count; ++j) {
-      const dialect from{i}, to{j};
-      const std::string name = std::string(kin5::program::name(from)) + " -> " + std::string(kin5::program::name(to));
-      const bool ok = rc::check(name, [from, to] {
-        const auto source = as_read(from, make_program(from, draw_numerals(), true));
-        RC_ASSERT(source.has_value());
-        std::string why;
-        const auto back = through(to, *source, why);  // Heidenhain too: BEGIN PGM … INCH frames any source
-        RC_ASSERT(back.has_value());
-        const auto want = moves_of(source->blocks), got = moves_of(back->blocks);
-        RC_ASSERT(got.size() == want.size());
-        for (std::size_t k = 0; k < want.size(); ++k) {
-          RC_ASSERT(want[k].inch);
-          RC_ASSERT(got[k].inch);
-          RC_ASSERT(std::abs(got[k].x - want[k].x) < 1e-6);
-          RC_ASSERT(std::abs(got[k].y - want[k].y) < 1e-6);
-          RC_ASSERT(std::abs(got[k].z - want[k].z) < 1e-6);
-          RC_ASSERT(got[k].feed.has_value());
-          RC_ASSERT(std::abs(*got[k].feed - *want[k].feed) < 1e-6);
-        }
-      });
-      CHECK(ok);
+  using kin5::test::all_dialects;
+  kin5::test::check_each_pair(all_dialects(), all_dialects(), [](dialect from, dialect to) {
+    const auto source = as_read(from, make_program(from, draw_numerals(), true));
+    RC_ASSERT(source.has_value());
+    std::string why;
+    const auto back = through(to, *source, why);  // Heidenhain too: BEGIN PGM … INCH frames any source
+    RC_ASSERT(back.has_value());
+    const auto want = moves_of(source->blocks), got = moves_of(back->blocks);
+    RC_ASSERT(got.size() == want.size());
+    for (std::size_t k = 0; k < want.size(); ++k) {
+      RC_ASSERT(want[k].inch);
+      RC_ASSERT(got[k].inch);
+      RC_ASSERT(std::abs(got[k].x - want[k].x) < 1e-6);
+      RC_ASSERT(std::abs(got[k].y - want[k].y) < 1e-6);
+      RC_ASSERT(std::abs(got[k].z - want[k].z) < 1e-6);
+      RC_ASSERT(got[k].feed.has_value());
+      RC_ASSERT(std::abs(*got[k].feed - *want[k].feed) < 1e-6);
     }
+  });
 }
 
 TEST_CASE("units: an inch program and its mm twin differ by 25.4 in every target, within its resolution") {
-  for (std::size_t i = 0; i < dialect_count; ++i)
-    for (std::size_t j = 0; j < dialect_count; ++j) {
-      const dialect from{i}, to{j};
-      const std::string name = std::string(kin5::program::name(from)) + " -> " + std::string(kin5::program::name(to));
-      const bool ok = rc::check(name, [from, to] {
-        const std::vector<double> numerals = draw_numerals();
-        const auto inch = as_read(from, make_program(from, numerals, true));
-        const auto mm = as_read(from, make_program(from, numerals, false));
-        RC_ASSERT(inch.has_value() && mm.has_value());
-        std::string why;
-        const auto inch_back = through(to, *inch, why), mm_back = through(to, *mm, why);
-        RC_ASSERT(mm_back.has_value());
-        if (!inch_back) return;  // the refusal is the law above's
-        const auto a = moves_of(inch_back->blocks), b = moves_of(mm_back->blocks);
-        RC_ASSERT(a.size() == b.size());
-        // The mm twin is written to 3 decimals (its numerals have 4): half a unit of the last
-        // decimal, times 25.4; feeds likewise to their last decimal.
-        const double position = 25.4 * 0.5e-3 + 1e-9;
-        for (std::size_t k = 0; k < a.size(); ++k) {
-          RC_ASSERT(a[k].inch && !b[k].inch);
-          RC_ASSERT(std::abs(a[k].x - 25.4 * b[k].x) <= position);
-          RC_ASSERT(std::abs(a[k].y - 25.4 * b[k].y) <= position);
-          RC_ASSERT(std::abs(a[k].z - 25.4 * b[k].z) <= position);
-          RC_ASSERT(std::abs(*a[k].feed - 25.4 * *b[k].feed) <= 25.4 * 0.05 + 1e-9);
-        }
-      });
-      CHECK(ok);
+  using kin5::test::all_dialects;
+  kin5::test::check_each_pair(all_dialects(), all_dialects(), [](dialect from, dialect to) {
+    const std::vector<double> numerals = draw_numerals();
+    const auto inch = as_read(from, make_program(from, numerals, true));
+    const auto mm = as_read(from, make_program(from, numerals, false));
+    RC_ASSERT(inch.has_value() && mm.has_value());
+    std::string why;
+    const auto inch_back = through(to, *inch, why), mm_back = through(to, *mm, why);
+    RC_ASSERT(mm_back.has_value());
+    if (!inch_back) return;  // the refusal is the law above's
+    const auto a = moves_of(inch_back->blocks), b = moves_of(mm_back->blocks);
+    RC_ASSERT(a.size() == b.size());
+    // The mm twin is written to 3 decimals (its numerals have 4): half a unit of the last
+    // decimal, times 25.4; feeds likewise to their last decimal.
+    const double position = 25.4 * 0.5e-3 + 1e-9;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      RC_ASSERT(a[k].inch && !b[k].inch);
+      RC_ASSERT(std::abs(a[k].x - 25.4 * b[k].x) <= position);
+      RC_ASSERT(std::abs(a[k].y - 25.4 * b[k].y) <= position);
+      RC_ASSERT(std::abs(a[k].z - 25.4 * b[k].z) <= position);
+      RC_ASSERT(std::abs(*a[k].feed - 25.4 * *b[k].feed) <= 25.4 * 0.05 + 1e-9);
     }
+  });
 }

@@ -1,7 +1,8 @@
 // Work-offset selections between every ordered pair of dialects. The table below is the one of
 // docs/dialects/*.md, written here independently of the code: which selections each dialect's
-// reader gives and its writer writes, and which mean the same across dialects (ISO G54 … G57 and
-// Siemens G54 … G57, the control's first settable zero offsets). Everything else crosses only by
+// reader gives and its writer writes, and which mean the same across dialects (G54, G55, … in ISO,
+// LinuxCNC and Siemens, the control's first settable zero offsets, as far as the target has the
+// number: Siemens to G57, ISO to G59, LinuxCNC to G59.3). Everything else crosses only by
 // the user's mapping (`--work-offset-map`), and without one it is refused.
 //
 // 1. writers and readers: a generated program of selections and moves, written by the target's
@@ -22,6 +23,9 @@
 
 #include <kin5/kin5.hpp>
 
+#include "dialect_pairs.hpp"
+#include "law_move.hpp"
+
 using namespace kin5;
 using namespace kin5::program;
 using program_text = kin5::program::program;
@@ -29,7 +33,10 @@ using program_text = kin5::program::program;
 namespace {
 
 using family = work_offset_family;
-const std::vector<dialect> every_dialect = {id_of<siemens::dialect>(), id_of<heidenhain::dialect>(), id_of<iso::dialect>(), id_of<apt::dialect>()};
+const std::vector<dialect> every_dialect = kin5::test::all_dialects();
+/// The dialects that select work offsets (CL data select none).
+const std::vector<dialect> writing_dialects = {id_of<siemens::dialect>(), id_of<heidenhain::dialect>(), id_of<iso::dialect>(),
+                                               id_of<linuxcnc::dialect>()};
 
 /// What the reader of `d` gives and its writer writes (the documented table).
 bool selects(dialect d, const work_offset& w) {
@@ -40,6 +47,7 @@ bool selects(dialect d, const work_offset& w) {
     return (w.family == family::g54 && w.number >= 1 && w.number <= 4) ||
            (w.family == family::siemens && (w.number == 0 || (w.number >= 505 && w.number <= 599)));
   if (d == id_of<heidenhain::dialect>()) return w.family == family::preset && w.number >= 0 && w.number <= 65535;
+  if (d == id_of<linuxcnc::dialect>()) return w.family == family::g54 && w.number >= 1 && w.number <= 9;  // G54 … G59.3
   return false;
 }
 
@@ -50,7 +58,7 @@ work_offset any_selection() {
     case 1: return {family::extended, *rc::gen::inRange(1, 301)};
     case 2: return {family::siemens, *rc::gen::element(0, 505, 540, 599)};
     case 3: return {family::preset, *rc::gen::element(0, 1, 7, 65535)};
-    default: return {family::g54, *rc::gen::inRange(7, 10)};  // G59.1 … G59.3 (LinuxCNC): no dialect here
+    default: return {family::g54, *rc::gen::inRange(7, 10)};  // G59.1 … G59.3: LinuxCNC's alone
   }
 }
 
@@ -67,6 +75,7 @@ work_offset selection_of(dialect d) {
       default: return {family::g54, *rc::gen::inRange(1, 5)};
     }
   }
+  if (d == id_of<linuxcnc::dialect>()) return {family::g54, *rc::gen::inRange(1, 10)};
   return {family::preset, *rc::gen::inRange(0, 65536)};
 }
 
@@ -74,15 +83,7 @@ work_offset selection_of(dialect d) {
 /// rotary words of a B/C machine when `rotary` (for the translation), else plain X Y Z moves.
 std::vector<block> draw_program(dialect from, bool rotary) {
   std::vector<block> out;
-  if (rotary) {  // a tool change, then tracking on (ISO's G43.4 takes the tool's H)
-    block change;
-    change.tool = 1;
-    change.m_codes = {6};
-    out.push_back(change);
-    block on;
-    on.tcp = true;
-    out.push_back(on);
-  }
+  if (rotary) out = kin5::test::tracking_start(from);  // tool 1, tracking on with its length
   const int n = *rc::gen::inRange(1, 12);
   double x = 0;
   for (int k = 0; k < n; ++k) {
@@ -90,10 +91,7 @@ std::vector<block> draw_program(dialect from, bool rotary) {
     if (*rc::gen::inRange(0, 3) == 0) {
       b.state.work_offset = selection_of(from);
     } else {
-      b.motion = motion_kind::linear;
-      b.axes.x_mm = x += 1, b.axes.y_mm = 2.5, b.axes.z_mm = 10;
-      if (rotary) b.axes.b_deg = 10, b.axes.c_deg = 20;
-      b.feed = 500;
+      b = kin5::test::law_move(x += 1, rotary);
     }
     out.push_back(b);
   }
@@ -111,10 +109,15 @@ std::vector<std::optional<work_offset>> trace_of(const std::vector<block>& block
   return t;
 }
 
-/// The same selection in `to` without a mapping: ISO and Siemens G54 … G57, or the same dialect.
+/// Whether `d` names its first settable zero offsets G54, G55, … (ISO, LinuxCNC, Siemens).
+bool g_code_offsets(dialect d) {
+  return d == id_of<iso::dialect>() || d == id_of<siemens::dialect>() || d == id_of<linuxcnc::dialect>();
+}
+
+/// The same selection in `to` without a mapping: the same dialect, or G54 … in two G-code
+/// dialects where the target has that one (Siemens G54 … G57, ISO G54 … G59, LinuxCNC … G59.3).
 bool same_meaning(const work_offset& w, dialect from, dialect to) {
-  const bool g_code = (from == id_of<iso::dialect>() || from == id_of<siemens::dialect>()) && (to == id_of<iso::dialect>() || to == id_of<siemens::dialect>());
-  return from == to || (g_code && w.family == family::g54 && w.number <= 4);
+  return from == to || (g_code_offsets(from) && g_code_offsets(to) && w.family == family::g54 && selects(to, w));
 }
 
 }  // namespace
@@ -128,104 +131,93 @@ TEST_CASE("work offsets: the table of selections is each dialect's capability") 
 }
 
 TEST_CASE("work offsets: every ordered pair of dialects writes a selection it has and refuses one it lacks") {
-  for (const dialect from : every_dialect)
-    for (const dialect to : every_dialect) {
-      if (from == id_of<apt::dialect>()) continue;  // CL data select no work offset
-      const std::string name = std::string(kin5::program::name(from)) + " -> " + std::string(kin5::program::name(to));
-      const bool ok = rc::check(name, [from, to] {
-        program_text p;
-        p.language = from;
-        p.file = "gen";
-        p.blocks = draw_program(from, false);
-        bool writable = true;
-        for (const block& b : p.blocks)
-          if (b.state.work_offset && !selects(to, *b.state.work_offset)) writable = false;
-        std::string text;
-        try {
-          text = write(to, p);
-        } catch (const std::invalid_argument& e) {
-          RC_ASSERT(!writable);
-          RC_ASSERT(std::string(e.what()).find("work offset") != std::string::npos);
-          return;
-        }
-        RC_ASSERT(writable);
-        const read_result back = read(to, text, "back");
-        RC_ASSERT(back.ok());
-        RC_ASSERT(trace_of(back.parsed.blocks) == trace_of(p.blocks));
-      });
-      CHECK(ok);
+  kin5::test::check_each_pair(writing_dialects, every_dialect, [](dialect from, dialect to) {
+    program_text p;
+    p.language = from;
+    p.file = "gen";
+    p.blocks = draw_program(from, false);
+    bool writable = true;
+    for (const block& b : p.blocks)
+      if (b.state.work_offset && !selects(to, *b.state.work_offset)) writable = false;
+    std::string text;
+    try {
+      text = write(to, p);
+    } catch (const std::invalid_argument& e) {
+      RC_ASSERT(!writable);
+      RC_ASSERT(std::string(e.what()).find("work offset") != std::string::npos);
+      return;
     }
+    RC_ASSERT(writable);
+    const read_result back = read(to, text, "back");
+    RC_ASSERT(back.ok());
+    RC_ASSERT(trace_of(back.parsed.blocks) == trace_of(p.blocks));
+  });
 }
 
 TEST_CASE("work offsets: translation writes the same selection, the mapped one, or refuses at the selection") {
   using M = machines::dmu_80p;
-  for (const dialect from : {id_of<siemens::dialect>(), id_of<heidenhain::dialect>(), id_of<iso::dialect>()})
-    for (const dialect to : every_dialect) {
-      const std::string name = std::string(kin5::program::name(from)) + " -> " + std::string(kin5::program::name(to));
-      const bool ok = rc::check(name, [from, to] {
-        program_text p;
-        p.language = from;
-        p.file = "w";
-        p.blocks = draw_program(from, true);
-        const std::string text = write(from, p);
-        // A mapping of some of the program's selections: to one of the target's, to one it
-        // lacks, or dropped.
-        std::map<std::pair<int, int>, std::optional<work_offset>> chosen;
-        common_options common;
-        for (const block& b : p.blocks) {
-          if (!b.state.work_offset || *rc::gen::inRange(0, 2) == 0) continue;
-          const work_offset w = *b.state.work_offset;
-          if (chosen.count({static_cast<int>(w.family), w.number})) continue;
-          std::optional<work_offset> target;
-          const int kind = *rc::gen::inRange(0, 3);
-          if (kind == 0 && to != id_of<apt::dialect>()) target = selection_of(to);
-          if (kind == 1) target = any_selection();
-          chosen[{static_cast<int>(w.family), w.number}] = target;
-          const std::string entry = map_key(w) + "=" + (target ? map_key(*target) : "");
-          RC_ASSERT(common.work_offsets.add(entry));
-        }
-        // What the table and the mapping say each selection becomes; the refused ones.
-        std::vector<block> want = p.blocks;
-        std::size_t refused = 0;
-        for (block& b : want) {
-          if (!b.state.work_offset) continue;
-          const work_offset w = *b.state.work_offset;
-          const auto m = chosen.find({static_cast<int>(w.family), w.number});
-          if (m != chosen.end()) {
-            if (m->second && !selects(to, *m->second)) ++refused;
-            b.state.work_offset = m->second;
-          } else if (!same_meaning(w, from, to)) {
-            ++refused;
-          }
-        }
-        std::unique_ptr<block_translator> t;
-        if (to == id_of<apt::dialect>()) {
-          t = make_reverse<M>(from, "w", report_detail::exceptions_only, common);
-        } else {
-          translate_options options;
-          options.output_dialect = to;
-          options.common = common;
-          t = make_translator<M, M>(from, "w", options, report_detail::exceptions_only);
-        }
-        string_sink out;
-        const auto run = stream_text(*t, text, from, "w", to, out);
-        RC_ASSERT(run.input.ok());
-        if (refused) {
-          RC_ASSERT(t->result().errors.size() == refused);
-          for (const diagnostic& d : t->result().errors) {
-            RC_ASSERT(d.option.rfind("--work-offset-map ", 0) == 0);
-            RC_ASSERT(d.message.find(d.construct + ":") == 0);
-          }
-          RC_ASSERT(out.text.empty());
-          return;
-        }
-        RC_ASSERT(run.ok(*t));
-        const read_result back = read(to, out.text, "back");
-        RC_ASSERT(back.ok());
-        RC_ASSERT(trace_of(back.parsed.blocks) == trace_of(want));
-      });
-      CHECK(ok);
+  kin5::test::check_each_pair(writing_dialects, every_dialect, [](dialect from, dialect to) {
+    program_text p;
+    p.language = from;
+    p.file = "w";
+    p.blocks = draw_program(from, true);
+    const std::string text = write(from, p);
+    // A mapping of some of the program's selections: to one of the target's, to one it
+    // lacks, or dropped.
+    std::map<std::pair<int, int>, std::optional<work_offset>> chosen;
+    common_options common;
+    for (const block& b : p.blocks) {
+      if (!b.state.work_offset || *rc::gen::inRange(0, 2) == 0) continue;
+      const work_offset w = *b.state.work_offset;
+      if (chosen.count({static_cast<int>(w.family), w.number})) continue;
+      std::optional<work_offset> target;
+      const int kind = *rc::gen::inRange(0, 3);
+      if (kind == 0 && to != id_of<apt::dialect>()) target = selection_of(to);
+      if (kind == 1) target = any_selection();
+      chosen[{static_cast<int>(w.family), w.number}] = target;
+      const std::string entry = map_key(w) + "=" + (target ? map_key(*target) : "");
+      RC_ASSERT(common.work_offsets.add(entry));
     }
+    // What the table and the mapping say each selection becomes; the refused ones.
+    std::vector<block> want = p.blocks;
+    std::size_t refused = 0;
+    for (block& b : want) {
+      if (!b.state.work_offset) continue;
+      const work_offset w = *b.state.work_offset;
+      const auto m = chosen.find({static_cast<int>(w.family), w.number});
+      if (m != chosen.end()) {
+        if (m->second && !selects(to, *m->second)) ++refused;
+        b.state.work_offset = m->second;
+      } else if (!same_meaning(w, from, to)) {
+        ++refused;
+      }
+    }
+    std::unique_ptr<block_translator> t;
+    if (to == id_of<apt::dialect>()) {
+      t = make_reverse<M>(from, "w", report_detail::exceptions_only, common);
+    } else {
+      translate_options options;
+      options.output_dialect = to;
+      options.common = common;
+      t = make_translator<M, M>(from, "w", options, report_detail::exceptions_only);
+    }
+    string_sink out;
+    const auto run = stream_text(*t, text, from, "w", to, out);
+    RC_ASSERT(run.input.ok());
+    if (refused) {
+      RC_ASSERT(t->result().errors.size() == refused);
+      for (const diagnostic& d : t->result().errors) {
+        RC_ASSERT(d.option.rfind("--work-offset-map ", 0) == 0);
+        RC_ASSERT(d.message.find(d.construct + ":") == 0);
+      }
+      RC_ASSERT(out.text.empty());
+      return;
+    }
+    RC_ASSERT(run.ok(*t));
+    const read_result back = read(to, out.text, "back");
+    RC_ASSERT(back.ok());
+    RC_ASSERT(trace_of(back.parsed.blocks) == trace_of(want));
+  });
 }
 
 TEST_CASE("work offsets: each reader's spellings, and the refusals around them") {
