@@ -48,7 +48,7 @@ TEST_CASE("transmission: a byte-order mark at offset 0 is skipped by every reade
 TEST_CASE("transmission: a byte-order mark after offset 0 is an error at its place, in every reader") {
   each_dialect([](dialect d, const kin5::test::transmission_texts& t) {
     const std::string text(t.ending);
-    for (const std::string lead : {std::string("\x0c"), std::string(" "), text}) {
+    for (const std::string& lead : {std::string("\x0c"), std::string(" "), text}) {
       const read_result r = read(d, lead + "\xEF\xBB\xBF" + text, "p");
       REQUIRE(!r.ok());
       CHECK(r.errors.front().message.find("byte-order mark inside the program") != std::string::npos);
