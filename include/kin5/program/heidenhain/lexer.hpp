@@ -45,6 +45,7 @@ struct block_text {
   std::string raw;       ///< the source lines as written, joined with `\n`
   lexing::line_map lines;
   file_name file;
+  bool continued_past_end = false;  ///< its last line ends in `~` and is the file's last line
 
   source_location where(std::size_t pos) const {
     const auto [line, column] = lines.locate(pos);
@@ -105,6 +106,7 @@ inline std::size_t join_block(const std::vector<text_line>& lines, std::size_t l
     } else {
       out.content += t;
     }
+    if (continued && li + 1 >= lines.size()) out.continued_past_end = true;
     if (!continued || li + 1 >= lines.size()) break;
     out.content += ' ';
     ++li;

@@ -50,6 +50,8 @@ class block_reader : public word_checks {
     i = block_number(i);
     dispatch(i);
     cycle_call_m();
+    // Written anywhere but last, the block would take the next one into it.
+    if (t_.continued_past_end && b_.passthrough) error(t_.content.size(), "'~' continues the block past the end of the file");
     for (auto c = t_.inner_comments.rbegin(); c != t_.inner_comments.rend(); ++c)  // comments before `~`
       if (!b_.passthrough) b_.comment = *c + (b_.comment ? " " + *b_.comment : std::string());
     if (b_.comment) b_.comment->resize(end_without_continuation(*b_.comment));  // `*~;x~` is `x`, not `x ~`
