@@ -311,3 +311,56 @@ TEST_CASE("kin5 post of APT CL data to Heidenhain: no coordinate-less L, no empt
   CHECK(text.find("L FMAX") == std::string::npos);
   CHECK(heidenhain::read(text, "cl.h").ok());
 }
+
+TEST_CASE("a dwell in every dialect, as its manual spells it, and through translation") {
+  namespace iso = kin5::program::iso;
+  namespace apt = kin5::program::apt;
+  namespace linuxcnc = kin5::program::linuxcnc;
+  const auto cl = apt::read("DELAY/1.5\nDELAY/0.25 $$ wait\n", "d.cls");
+  REQUIRE(cl.ok());
+  // Each a block of its own: Fanuc G04 X (seconds with a point), LinuxCNC G4 P (seconds),
+  // Siemens G4 F (seconds), Heidenhain Cycle 9 (two blocks), APT DELAY.
+  CHECK(iso::write(cl.parsed) == "G4 X1.5\nG4 X0.25 (wait)\n");
+  CHECK(linuxcnc::write(cl.parsed) == "%\nG4 P1.5\nG4 P0.25 (wait)\n");
+  CHECK(siemens::write(cl.parsed) == "G4 F1.5\nG4 F0.25 ; wait\n");
+  CHECK(heidenhain::write(cl.parsed) ==
+        "0 BEGIN PGM PGM MM\n"
+        "1 CYCL DEF 9.0 DWELL TIME\n"
+        "2 CYCL DEF 9.1 DWELL 1.5\n"
+        "3 CYCL DEF 9.0 DWELL TIME\n"
+        "4 CYCL DEF 9.1 DWELL 0.25 ;wait\n"
+        "5 END PGM PGM MM\n");
+  CHECK(apt::write(cl.parsed) == "DELAY/1.5\nDELAY/0.25 $$ wait\n");
+  // ISO P is milliseconds; a whole second is written with its point.
+  const auto i = iso::read("N10 G04 P2000\n", "d.nc");
+  REQUIRE(i.ok());
+  CHECK(iso::write(i.parsed) == "N10 G4 X2.\n");
+  CHECK(siemens::write(i.parsed) == "N10 G4 F2\n");
+  // A Heidenhain program's own Cycle 9 is written back once, its 9.0 as it was.
+  const auto h = heidenhain::read("0 BEGIN PGM D MM\n1 CYCL DEF 9.0 DWELL TIME\n2 CYCL DEF 9.1 DWELL1.5\n3 END PGM D MM\n", "d.h");
+  REQUIRE(h.ok());
+  CHECK(heidenhain::write(h.parsed) ==
+        "0 BEGIN PGM D MM\n1 CYCL DEF 9.0 DWELL TIME\n2 CYCL DEF 9.1 DWELL 1.5\n3 END PGM D MM\n");
+  // In another dialect the 9.0 header is a comment, the 9.1 the dwell.
+  CHECK(siemens::write(h.parsed) == "%_N_D_MPF\nN0 G710\n; 1 CYCL DEF 9.0 DWELL TIME\nN2 G4 F1.5\nN3 G710 M30\n");
+
+  // Translated between the moves it stands between (SAJO 12000P to DMU 80P).
+  const auto s = siemens::read("T1 M6\nTRAORI\nG1 X-34.983 Y9.1 Z118.526 A-77.954 B3.536 F1091\nG4 F2.5\n"
+                               "X-33.824 Y9.118 Z117.545 A-77.913 B4.027 F1093\nM30\n", "d.mpf");
+  REQUIRE(s.ok());
+  const auto t = kin5::translate<sajo_12000p, dmu_80p>(s.parsed, {});
+  REQUIRE(t.ok());
+  auto from_siemens = t.output;  // written as the tool streams it: blocks read as Siemens
+  from_siemens.language = kin5::program::id_of<siemens::dialect>();
+  const std::string text = heidenhain::write(from_siemens);
+  CAPTURE(text);
+  CHECK(text.find(" F1091\n4 CYCL DEF 9.0 DWELL TIME\n5 CYCL DEF 9.1 DWELL 2.5\n6 L X+33.824") != std::string::npos);
+  // A dwell the TNC cannot take is refused at its block, before anything is written.
+  const auto long_dwell = siemens::read("T1 M6\nTRAORI\nG4 F4000\n", "long.mpf");
+  REQUIRE(long_dwell.ok());
+  const auto refused = kin5::translate<sajo_12000p, dmu_80p>(long_dwell.parsed, {});
+  REQUIRE_FALSE(refused.ok());
+  REQUIRE(refused.errors.size() == 1);
+  CHECK(refused.errors[0].to_string() ==
+        "long.mpf:3:1: error: a dwell of 4000 s is not one the heidenhain controller takes (0 to 3600 s in steps of 0.001 s)");
+}

@@ -143,6 +143,18 @@ struct block {
   /// Whether the block moves any axis.
   bool moves() const { return !axes.empty(); }
 
+  /// Whether the block is a dwell and says nothing else but its number and comment: the block
+  /// of its own every dialect's dwell takes (program/dwell.hpp).
+  bool only_dwell() const {
+    block rest = *this;
+    rest.where = {};
+    rest.text.clear();
+    rest.number.reset();
+    rest.comment.reset();
+    rest.state.dwell_s.reset();
+    return state.dwell_s && rest == block{};
+  }
+
   friend bool operator==(const block&, const block&) = default;
 };
 

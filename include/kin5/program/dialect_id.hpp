@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <string_view>
 
+#include "dwell.hpp"
 #include "resolution.hpp"
 #include "work_offsets.hpp"
 
@@ -67,7 +68,7 @@ struct capabilities {
 };
 
 /// What a dialect's controller reads, beyond its words: how finely it takes numbers, which
-/// comments its text has, and the M functions whose meaning is not the common one. Each
+/// comments its text has, the M functions whose meaning is not the common one, its dwells. Each
 /// dialect's folder cites the manual for its values (docs/dialects/<name>.md).
 struct controller {
   word_decimals usual;   ///< decimals written when the source is no finer
@@ -78,6 +79,7 @@ struct controller {
   /// S takes a whole number of revolutions per minute (Fanuc: a decimal point in S is an alarm,
   /// another control drops the fraction): a spindle speed with a fraction cannot be written.
   bool whole_spindle_speed = false;
+  dwell_input dwell{};  ///< the dwells it takes (dwell.hpp): a dwell outside them is refused
 };
 
 /// A word that a dialect's reader keeps without interpreting it (`block::kept_words`) and whose

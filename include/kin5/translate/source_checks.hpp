@@ -6,9 +6,11 @@
 ///    B and C) is an error at the word: the reader has no machine and keeps it, and the
 ///    kinematics would drop it — silently, were it not checked;
 ///  - a word the reader kept without interpreting it whose effect another dialect would lose as
-///    a comment (`check_kept_words`: an ISO `G4` dwell, Siemens `T="NAME"`, …) is an error;
+///    a comment (`check_kept_words`: an ISO `G43` without tracking, Siemens `T="NAME"`, …) is an error;
 ///  - a spindle speed with a fraction where the output controller reads S as a whole number
 ///    (`check_spindle_speed`) is an error at the word;
+///  - a dwell the output controller cannot take (`check_dwell`: too long, or finer than its
+///    step) is an error at the block;
 ///  - a rotary value outside its axis' travel by more than the angle tolerance
 ///    (`angle_tolerance.hpp`) is an error naming the travel (A−150 on `sajo-12000p`, whose A
 ///    travels over [−120°, 30°]).
@@ -200,6 +202,18 @@ inline bool check_spindle_speed(const program::block& b, const source_context& c
                                    "decimal point): " + short_number(s) + " cannot be written there",
                                word});
   }
+  return false;
+}
+
+/// Checks the dwell of block `b` against the output dialect's controller (`controller::dwell`,
+/// program/dwell.hpp): refused at the block when it cannot dwell that long or that finely (a
+/// Heidenhain Cycle 9 is 0 to 3600 s in steps of 0.001 s). False on an error, reported to
+/// `ctx.out` when given.
+inline bool check_dwell(const program::block& b, const source_context& ctx) {
+  const std::string why = program::dwell_refusal(program::controller_of(ctx.output).dwell, *b.state.dwell_s,
+                                                 "the " + std::string(program::name(ctx.output)) + " controller");
+  if (why.empty()) return true;
+  if (ctx.out) ctx.out->errors.push_back({b.where, why, "dwell"});
   return false;
 }
 

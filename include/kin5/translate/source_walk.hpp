@@ -260,7 +260,8 @@ class source_walker {
     const bool kept_ok = b.kept_words.empty() || check_kept_words(b, ctx);
     const bool offset_ok = !b.state.work_offset || check_work_offset(b, ctx);
     const bool speed_ok = !b.spindle_rpm || check_spindle_speed(b, ctx);
-    if (!kept_ok || !offset_ok || !speed_ok || (!b.m_codes.empty() && !check_m_codes(b, ctx)) ||
+    const bool dwell_ok = !b.state.dwell_s || check_dwell(b, ctx);
+    if (!kept_ok || !offset_ok || !speed_ok || !dwell_ok || (!b.m_codes.empty() && !check_m_codes(b, ctx)) ||
         (b.moves() && !source_.check(b, ctx))) {
       s.what = source_step::kind::failed;
       return s;

@@ -431,9 +431,7 @@ TEST_CASE("across dialects, a kept word whose effect a comment would lose is ref
   const dialect iso = id_of<program::iso::dialect>();
   const dialect siemens = id_of<program::siemens::dialect>();
   const std::vector<case_row> rows{
-      {iso, "G4 P1500\n", "t:1:1: error: G4: a dwell of iso is not translated into heidenhain yet (it would become a comment)"},
-      {iso, "G04 X1.5\n",  // X of a G4 is its time, not a position
-       "t:1:1: error: G04: a dwell of iso is not translated into heidenhain yet (it would become a comment)"},
+      {iso, "G4 P1500\n", ""},  // a dwell is no kept word: state.dwell_s, translated (check_dwell)
       {iso, "G43 H1\n",
        "t:1:1: error: G43: tool length compensation (G43, without tool-tip tracking) of iso is not translated into "
        "heidenhain yet (it would become a comment)"},
@@ -470,4 +468,42 @@ TEST_CASE("across dialects, a kept word whose effect a comment would lose is ref
   ctx.language = id_of<program::heidenhain::dialect>();
   ctx.output = iso;
   CHECK_FALSE(check_kept_words(h.parsed.blocks.at(0), ctx));
+}
+
+TEST_CASE("across dialects, a dwell the target controller cannot take is refused at its block") {
+  using program::id_of;
+  using translate_detail::check_dwell;
+  using translate_detail::source_context;
+  struct case_row {
+    dialect from, to;
+    std::string text, error;  // error empty: written
+  };
+  const dialect iso = id_of<program::iso::dialect>(), linuxcnc = id_of<program::linuxcnc::dialect>();
+  const dialect heidenhain = id_of<program::heidenhain::dialect>(), siemens = id_of<program::siemens::dialect>();
+  const std::vector<case_row> rows{
+      {iso, heidenhain, "G4 X3600.\n", ""},
+      {iso, heidenhain, "G4 X3600.001\n",
+       "t:1:1: error: a dwell of 3600.001 s is not one the heidenhain controller takes (0 to 3600 s in steps of 0.001 s)"},
+      {linuxcnc, iso, "G4 P0.0005\n",
+       "t:1:1: error: a dwell of 0.0005 s is not one the iso controller takes (0 to 9999.999 s in steps of 0.001 s)"},
+      {linuxcnc, heidenhain, "G4 P0.0015\n",
+       "t:1:1: error: a dwell of 0.0015 s is not one the heidenhain controller takes (0 to 3600 s in steps of 0.001 s)"},
+      {linuxcnc, siemens, "G4 P0.0015\n", ""},
+      {siemens, iso, "G4 F12000\n",
+       "t:1:1: error: a dwell of 12000 s is not one the iso controller takes (0 to 9999.999 s in steps of 0.001 s)"},
+  };
+  for (const case_row& r : rows) {
+    INFO(r.text << " into " << program::name(r.to));
+    const program::read_result read = program::read(r.from, r.text, "t");
+    REQUIRE(read.ok());
+    translation out;
+    source_context ctx;
+    ctx.language = r.from;
+    ctx.output = r.to;
+    ctx.out = &out;
+    CHECK(check_dwell(read.parsed.blocks.at(0), ctx) == r.error.empty());
+    if (r.error.empty()) continue;
+    REQUIRE(out.errors.size() == 1);
+    CHECK(out.errors[0].to_string() == r.error);
+  }
 }

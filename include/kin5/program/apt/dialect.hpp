@@ -34,7 +34,7 @@ struct dialect {
                                                   {"GOTO/", marker::place::block_start},
                                                   {"FEDRAT/", marker::place::block_start}}};
   /// CL data: no controller; the CAM system's arithmetic.
-  static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {6, 6, 6, 9}};
+  static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {6, 6, 6, 9}, .dwell = detail::dwell_steps};
   /// No machine reads CL data.
   static constexpr std::array<std::string_view, 0> default_for{};
   /// Its reader keeps no word a comment would lose.

@@ -4,8 +4,8 @@
 /// `FEDRAT/[MMPM,|IPM,|INVERS,]f`, `SPINDL/[RPM,]n[,CLW|CCLW]`, `SPINDL/ON|OFF|CLW|CCLW`,
 /// `LOADTL/n` and `LOAD/TOOL,n` (a tool change: the tool and M6, as ISO's `T n M6`),
 /// `SELECT/TOOL,n` (the tool alone, as ISO's `T n`), `MULTAX[/ON|OFF]` (a kept word),
-/// `COOLNT/ON|FLOOD|MIST|OFF`, `STOP`, `OPSTOP`, `UNITS/MM|INCHES` (also `UNIT/`), `PARTNO name`,
-/// `FINI`, `PPRINT/text` and `$$ text` comments. After `UNITS/INCHES` GOTO points and unit-less
+/// `COOLNT/ON|FLOOD|MIST|OFF`, `STOP`, `OPSTOP`, `DELAY/t` (a dwell of t seconds),
+/// `UNITS/MM|INCHES` (also `UNIT/`), `PARTNO name`, `FINI`, `PPRINT/text` and `$$ text` comments. After `UNITS/INCHES` GOTO points and unit-less
 /// feeds are inches, converted to mm (units.hpp); `IPM` feeds always are. Statements that only
 /// describe (vocabulary.hpp: `CUTTER`, `TLDATA`, …) and an identity `CSYS`/`MSYS`
 /// pass through; every other statement is refused at its major word, with the reason (`CYCLE`,
@@ -145,6 +145,8 @@ class statement_reader {
       else error(c_.major_at, "COOLNT/" + word + " is not supported (only ON, FLOOD, MIST and OFF are read)", "COOLNT");
     } else if (m == "STOP" || m == "OPSTOP") {
       if (no_values()) b.m_codes.push_back(m == "STOP" ? 0 : 1);
+    } else if (m == "DELAY" && args_.size() == 1 && !args_[0].text.empty() && !is_letter(args_[0].text.front())) {
+      delay(b);
     } else {
       other(b, word);
     }
@@ -254,6 +256,17 @@ class statement_reader {
       b.spindle_rpm = s;
     }
     if (direction) b.m_codes.push_back(direction);
+  }
+
+  /// `DELAY/t`: a dwell of t seconds (PTC Creo Parametric Help, "Supported CL Data Commands":
+  /// DELAY); `DELAY/REV,n` and other forms are refused (vocabulary.hpp).
+  void delay(block& b) {
+    double t = 0;
+    if (!c_.slash || !number(args_[0], t)) return;
+    if (t < 0) return error(args_[0].offset, "DELAY: a dwell time cannot be negative", "DELAY");
+    if (const std::string why = dwell_refusal(dwell_steps, t); !why.empty())
+      return error(args_[0].offset, "DELAY: " + why, "DELAY");
+    b.state.dwell_s = t;
   }
 
   /// `MULTAX`, `MULTAX/ON`, `MULTAX/OFF`: whether GOTOs carry a tool axis, which their value

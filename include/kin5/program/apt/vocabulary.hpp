@@ -13,6 +13,7 @@
 #include <string>
 #include <string_view>
 
+#include "../dwell.hpp"
 #include "../lexing.hpp"
 
 namespace kin5::program::apt::detail {
@@ -21,6 +22,10 @@ namespace kin5::program::apt::detail {
 /// them; one more for a feed in inches): the writer's finest, and the reader refuses a rate
 /// these cannot write back (`unwritable_rate`).
 inline constexpr int finest_rate_decimals = 6;
+
+/// The dwells `DELAY/t` writes: seconds, with any decimals a source gives, to 6 (CL data has no
+/// controller to limit them).
+inline constexpr dwell_input dwell_steps{6, 1e9};
 
 /// Whether statement `major`/`tail` only describes the program (tool, post, display) and
 /// changes no motion: `CUTTER` and `TLDATA` (the tool's shape; CL points are already tool-tip
@@ -50,7 +55,9 @@ inline std::string refusal(std::string_view major, std::string_view tail) {
   if (m == "INSERT") return "INSERT: text a post copies into the NC program as code; its effect cannot be known";
   if (m == "TLAXIS") return "TLAXIS: a tool-axis statement is not supported (it tilts the tool for the GOTOs that follow)";
   if (m == "CUTCOM") return named + ": cutter radius compensation is not supported in CL data yet";
-  if (m == "DELAY" || m == "DWELL") return m + ": a dwell is not supported in CL data yet";
+  if (m == "DELAY") return named + ": only DELAY/t, a dwell of t seconds, is read (a dwell in revolutions depends on the "
+                                   "spindle speed)";
+  if (m == "DWELL") return "DWELL: not an APT dwell kin5 reads (DELAY/t is)";
   if (m == "CSYS" || m == "MSYS")
     return m + ": a coordinate system other than the identity is not supported (the points that follow are in "
                "another frame)";

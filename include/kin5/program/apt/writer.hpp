@@ -3,7 +3,8 @@
 /// says inch (`metric == false`, written `UNITS/INCHES`) GOTO points are written in inches and
 /// per-minute feeds as `FEDRAT/IPM`, each with one decimal more. A feed under inverse time (from
 /// the block or an earlier one) is `FEDRAT/INVERS`. Axis-word rotary angles and arcs cannot be written (std::invalid_argument naming the block);
-/// anything else without an APT form becomes a `$$` comment carrying the block's text.
+/// anything else without an APT form becomes a `$$` comment carrying the block's text. A dwell is
+/// `DELAY/t`.
 #pragma once
 
 #include <cstddef>
@@ -53,6 +54,7 @@ class writer {
       if (b.comment && !same_) out += "$$ " + one_line(b, *b.comment) + '\n';
       return;
     }
+    if (b.state.dwell_s) return dwell(out, b);
     // CL data are in the part's frame: APT has no statement that selects a work offset.
     if (b.state.work_offset) fail(b, "work offset " + spelling(*b.state.work_offset) + " has no APT form");
     // GOTO points are absolute tip positions and arcs are not written, so absolute mode, the
@@ -106,6 +108,16 @@ class writer {
   static const std::string& one_line(const block& b, const std::string& s) {
     if (s.find_first_of("\r\n") != std::string::npos) fail(b, "line break in text");
     return s;
+  }
+
+  /// `DELAY/1.5 $$ comment`: a dwell, seconds (PTC Creo Parametric Help, "Supported CL Data
+  /// Commands": DELAY), a statement of its own; refused with other words.
+  static void dwell(std::string& out, const block& b) {
+    if (!b.only_dwell()) fail(b, "a dwell with other words (DELAY is a statement of its own)");
+    if (const std::string why = dwell_refusal(detail::dwell_steps, *b.state.dwell_s); !why.empty()) fail(b, why);
+    out += "DELAY/" + format_number(*b.state.dwell_s, detail::dwell_steps.decimals);
+    if (b.comment) out += " $$ " + one_line(b, *b.comment);
+    out += '\n';
   }
 
   /// PARTNO, APT's own kept statements (MULTAX), UNITS/MM, LOADTL.

@@ -36,10 +36,10 @@ struct dialect {
   static constexpr std::array<marker, 3> markers{{{"BEGIN PGM", marker::place::block_start},
                                                   {"M128", marker::place::anywhere},
                                                   {"FUNCTION TCPM", marker::place::anywhere}}};
-  /// TNC 640 User's Manual DIN/ISO 1/2015, §19.3 p. 631; M91/M92 move in machine coordinates and
-  /// a TNC has no standard M7 (docs/dialects/heidenhain.md).
+  /// TNC 640 User's Manual DIN/ISO 1/2015, §19.3 p. 631 (also Cycle 9's dwell); M91/M92 move in
+  /// machine coordinates and a TNC has no standard M7 (docs/dialects/heidenhain.md).
   static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {4, 4, 3, 7}, .m7_mist_coolant = false,
-                                    .m91_m92_machine_coordinates = true};
+                                    .m91_m92_machine_coordinates = true, .dwell = detail::dwell_steps};
   /// Catalog machines whose controller reads it (Tian 2010's DMU 80P; Liu 2010's DMU 50V).
   static constexpr std::array<std::string_view, 2> default_for{"dmu-80p", "dmu-50v"};
   /// Kept words a comment would lose: TOOL CALL's tool axis when it is not Z.

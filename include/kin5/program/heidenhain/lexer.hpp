@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../dwell.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
@@ -73,6 +74,10 @@ namespace detail {
 /// DIN/ISO 1/2015, §19.3 p. 631): the writer's finest, and the reader refuses a rate these
 /// cannot write back (`unwritable_rate`).
 inline constexpr int finest_rate_decimals = 3;
+
+/// The dwells Cycle 9 takes: 0 to 3600 s in steps of 0.001 s (TNC 640 User's Manual DIN/ISO
+/// 1/2015, §19.3 p. 631).
+inline constexpr dwell_input dwell_steps{3, 3600.0};
 
 inline bool is_axis_letter(char c) { return c == 'X' || c == 'Y' || c == 'Z' || c == 'A' || c == 'B' || c == 'C'; }
 

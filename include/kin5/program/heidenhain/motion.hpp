@@ -32,6 +32,8 @@ struct reader_state {
   std::optional<vec3> centre;
   std::optional<std::string> begin_name;
   std::optional<bool> inch;  ///< the unit of BEGIN PGM (INCH: true)
+  /// Where a `CYCL DEF 9.0 DWELL TIME` stands whose `CYCL DEF 9.1 DWELL` line is still to come.
+  std::optional<source_location> dwell_opened;
 
   /// Millimetres per unit of a length as written: 25.4 in an INCH program.
   double mm_per_length() const { return inch.value_or(false) ? mm_per_inch : 1.0; }

@@ -5,9 +5,10 @@
 /// comments, `FUNCTION TCPM`/`FUNCTION RESET TCPM`.
 /// Blocks that change nothing pass through (a comment in another dialect): `BLK FORM`,
 /// `TOOL DEF`, `PLANE RESET`, `TRANS … RESET`, Q assignments (parameters.hpp) and frame cycles
-/// whose values are the identity. `CYCL DEF 247 … Q339=n` selects preset n (`state.work_offset`).
+/// whose values are the identity. `CYCL DEF 247 … Q339=n` selects preset n (`state.work_offset`);
+/// `CYCL DEF 9.0 DWELL TIME` (passed through) then `CYCL DEF 9.1 DWELL t` is a dwell (`state.dwell_s`).
 /// Every other block is refused at its keyword, naming it: the
-/// cycles kin5 does not read (`CYCL DEF 200`, 9, 32, …), `CYCL CALL`, `M99`/`M89`,
+/// cycles kin5 does not read (`CYCL DEF 200`, 32, …), `CYCL CALL`, `M99`/`M89`,
 /// `LBL`, `CALL LBL`/`CALL PGM`, `FN` functions, `M` blocks with other words (`M140 MB MAX`),
 /// `TOOL CALL` forms it does not read, `FUNCTION TCPM` options other than `F TCP`, `AXIS POS`,
 /// `PATHCTRL AXIS`, unknown keywords; so are Q parameters that are not constants of the file,
@@ -48,7 +49,9 @@ class block_reader : public word_checks {
     b_.where = t_.where(i);
     control_bytes(i);
     i = block_number(i);
+    const std::optional<source_location> dwell_opened = state_.dwell_opened;
     dispatch(i);
+    if (dwell_opened && !dwell_closed_) dwell_unfinished(*dwell_opened);
     cycle_call_m();
     // Written anywhere but last, the block would take the next one into it.
     if (t_.continued_past_end && b_.passthrough) error(t_.content.size(), "'~' continues the block past the end of the file");
@@ -68,6 +71,7 @@ class block_reader : public word_checks {
   reader_state& state_;
   block b_;
   std::vector<std::size_t> stray_;  // bytes that start no word: errors unless the block passes through
+  bool dwell_closed_ = false;       // this block is the CYCL DEF 9.1 of the 9.0 before it
 
   /// M99 / M89 call the last cycle defined: refused (cycles are refused until kin5 reads them).
   void cycle_call_m() {
@@ -292,7 +296,9 @@ class block_reader : public word_checks {
       e = p;
     }
     if (number == "247" && part.empty()) return preset_selection(i, e);
+    if (number == "9" && part == "1") return dwell_time(i, e);
     b_.passthrough = true;
+    if (number == "9" && part == "0") return void(state_.dwell_opened = t_.where(i));
     const bool frame = number == "7" || number == "8" || number == "10" || number == "11" || number == "19" ||
                        number == "26";
     const double identity = (number == "11" || number == "26") ? 1.0 : 0.0;
@@ -332,10 +338,36 @@ class block_reader : public word_checks {
     b_.state.work_offset = work_offset{work_offset_family::preset, *row};
   }
 
+  /// A `CYCL DEF 9.0` at `at` whose next block is not its `CYCL DEF 9.1`: refused at the 9.0,
+  /// whose dwell would be lost.
+  void dwell_unfinished(const source_location& at) {
+    out_.add_error({at, "CYCL DEF 9.0 (dwell time) without its CYCL DEF 9.1 DWELL block after it"});
+    if (state_.dwell_opened == at) state_.dwell_opened.reset();
+  }
+
+  /// `CYCL DEF 9.1 DWELL 1.5` after `CYCL DEF 9.0 DWELL TIME`: Cycle 9, a dwell of 1.5 s, in effect
+  /// where it is defined (TNC 640 User's Manual for Cycle Programming, Cycle 9 DWELL TIME;
+  /// 0 to 3600 s, TNC 640 User's Manual DIN/ISO 1/2015 p. 631). The 9.0 block before it passes
+  /// through, as the cycle's header.
+  void dwell_time(std::size_t i, std::size_t p) {
+    const bool opened = state_.dwell_opened.has_value();
+    state_.dwell_opened.reset();
+    dwell_closed_ = opened;
+    if (!opened) return error(i, "CYCL DEF 9.1 without CYCL DEF 9.0 DWELL TIME in the block before it");
+    const auto dwell = scan_.keywords(p, {"DWELL"});
+    const std::size_t v = dwell ? scan_.skip_spaces(*dwell) : p;
+    const parsed_number n = read_number(std::string_view(s_).substr(v));
+    if (!dwell || n.error != number_error::none || n.length == 0 || !only_comment_after(v + n.length))
+      return error(i, "CYCL DEF 9.1: only DWELL and a time in seconds are read (CYCL DEF 9.1 DWELL 1.5)");
+    if (n.value < 0) return error(v, "CYCL DEF 9.1 DWELL: a dwell time cannot be negative");
+    if (const std::string why = dwell_refusal(dwell_steps, n.value); !why.empty())
+      return error(v, "CYCL DEF 9.1 DWELL: " + why);
+    b_.state.dwell_s = n.value;
+  }
+
   /// Why cycle `number` (not a frame cycle) is refused.
   static std::string cycle_refusal(const std::string& number) {
     const std::string head = "CYCL DEF " + (number.empty() ? std::string("without a number") : number);
-    if (number == "9") return head + " (dwell time) is not supported yet: the dwell would be lost";
     if (number == "32") return head + " (tolerance) is not supported yet: the contour tolerance would be lost";
     return head + " is not supported: fixed cycles are refused until kin5 reads them (their holes and pockets "
                   "would be lost)";
@@ -447,6 +479,8 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
       li = detail::join_block(lines, li, source);
       sink(detail::block_reader(source, state, out).read());
     }
+    if (state.dwell_opened)
+      out.add_error({*state.dwell_opened, "CYCL DEF 9.0 (dwell time) without its CYCL DEF 9.1 DWELL block after it"});
   });
 }
 

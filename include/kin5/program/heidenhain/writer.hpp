@@ -7,7 +7,8 @@
 /// is never copied as text, and a source end (M2, M30, FINI) is an `M2`/`M30` before it. A block without coordinates is never an `L`
 /// (the control's L needs its end point): a feed-only block's F goes to the next move without an
 /// F, a rapid-only block's FMAX to the next move; a block left with nothing Heidenhain can say
-/// (APT `UNITS/MM`, `RAPID`, a read `L F800`) becomes a comment carrying its source text.
+/// (APT `UNITS/MM`, `RAPID`, a read `L F800`) becomes a comment carrying its source text. A
+/// dwell is Cycle 9: `CYCL DEF 9.0 DWELL TIME`, `CYCL DEF 9.1 DWELL t`.
 /// Round trip: `read(write(p))` equals `p` except `where`, `text` and `number`, for programs whose
 /// L blocks all have coordinates.
 #pragma once
@@ -79,11 +80,14 @@ class writer {
   void write(std::string& out, const block& b_mm) {
     const std::size_t bi = index_++;
     line_count_ = 0;
+    const bool dwell_header = dwell_header_;  // the block before was a read CYCL DEF 9.0
+    dwell_header_ = false;
     if (b_mm.framing) return;  // always another dialect's (`%`, `;$PATH=`): BEGIN/END PGM stand for it
     if (closed_) return after_end(b_mm, bi);
     const bool opens = !begin_name_ && b_mm.program_begin && !b_mm.passthrough;
     if (!begin_name_ && !opens) open(out, options_.program_name);
     if (b_mm.passthrough) return passthrough(out, b_mm);
+    if (b_mm.state.dwell_s) return dwell(out, b_mm, bi, dwell_header);
     if (b_mm.feed_mode == feed_unit::inverse_time) fail(b_mm, bi, "inverse-time feed (G93)");
     if (opens) {
       begin_name_ = program_name(b_mm.program_begin);
@@ -174,6 +178,7 @@ class writer {
   std::vector<std::string> lines_;  // the block's lines, reused from block to block (see `add`)
   std::size_t line_count_ = 0;
   std::string line_;                // the motion line being built
+  bool dwell_header_ = false;       // the last block written was a read `CYCL DEF 9.0` (passed through)
 
   /// Opens a program whose first block names none: `BEGIN PGM` with the name known ahead (or
   /// `PGM`) and the program's unit, a line of its own (TNC 620 User's Manual 10/2017 §4.2 p. 154:
@@ -267,6 +272,10 @@ class writer {
       std::size_t d = k;
       while (d < body.size() && is_digit(body[d])) ++d;
       body.erase(0, d > k ? lexing::skip_blanks(body, d) : lexing::skip_blanks(body, 0));
+      std::string words;  // upper case, without blanks: is it Cycle 9's header?
+      for (char c : body.substr(0, 24))
+        if (!is_space(c)) words += to_upper(c);
+      dwell_header_ = words.rfind("CYCLDEF9.0", 0) == 0;
     } else {
       std::replace(body.begin(), body.end(), '\n', ' ');
       std::replace(body.begin(), body.end(), '\r', ' ');
@@ -334,6 +343,18 @@ class writer {
     if (s.distance == distance_mode::incremental) fail(b, bi, "incremental positioning (G91)");
     if (s.radius_compensation && *s.radius_compensation != cutter_side::off)
       fail(b, bi, "cutter radius compensation (G41/G42) is not written yet");
+  }
+
+  /// Cycle 9, a dwell: `CYCL DEF 9.0 DWELL TIME` (unless `header`: the block just written is a
+  /// Heidenhain source's own 9.0, passed through) and `CYCL DEF 9.1 DWELL 1.5`, blocks of their
+  /// own (TNC 640 User's Manual for Cycle Programming, Cycle 9 DWELL TIME); refused with other
+  /// words, or outside 0 to 3600 s in steps of 0.001 s (`detail::dwell_steps`).
+  void dwell(std::string& out, const block& b, std::size_t bi, bool header) {
+    if (!b.only_dwell()) fail(b, bi, "a dwell with other words (Cycle 9 takes blocks of its own)");
+    if (const std::string why = dwell_refusal(detail::dwell_steps, *b.state.dwell_s); !why.empty()) fail(b, bi, why);
+    if (!header) add("CYCL DEF 9.0 DWELL TIME");
+    add("CYCL DEF 9.1 DWELL " + format_number(*b.state.dwell_s, detail::dwell_steps.decimals));
+    emit(out, b, {}, false);
   }
 
   /// A preset table row selected by Cycle 247 (TNC 640 User's Manual for Cycle Programming,

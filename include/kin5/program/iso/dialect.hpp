@@ -35,15 +35,14 @@ struct dialect {
   static constexpr std::array<marker, 2> markers{{{"G43.4", marker::place::anywhere},
                                                   {"G43.5", marker::place::anywhere}}};
   /// Increment system IS-C (Mitsubishi M700V §2.1; IS-B rounds the 4th); `( … )` are comments;
-  /// S is no decimal-point address (M700V §5.3): a whole number.
+  /// S is no decimal-point address (M700V §5.3): a whole number; G4 X dwells (vocabulary.hpp).
   static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {4, 4, 3, 7}, .paren_comments = true,
-                                    .whole_spindle_speed = true};
+                                    .whole_spindle_speed = true, .dwell = detail::dwell_steps};
   /// Catalog machines whose controller reads it (CN1624613's 4-axis machine).
   static constexpr std::array<std::string_view, 1> default_for{"a-rotary-4axis"};
-  /// Kept words a comment would lose: the dwell and tool length compensation without tracking.
-  static constexpr std::array<kept_word_effect, 2> lost_as_comment{
-      {{"G4", kept_word_effect::match::code, "a dwell"},
-       {"G43", kept_word_effect::match::code, "tool length compensation (G43, without tool-tip tracking)"}}};
+  /// Kept words a comment would lose: tool length compensation without tracking.
+  static constexpr std::array<kept_word_effect, 1> lost_as_comment{
+      {{"G43", kept_word_effect::match::code, "tool length compensation (G43, without tool-tip tracking)"}}};
   using write_options = iso::write_options;
   using writer = iso::writer;
   static void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,

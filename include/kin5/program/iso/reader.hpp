@@ -8,7 +8,8 @@
 /// offsets, G92), canned cycles, G41/G42, G10, macro and subprogram calls (G65, G66, M98, M97,
 /// M99), a move while G91 is in effect, and any word not understood, moving or not: each at its
 /// word, naming it. G17/G18/G19, G90 (G91 of a homing block) and G40 are read into `state`
-/// (working plane, distance mode, radius compensation off). Harmless modal words (G05.1 Q1, H1,
+/// (working plane, distance mode, radius compensation off), `G4 X2.` / `G4 P2000` into
+/// `state.dwell_s` (seconds; a block of its own). Harmless modal words (G05.1 Q1, H1,
 /// D1, …) are kept as written; `%` lines pass through. Work offsets
 /// G54 … G59 and G54.1 P n are read into `state.work_offset` (work_offsets.hpp). A parameter
 /// assigned a number (`#1 = 5000`, a line of its own, passed through) stands for that number in
@@ -42,7 +43,8 @@ namespace kin5::program::iso::detail {
 /// What the words of one line say beyond the block's own fields.
 struct line_words {
   bool homing = false, g43_5 = false, uses_pq = false, g52_reset = false;
-  bool dwell = false;  ///< G4: its X is the dwell time (seconds), not an axis word
+  const word* dwell = nullptr;       ///< G4: its X (seconds) or P (milliseconds) is the time
+  const word* dwell_time = nullptr;  ///< that X or P
   const word* extended = nullptr;  ///< G54.1: its P is the number of the extended work offset
   const word* offset = nullptr;    ///< the work-offset word of the block
   const word* motion = nullptr;
@@ -203,8 +205,8 @@ class basic_reader {
       const int g = g_code(w.value);
       if (g == 280 || g == 300) l.homing = true;
       if (g == 435) l.g43_5 = true;
-      if (g == 40 || g == 50 || g == 51 || g == 80) l.uses_pq = true;
-      if (g == 40) l.dwell = true;
+      if (g == 50 || g == 51 || g == 80) l.uses_pq = true;
+      if (g == 40) l.dwell = &w;
       if (g == 541 && !l.extended) l.extended = &w;  // its P may come first
       if (g == 520) g52 = true;
       if (g >= 0 && g <= 30 && g % 10 == 0) {
@@ -232,6 +234,7 @@ class basic_reader {
       b.motion = g == 0 ? motion_kind::rapid : g == 1 ? motion_kind::linear : g == 2 ? motion_kind::arc_cw : motion_kind::arc_ccw;
     }
     for (const word& w : words_) take(b, w, l);
+    if (l.dwell && !l.suppress && !failed_) dwell(b, l);  // after an error in a word: that one only
     if (l.extended && !b.state.work_offset && !l.suppress)
       error(l.extended->column, "G54.1 needs P n, the number of the extended work offset");
     machine_or_incremental(b);
@@ -305,6 +308,7 @@ class basic_reader {
       case 'H': case 'D': return keep();
       case 'P':
         if (l.extended && !b.state.work_offset) return extended_offset(b, w, l);
+        if (l.dwell) return dwell_time(w, l);
         return l.uses_pq ? keep() : unknown();
       case 'Q': case 'L': return l.uses_pq ? keep() : unknown();
       default: return unknown();
@@ -348,20 +352,21 @@ class basic_reader {
     else b.m_codes.push_back(m);
   }
 
-  void axis_word(block& b, const word& w, const line_words& l) {
+  void axis_word(block& b, const word& w, line_words& l) {
     std::optional<double>* slot = w.letter == 'X' ? &b.axes.x_mm : w.letter == 'Y' ? &b.axes.y_mm
                                 : w.letter == 'Z' ? &b.axes.z_mm : w.letter == 'A' ? &b.axes.a_deg
                                 : w.letter == 'B' ? &b.axes.b_deg : &b.axes.c_deg;
     if (*slot) return error(w.column, std::string("word '") + w.letter + "' appears twice");
     if (l.dwell && w.letter != 'X') return error(w.column, std::string("word '") + w.letter + "' in a dwell block (G4)");
-    if (l.g52_reset || l.dwell) b.kept_words.emplace_back(w.text);  // G4 X1.5: 1.5 s, not a position
+    if (l.dwell) return dwell_time(w, l);  // G4 X1.5: 1.5 s, not a position
+    if (l.g52_reset) b.kept_words.emplace_back(w.text);
     else *slot = w.value;
   }
 
   void g_word(block& b, const word& w, line_words& l) {
     const int g = g_code(w.value);
     const auto keep = [&] { b.kept_words.emplace_back(w.text); };
-    if (g >= 0 && g <= 30 && g % 10 == 0) return;  // motion, done in `classify`
+    if ((g >= 0 && g <= 30 && g % 10 == 0) || g == 40) return;  // motion, dwell: done in `classify`
     if (g == 170 || g == 180 || g == 190) {
       state_.plane = g == 170 ? arc_plane::xy : g == 180 ? arc_plane::zx : arc_plane::yz;
       b.state.working_plane = state_.plane;
@@ -425,6 +430,35 @@ class basic_reader {
     if (g == 650 || g == 660 || g == 661) return ": a macro call is not supported (the motion it makes would be lost)";
     if (g == 920 || g == 921) return ": a coordinate system shift is not supported (the points that follow are in another frame)";
     return "";
+  }
+
+  /// The X or P of a G4 block (one of them, once).
+  void dwell_time(const word& w, line_words& l) {
+    if (l.dwell_time) return error(w.column, std::string("word '") + w.letter + "' after '" + l.dwell_time->letter +
+                                                 "' in a dwell block (G4 takes X or P, once)");
+    l.dwell_time = &w;
+  }
+
+  /// A dwell (F4: SINUMERIK ISO Milling 04/2007 §3.3.1, the Fanuc G04): `G4 X2.` seconds, with a
+  /// decimal point (without one X counts least input increments or seconds as a parameter of the
+  /// control says: refused unless 0), or `G4 P2000`, whole milliseconds; in a block of its own
+  /// ("the block used to specify dwell must not include commands other than G04").
+  void dwell(block& b, const line_words& l) {
+    const word* t = l.dwell_time;
+    if (!t) return error(l.dwell->column, "G4 needs X (seconds, with a decimal point) or P (milliseconds)");
+    const std::string written(t->text);
+    if (t->value < 0) return error(t->column, "G4 " + written + ": a dwell time cannot be negative");
+    if (t->letter == 'P' && !lexing::is_whole(t->value))
+      return error(t->column, "G4 " + written + ": P is whole milliseconds (it takes no decimal point)");
+    if (t->letter == 'X' && t->value != 0 && t->digits.find('.') == std::string_view::npos)
+      return error(t->column, "G4 " + written + ": without a decimal point X is seconds or least input increments "
+                                                "as the control is set (write X with a point, or P in milliseconds)");
+    const double s = t->letter == 'X' ? t->value : t->value / 1000.0;
+    if (const std::string why = dwell_refusal(detail::dwell_steps, s); !why.empty())
+      return error(t->column, "G4 " + written + ": " + why);
+    b.state.dwell_s = s;
+    if (!b.only_dwell())
+      error(l.dwell->column, "G4: a dwell takes a block of its own (N, X or P, and a comment)");
   }
 
   /// Machine-coordinate and homing blocks: the axis words are not workpiece positions.

@@ -1,7 +1,7 @@
 /// @file program/iso/writer.hpp
 /// Blocks written as ISO / Fanuc G code, one block per line, words in the order
 /// `N  G90/G91 G17-G19 G40  kept G  G0-G3  G43.4/G43.5/G49  G93/G94  G21/G20  X Y Z A B C  I J K  R  F S T M
-/// kept  (comment)`.
+/// kept  (comment)`; a dwell is `N  G4 X1.5  (comment)`, a line of its own.
 /// After a block that says inch (`metric == false`, written G20) lengths and per-minute feeds are
 /// written in inches with one decimal more. Every coordinate, angle, I J K, R and F has a decimal
 /// point (`X10.`, `write_options::decimal_point`). A block ISO cannot express (a tool-axis vector outside
@@ -90,6 +90,7 @@ class writer {
       out += (same_ ? b.text : detail::as_comment(b.text)) + '\n';
       return;
     }
+    if (b.state.dwell_s) return dwell(out, b);
     words_.clear();
     tail_.clear();
     notes_.clear();
@@ -155,6 +156,20 @@ class writer {
     std::string w(1, letter);
     w += std::to_string(n);
     return w;
+  }
+
+  /// `N10 G4 X1.5 (comment)`: a dwell, seconds with a decimal point (always seconds, whatever
+  /// the decimal-point input setting), in a block of its own (SINUMERIK ISO Milling 04/2007
+  /// §3.3.1, the Fanuc G04: "must not include commands other than G04"); refused when the block
+  /// says more or the control cannot dwell that long or that finely (`detail::dwell_steps`).
+  void dwell(std::string& out, const block& b) {
+    if (!b.only_dwell()) fail(b, "a dwell with other words (G4 takes a block of its own)");
+    if (const std::string why = dwell_refusal(detail::dwell_steps, *b.state.dwell_s); !why.empty()) fail(b, why);
+    std::string line = b.number ? code('N', *b.number) + " G4 X" : std::string("G4 X");
+    line += format_number(*b.state.dwell_s, detail::dwell_steps.decimals);
+    if (line.find('.') == std::string::npos) line += '.';
+    if (b.comment) line += " " + detail::as_comment(*b.comment);
+    out += line + '\n';
   }
 
   /// N, O, kept G words (same dialect; the others into a note), G53, the plane of an arc.

@@ -39,12 +39,12 @@ struct dialect {
                                                   {"M429", marker::place::anywhere}}};
   /// LinuxCNC reads any decimals (User Manual, "G-code Overview", "Numbers"); feeds and speeds
   /// to the ISO reader's finest, which it shares; `( … )` are comments.
-  static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {6, 6, 3, 7}, .paren_comments = true};
+  static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {6, 6, 3, 7}, .paren_comments = true,
+                                    .dwell = linuxcnc::dwell_steps};
   /// Catalog machines whose controller reads it: LinuxCNC's own 5-axis simulation machines.
   static constexpr std::array<std::string_view, 2> default_for{"xyzac-trt", "xyzbc-trt"};
-  /// Kept words a comment would lose: the dwell.
-  static constexpr std::array<kept_word_effect, 1> lost_as_comment{
-      {{"G4", kept_word_effect::match::code, "a dwell"}}};
+  /// Kept words a comment would lose: none (its dwell is `state.dwell_s`).
+  static constexpr std::array<kept_word_effect, 0> lost_as_comment{};
   using write_options = linuxcnc::write_options;
   using writer = linuxcnc::writer;
   static void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,

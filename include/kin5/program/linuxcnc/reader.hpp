@@ -15,8 +15,9 @@
 /// Refused at the word: `M430`, `G12.1` with another type, a kinematics switch on a line with
 /// motion or M6, `G43.1`/`G43.2`, ISO codes LinuxCNC does not have (`G43.4`, `G43.5`, `G54.1`,
 /// `G50`), splines `G5`–`G5.3`, `G90.1`, `M61`, `H` without G43, `D` without G41/G42, `G4`
-/// with axis words or without P, o-words (lexer.hpp); under tracking, a move while G43 does not
-/// hold the loaded tool's length (the point programmed would not be the tool tip).
+/// with axis words, without P, with a negative P or with other words (`G4 P1.5` alone is
+/// `state.dwell_s`), o-words (lexer.hpp); under tracking, a move while G43 does not hold the
+/// loaded tool's length (the point programmed would not be the tool tip).
 #pragma once
 
 #include <cstddef>
@@ -33,6 +34,7 @@
 #include "../modal.hpp"
 #include "../transmission.hpp"
 #include "lexer.hpp"
+#include "vocabulary.hpp"
 
 namespace kin5::program::linuxcnc::detail {
 
@@ -44,10 +46,11 @@ struct line_words {
   const word* g12_1 = nullptr;  ///< G12.1: P is the kinematics type
   const word* p = nullptr;      ///< P of G12.1
   const word* g4 = nullptr;     ///< G4: P is the dwell (seconds); no axis words
+  const word* dwell_p = nullptr;  ///< the P of G4
   const word* offset = nullptr; ///< the work-offset word
   const word* tcp = nullptr;    ///< the kinematics switch (M428, M429, G12.1, G13.1)
   const word* axis = nullptr;   ///< the first axis word
-  bool g64 = false, radius = false, m6 = false, dwell_p = false;
+  bool g64 = false, radius = false, m6 = false;
 };
 
 /// The G name of a G code times ten: 430 → "G43", 591 → "G59.1".
@@ -87,9 +90,13 @@ class own_words {
     words = std::move(rest);
   }
 
-  /// Follows tools, G43 and tracking; refuses a tracked move without the loaded tool's length.
+  /// Follows tools, G43 and tracking; refuses a tracked move without the loaded tool's length,
+  /// and a dwell with other words.
   template <class Error>
   void check(const block& b, Error&& error) {
+    if (b.state.dwell_s && !b.only_dwell())
+      error(b.where.column, "G4: a dwell is read in a block of its own (N, P and a comment): every other dialect writes "
+                            "it so");
     if (b.tool) selected_ = *b.tool;
     for (int m : b.m_codes)
       if (m == 6) loaded_ = selected_, length_of_loaded_ = false, refused_ = false;
@@ -135,7 +142,10 @@ class own_words {
         return true;
       case 'P':
         if (l.g12_1) return l.p = &w, true;
-        if (l.g4) l.dwell_p = true;
+        if (l.g4 && !l.g64) {
+          if (l.dwell_p) error(w.column, "word 'P' appears twice");
+          return l.dwell_p = &w, true;
+        }
         if (!l.g64) return false;
         b.kept_words.emplace_back(w.text);
         return true;
@@ -155,6 +165,7 @@ class own_words {
   bool g_word(const word& w, block& b, line_words& l, Error&& error) {
     const int g = g_code(w.value);
     switch (g) {
+      case 40: return true;  // the dwell: its P is read in `finish`
       case 430: b.state.length_compensation = true; return true;
       case 490: b.state.length_compensation = false; return true;
       case 431: case 432:
@@ -213,9 +224,21 @@ class own_words {
                                ": only type 1, the TCP kinematics of the 5-axis trt configurations, is read");
       else b.tcp = true;
     }
-    if (!l.g4) return;
-    if (l.axis) error(l.axis->column, std::string("word '") + l.axis->letter + "' in a dwell block (G4 takes P, seconds)");
-    else if (!l.dwell_p) error(l.g4->column, "G4 needs P, the dwell in seconds");
+    if (l.g4) dwell(b, l, error);
+  }
+
+  /// `G4 P1.5`: a dwell of P seconds, a real (LinuxCNC User Manual, "G-Codes", G4: "it is an
+  /// error if the P number is negative"), read in a block of its own, as every other dialect
+  /// writes it: with only N and a comment beside it.
+  template <class Error>
+  static void dwell(block& b, const line_words& l, Error&& error) {
+    if (l.axis) return error(l.axis->column, std::string("word '") + l.axis->letter + "' in a dwell block (G4 takes P, seconds)");
+    if (!l.dwell_p) return error(l.g4->column, "G4 needs P, the dwell in seconds");
+    if (l.dwell_p->value < 0)
+      return error(l.dwell_p->column, "G4 " + std::string(l.dwell_p->text) + ": a dwell time cannot be negative");
+    if (const std::string why = dwell_refusal(dwell_steps, l.dwell_p->value); !why.empty())
+      return error(l.dwell_p->column, "G4 " + std::string(l.dwell_p->text) + ": " + why);
+    b.state.dwell_s = l.dwell_p->value;
   }
 };
 

@@ -7,7 +7,8 @@
 /// change what tracking needs there: `M429` before the `M6`, `G43` and `M428` after; tracking
 /// switched on gets a `G43` first when the loaded tool's length is not in effect. A tool-axis
 /// vector (LinuxCNC has no G43.5) and a work offset LinuxCNC does not select throw
-/// `std::invalid_argument` naming the block's `file:line`.
+/// `std::invalid_argument` naming the block's `file:line`. A dwell is `G4 P…` (seconds), a line
+/// of its own.
 #pragma once
 
 #include <algorithm>
@@ -21,9 +22,12 @@
 
 #include "../block.hpp"
 #include "../dialect_id.hpp"
+#include "../dwell.hpp"
+#include "../number.hpp"
 #include "../iso/writer.hpp"
 #include "../text.hpp"
 #include "../work_offsets.hpp"
+#include "vocabulary.hpp"
 
 namespace kin5::program::iso {
 struct dialect;
@@ -50,6 +54,7 @@ class writer {
   void write(std::string& out, const block& b) {
     if (!same_ && !opened_) out += "%\n", opened_ = true;
     if (b.passthrough) return iso_.write(out, b);
+    if (b.state.dwell_s) return dwell(out, b);
     if (b.axes.tool_axis) fail(b, "a tool-axis vector (LinuxCNC has no G43.5; its trt kinematics take A, B, C words)");
     std::vector<std::string> own;
     std::string before, after;
@@ -81,6 +86,17 @@ class writer {
   [[noreturn]] static void fail(const block& b, const std::string& why) {
     throw std::invalid_argument(b.where.file + ":" + std::to_string(b.where.line) +
                                 ": block cannot be written in LinuxCNC: " + why);
+  }
+
+  /// `N10 G4 P1.5 (comment)`: a dwell, P in seconds and as many decimals as it has (LinuxCNC
+  /// User Manual, "G-Codes", G4), in a block of its own as every dialect reads it.
+  static void dwell(std::string& out, const block& b) {
+    if (!b.only_dwell()) fail(b, "a dwell with other words (G4 takes a block of its own)");
+    if (const std::string why = dwell_refusal(dwell_steps, *b.state.dwell_s); !why.empty()) fail(b, why);
+    std::string line = b.number ? "N" + std::to_string(*b.number) + " G4 P" : std::string("G4 P");
+    line += format_number(*b.state.dwell_s, dwell_steps.decimals);
+    if (b.comment) line += " " + iso::detail::as_comment(*b.comment);
+    out += line + '\n';
   }
 
   /// Work offset, G43 [H n] / G49: LinuxCNC Manual, "G-Codes", G54–G59.3 and G43, G49.

@@ -117,6 +117,17 @@ inline void units(line_parse& p, modal_state& state, std::vector<diagnostic>& er
   b.feed.reset();
 }
 
+/// `G4 F2`: a dwell of F seconds, which the 840D takes only in a block of its own (SINUMERIK
+/// 840D sl Fundamentals 05/2017, "Dwell time (G4)"); no F, or other words with it, refused.
+inline void dwell(line_parse& p, std::vector<diagnostic>& errors) {
+  block& b = p.b;
+  const auto at = [&](std::size_t column) { return source_location{b.where.file, b.where.line, column + 1}; };
+  if (!p.dwell_f) return errors.push_back({at(*p.dwell_column), "G4 needs F, the dwell in seconds (G4 F2)"});
+  b.state.dwell_s = p.dwell_f->first;
+  if (!b.only_dwell())
+    errors.push_back({at(*p.dwell_column), "G4: the 840D takes a dwell in a block of its own (N, G4 F and a comment)"});
+}
+
 /// M2 / M30 end the program: carried by `program_end` only, not also in `m_codes`.
 inline void program_end(block& b, const modal_state& state) {
   const bool m30 = std::find(b.m_codes.begin(), b.m_codes.end(), 30) != b.m_codes.end();
@@ -155,6 +166,7 @@ inline void finish(line_parse& p, modal_state& state, read_result& result) {
     // (an arc word may be the one in error: the arc is then left out).
     if (p.errors.empty()) {
       std::vector<diagnostic> found;
+      if (p.dwell_column) dwell(p, found);
       tool_axis_vector(p, found);
       arc(p, state, found);
       for (auto& d : found) keep_or_count(p.errors, p.errors_not_kept, std::move(d));

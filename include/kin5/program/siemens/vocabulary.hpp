@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "../dwell.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
@@ -20,6 +21,10 @@ namespace kin5::program::siemens::detail {
 /// 06/2003 §10.3.1): the writer's finest, and the reader refuses a rate these cannot write back
 /// (`unwritable_rate`).
 inline constexpr int finest_rate_decimals = 3;
+
+/// The dwells the 840D takes with `G4 F`: F is a real number of seconds (SINUMERIK 840D sl
+/// Fundamentals 05/2017, "Dwell time (G4)"), written with any decimals a source gives, to 6.
+inline constexpr dwell_input dwell_steps{6, 1e9};
 
 constexpr bool is_ident_char(char c) { return is_letter(c) || is_digit(c) || c == '_'; }
 constexpr bool is_axis_letter(char c) { return c == 'X' || c == 'Y' || c == 'Z' || c == 'A' || c == 'B' || c == 'C'; }

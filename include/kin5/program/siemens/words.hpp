@@ -45,6 +45,8 @@ struct line_parse {
   std::vector<diagnostic> errors, warnings;  ///< the first `max_kept_diagnostics` of each
   std::size_t errors_not_kept = 0, warnings_not_kept = 0, unknown_not_kept = 0;  ///< found after them
   bool named_tool = false;                          ///< T="name" seen
+  std::optional<std::size_t> dwell_column;          ///< G4 seen: its F is the dwell, in seconds
+  std::optional<std::pair<double, std::size_t>> dwell_f;  ///< that F (value, column)
   std::string motion_word, feed_word, tcp_word;     ///< as written, for "conflicting words"
 };
 
@@ -228,7 +230,9 @@ class word_reader {
       case 'B': return set_axis(b.axes.b_deg, letter, v, start);
       case 'C': return set_axis(b.axes.c_deg, letter, v, start);
       case 'I': case 'J': case 'K': return centre(letter, v, start);
-      case 'F': case 'S': return feed_or_speed(letter, v, start);
+      case 'F': case 'S':
+        if (out_.dwell_column) return dwell_word(letter, v, start);
+        return feed_or_speed(letter, v, start);
       case 'T':
         out_.has_content = true;
         if (whole(letter, v, start) && !duplicate(b.tool.has_value() || out_.named_tool, start, "T"))
@@ -259,6 +263,17 @@ class word_reader {
     if (auto why = unwritable_rate(v, finest_rate_decimals, letter == 'F' ? "feed" : "spindle speed"))
       return error(start, *why);
     field = v;
+  }
+
+  /// F or S after G4: the dwell in seconds (F) or spindle revolutions (S, refused: its time
+  /// depends on the spindle speed), SINUMERIK 840D sl Fundamentals 05/2017, "Dwell time (G4)".
+  void dwell_word(char letter, double v, std::size_t start) {
+    if (letter == 'S')
+      return error(start, "G4 S: a dwell in spindle revolutions is not supported (its time depends on the spindle speed)");
+    if (duplicate(out_.dwell_f.has_value(), start, "F")) return;
+    if (v < 0) return error(start, "G4 F: a dwell time cannot be negative");
+    if (const std::string why = dwell_refusal(dwell_steps, v); !why.empty()) return error(start, "G4 F: " + why);
+    out_.dwell_f = std::pair{v, start};
   }
 
   bool conflict(bool clash, std::string_view earlier, std::string_view later, std::size_t start) {
@@ -308,7 +323,7 @@ class word_reader {
     else if (g == 53 || g == 153) out_.b.machine_coordinates = true;
     else if (g == 58 || g == 59) out_.frame_words.emplace_back(canonical, start);
     else if (g == 41 || g == 42) error(start, canonical + ": cutter radius compensation is not supported yet (the path would be off by the radius)");
-    else if (g == 4) error(start, "G4: a dwell is not supported yet (the dwell would be lost)");
+    else if (g == 4) out_.dwell_column = start;
     else unknown(start, "unknown word '" + canonical + "'");
   }
 

@@ -5,7 +5,8 @@
 /// passthrough text and kept words in a comment. Units are written `G710` (mm) or `G700` (inch),
 /// the forms that also set the unit of F: after `G700` lengths and per-minute feeds are written in
 /// inches, with one decimal more. A block Siemens cannot express (a rapid arc, an arc without a
-/// known start point) throws `std::invalid_argument` ("file:line: reason").
+/// known start point) throws `std::invalid_argument` ("file:line: reason"). A dwell is
+/// `N  G4 F…  ;comment`, a line of its own.
 #pragma once
 
 #include <algorithm>
@@ -111,6 +112,7 @@ class writer {
       out += detail::checked_line(same_ ? b.text : "; " + b.text, b, file) + '\n';
       return;
     }
+    if (b.state.dwell_s) return dwell(out, b, file);
     if (b.program_begin) {
       out += detail::checked_line(detail::program_file_name(*b.program_begin), b, file) + '\n';
       written_ = detail::modal_state{};
@@ -154,6 +156,20 @@ class writer {
 
   [[noreturn]] static void fail(const block& b, const std::string& file, const std::string& why) {
     throw std::invalid_argument(file + ":" + std::to_string(b.where.line) + ": " + why);
+  }
+
+  /// `N10 G4 F1.5 ;comment`: a dwell, F in seconds, in a block of its own (SINUMERIK 840D sl
+  /// Fundamentals 05/2017, "Dwell time (G4)": "G4 must be programmed in a separate block"; the F
+  /// there is the time and leaves the feed alone). Refused with other words, or outside the
+  /// dwells the control takes (`detail::dwell_steps`).
+  void dwell(std::string& out, const block& b, const std::string& file) const {
+    if (!b.only_dwell()) fail(b, file, "a dwell with other words (G4 takes a block of its own)");
+    if (const std::string why = dwell_refusal(detail::dwell_steps, *b.state.dwell_s); !why.empty()) fail(b, file, why);
+    std::string line;
+    if (b.number) detail::append_code(line, 'N', *b.number);
+    detail::append_word(line, "G4 F" + format_number(*b.state.dwell_s, detail::dwell_steps.decimals));
+    if (b.comment) line += " ;" + (b.comment->empty() ? std::string() : " " + *b.comment);
+    out += detail::checked_line(std::move(line), b, file) + '\n';
   }
 
   void number(std::string& line, std::string_view address, double v, int decimals) {

@@ -29,10 +29,14 @@ TEST_CASE("iso: harmless words and resets are not errors") {
 }
 
 TEST_CASE("iso: G4 X1.5 dwells; its X is no position") {
-  // Fanuc: G04 dwell, the time in X or P.
-  const read_result dwell = iso::read("G4 X1.5\n", "t.nc");
+  // Fanuc: G04 dwell, the time in X (seconds, with a decimal point) or P (milliseconds).
+  const read_result dwell = iso::read("G4 X1.5\nN7 G04 P250 (wait)\nG4 X0\n", "t.nc");
   REQUIRE(dwell.ok());
-  CHECK((dwell.parsed.blocks[0].axes.empty() && dwell.parsed.blocks[0].kept_words == std::vector<std::string>{"G4", "X1.5"}));
+  const auto& b = dwell.parsed.blocks;
+  CHECK((b[0].axes.empty() && b[0].kept_words.empty() && b[0].state.dwell_s == 1.5));
+  CHECK((b[1].number == 7 && b[1].comment == "wait" && b[1].state.dwell_s == 0.25 && b[1].only_dwell()));
+  CHECK(b[2].state.dwell_s == 0.0);
+  CHECK(iso::write(dwell.parsed) == "G4 X1.5\nN7 G4 X0.25 (wait)\nG4 X0.\n");
 }
 
 TEST_CASE("iso: the writer names the block it cannot write") {

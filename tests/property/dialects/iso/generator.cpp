@@ -139,6 +139,18 @@ void draw_motion(item& it, state& st) {
   }
 }
 
+/// A dwell, alone in its block: `G4 X1.5` (seconds, always with a decimal point) or `G04 P1500`
+/// (whole milliseconds).
+void draw_dwell(item& it) {
+  const int ms = *rc::gen::inRange(0, 100000);
+  it.expected.state.dwell_s = ms / 1000.0;
+  it.words.push_back(draw_case(*rc::gen::element<std::string>("G4", "G04")));
+  if (*rc::gen::arbitrary<bool>()) return it.words.push_back(spell_code('P', ms));
+  std::string x = format_number(ms / 1000.0, 3);
+  if (x.find('.') == std::string::npos) x += '.';
+  it.words.push_back(draw_case("X") + x);
+}
+
 item draw_item(state& st) {
   item it;
   block& b = it.expected;
@@ -148,7 +160,7 @@ item draw_item(state& st) {
     b.number = n;
     it.words.push_back(spell_code('N', static_cast<int>(n)));
   }
-  switch (*rc::gen::inRange(0, 16)) {
+  switch (*rc::gen::inRange(0, 17)) {
     case 0: case 1: case 2: case 3: case 4: case 5:
       draw_motion(it, st);
       break;
@@ -257,6 +269,9 @@ item draw_item(state& st) {
       b.number.reset();
       break;
     }
+    case 15:  // a dwell; after `G91 G28 Z0` the G90 below comes first
+      if (!st.incremental) draw_dwell(it);
+      break;
     default: {  // not understood, no axis words
       b = block{};
       b.passthrough = true;

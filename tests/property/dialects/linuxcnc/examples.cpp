@@ -53,7 +53,7 @@ TEST_CASE("linuxcnc: a trt program: M428/M429, G43 without H, G59.1, G93, G4 P i
   CHECK((b[8].motion == motion_kind::rapid && b[8].axes.a_deg == -10.0 && b[8].axes.c_deg == 20.0));
   CHECK(b[9].feed_mode == feed_unit::inverse_time);
   CHECK((b[10].feed == 96.5 && b[10].axes.z_mm == -0.25));
-  CHECK(b[12].kept_words == strings{"G4", "P1.5"});
+  CHECK((b[12].kept_words.empty() && b[12].state.dwell_s == 1.5));
   CHECK(b[13].tcp == false);
   CHECK((b[14].state.length_compensation == false && !b[14].tcp));
   CHECK(b[15].tcp == true);

@@ -215,11 +215,11 @@ item draw_item(state& st) {
       b.program_end = *rc::gen::arbitrary<bool>() ? "M2" : "M30";
       it.words.push_back(draw_case(*b.program_end));
       break;
-    case 12: {  // dwell, seconds
-      const std::string p = spell_word('P', draw_decimal(0, 100, 2), 2);
-      b.kept_words = {draw_case("G4"), p};
-      it.words = {b.kept_words[0], p};
-      b.number.reset();
+    case 12: {  // dwell, seconds, in a block of its own
+      const double s = draw_decimal(0, 100, 2);
+      b.state.dwell_s = s;  // the block holds only its number so far
+      it.words.push_back(draw_case("G4"));
+      it.words.push_back(spell_word('P', s, 2));
       break;
     }
     default:

@@ -1,0 +1,2 @@
+; expect: 2:1: G4 needs X (seconds, with a decimal point) or P (milliseconds)
+G4
