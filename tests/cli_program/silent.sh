@@ -16,6 +16,10 @@ error_at() { awk -v t="$1" 'index($0, t) == 1 { f = 1 } END { exit !f }' err || 
 has_line() { grep -Eq -- "^($2)\$" "$1" || { report "$1: no line '$2'"; show "$1"; }; }
 # no_line FILE REGEX: FILE has no whole line matching REGEX.
 no_line() { ! grep -Eq -- "^($2)\$" "$1" || { report "$1: a line '$2'"; show "$1"; }; }
+# line_is FILE N REGEX: line N of FILE ('$': the last) matches REGEX (extended), whole.
+line_is() { sed -n "$2p" "$1" | grep -Eq -- "^($3)\$" || { report "$1: line $2 is not '$3'"; show "$1"; }; }
+# count_is FILE REGEX N: FILE has N whole lines matching REGEX.
+count_is() { c=$(grep -Ec -- "^($2)\$" "$1"); [ "$c" = "$3" ] || { report "$1: $c lines '$2', not $3"; show "$1"; }; }
 # nothing FILE: a refused run wrote nothing.
 nothing() { [ -e "$1" ] && report "$1 written although refused"; [ -s out ] && report "stdout not empty"; return 0; }
 
@@ -266,6 +270,47 @@ case "$name" in
     has_line rapid.h '6 L X-20 Y\+50 Z\+0 B\+180 C\+0 F300'
     run 0 translate --from sajo-12000p --to sajo-12000p -o same.mpf rapid.mpf
     has_line same.mpf 'N50 G1 X20 Y0 Z50 A0 B0 F300'
+    ;;
+  # Framing: each output opens and closes as its controller's manual says, once, and never
+  # copies the source's frame (a `%` tape mark once became `; %` and `(%)`).
+  frame-siemens)
+    printf '%s\n' '%' 'O1234' 'G21 G90 G94' 'T1 M6' 'G43.4 H1' 'G1 X0. Y0. Z50. A-30. B10. F500.' 'G49' 'M30' '%' >o.nc
+    run 0 translate --from sajo-12000p --to sajo-12000p --from-dialect iso --to-dialect siemens -o o.mpf o.nc
+    line_is o.mpf 1 '%_N_PGM_1234_MPF'
+    line_is o.mpf 2 ';\$PATH=/_N_MPF_DIR'
+    count_is o.mpf '.*%.*' 1
+    ;;
+  frame-iso)
+    run 0 translate --from sajo-12000p --to sajo-12000p --to-dialect iso -o t.nc "$example"
+    line_is t.nc 1 '%'
+    line_is t.nc 2 'O0001 \(TABLE1_SAJO\)'
+    line_is t.nc '$' '%'
+    count_is t.nc '%' 2
+    count_is t.nc '.*M30.*' 1
+    run 0 translate --from sajo-12000p --to sajo-12000p --to-dialect iso --program-number 12 -o n.nc "$example"
+    line_is n.nc 2 'O0012 \(TABLE1_SAJO\)'
+    run 1 translate --from sajo-12000p --to sajo-12000p --program-number 12 -o s.mpf "$example"
+    nothing s.mpf
+    ;;
+  frame-linuxcnc)
+    printf '%s\n' '%' 'O1234' 'G21 G90 G94' 'T1 M6' 'G43.4 H1' 'G1 X0. Y0. Z50. A-30. B10. F500.' 'G49' 'M30' '%' >o.nc
+    run 0 translate --from sajo-12000p --to sajo-12000p --from-dialect iso --to-dialect linuxcnc -o o.ngc o.nc
+    line_is o.ngc 1 '%'
+    line_is o.ngc '$' '%'
+    count_is o.ngc '.*%.*' 2
+    ;;
+  # Nothing but comments after the end: a working block there never runs on the source control
+  # (Siemens `M30` then `M5 M2` once became Heidenhain `M30`, `M5 M2`, `END PGM`).
+  after-end)
+    printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A-30 B10 F500' 'N30 TRAFOOF' 'N40 M30' 'N50 ; done' 'N60 M5 M2' >e.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p -o e.h e.mpf
+    error_at 'e.mpf:6:1: error: cannot write the program as heidenhain: block after the program end (line 4): the source control never runs it'
+    nothing e.h
+    head -n 5 e.mpf >ok.mpf  # the comment after the end stays a comment, before END PGM
+    run 0 translate --from sajo-12000p --to dmu-80p -o ok.h ok.mpf
+    line_is ok.h '$' '[0-9]+ END PGM ok MM'
+    has_line ok.h '[0-9]+ ;done'
+    count_is ok.h '[0-9]+ M30' 1
     ;;
   *)
     echo "silent.sh: unknown row '$name'" >&2

@@ -220,28 +220,33 @@ TEST_CASE("a program end is written once in every dialect") {
   CHECK(s.parsed.blocks[1].program_end == "P");
   CHECK(s.parsed.blocks[2].m_codes == std::vector<int>{5});
   CHECK(s.parsed.blocks[2].program_end == "M2");
-  CHECK(iso::write(s.parsed) == "(program P)\nN10 M30\nN20 M5 M2\n");
-  CHECK(heidenhain::write(s.parsed) == "0 BEGIN PGM P MM\n1 M30\n2 M5 M2\n3 END PGM P MM\n");
-  CHECK(apt::write(s.parsed) == "PARTNO P\nFINI\nSPINDL/OFF\nFINI\n");
+  // `M5 M2` after the end never runs on the source control: another dialect refuses it (written
+  // after the target's end it would not run either; before it, it would run where the source never
+  // did); Siemens writes its own program as read.
+  const std::string after_end = "end.mpf:3: block after the program end (line 2): the source control never runs it";
+  CHECK_THROWS_WITH(iso::write(s.parsed), after_end);
+  CHECK_THROWS_WITH(heidenhain::write(s.parsed), after_end);
+  CHECK_THROWS_WITH(apt::write(s.parsed), after_end);
   CHECK(siemens::write(s.parsed) == "%_N_P_MPF\nN10 M30\nN20 M5 M2\n");
 
   // Heidenhain: M30 is an M function, END PGM the end; M91 is machine coordinates (G53, SUPA).
   const auto h = heidenhain::read("0 BEGIN PGM P MM\n1 L Z+0 FMAX M91\n2 M30\n3 END PGM P MM\n", "end.h");
   REQUIRE(h.ok());
-  CHECK(iso::write(h.parsed) == "N0 G21 (program P)\nN1 G53 G0 Z0.\nN2 M30\nN3 G21\n");
-  CHECK(siemens::write(h.parsed) == "%_N_P_MPF\nN0 G710\nN1 SUPA G0 Z0\nN2 M30\nN3 G710\n");
+  // The run ends at M30: END PGM (its unit again) writes nothing after it, no second end.
+  CHECK(iso::write(h.parsed) == "%\nO0001 (P)\nN0 G21\nN1 G53 G0 Z0.\nN2 M30\n%\n");
+  CHECK(siemens::write(h.parsed) == "%_N_PGM_P_MPF\n;$PATH=/_N_MPF_DIR\nN0 G710\nN1 SUPA G0 Z0\nN2 M30\n");
 
   // A tool change is written once: TOOL CALL and LOADTL are the change, no M6 beside them.
   const auto tc = siemens::read("T1 M6\nS6000 M3\n", "tool.mpf");
   REQUIRE(tc.ok());
   CHECK(heidenhain::write(tc.parsed) == "0 BEGIN PGM PGM MM\n1 TOOL CALL 1 Z\n2 TOOL CALL S6000\n3 M3\n4 END PGM PGM MM\n");
   CHECK(apt::write(tc.parsed) == "LOADTL/1\nSPINDL/6000,CLW\n");
-  CHECK(iso::write(tc.parsed) == "T1 M6\nS6000 M3\n");
+  CHECK(iso::write(tc.parsed) == "%\nO0001\nT1 M6\nS6000 M3\nM30\n%\n");  // a FANUC program ends with M30, %
 
   const auto i = iso::read("O1234\nN5 M30\n", "end.nc");
   REQUIRE(i.ok());
   CHECK(heidenhain::write(i.parsed) == "0 BEGIN PGM 1234 MM\n1 M30\n2 END PGM 1234 MM\n");
-  CHECK(siemens::write(i.parsed) == "%_N_1234_MPF\nN5 M30\n");
+  CHECK(siemens::write(i.parsed) == "%_N_PGM_1234_MPF\n;$PATH=/_N_MPF_DIR\nN5 M30\n");  // a legal name
   // The tape marks and ;$PATH= frame the program: BEGIN/END PGM stand for them, no copy as text.
   const auto tape = iso::read("%\nO1234\nN5 M30\n%\n", "end.nc");
   REQUIRE(tape.ok());
@@ -271,9 +276,9 @@ TEST_CASE("APT feed-only, rapid-only and units blocks in the G-code and Heidenha
         "8 END PGM X MM\n");
   // G code has words for all of them.
   CHECK(siemens::write(a.parsed) ==
-        "%_N_X_MPF\nG710\nG94 F800\nG0\nG0 X1 Y2 Z3\nG1 X4 Y5 Z6\nG1 X7 Y8 Z9\nM30\n");
+        "%_N_PGM_X_MPF\n;$PATH=/_N_MPF_DIR\nG710\nG94 F800\nG0\nG0 X1 Y2 Z3\nG1 X4 Y5 Z6\nG1 X7 Y8 Z9\nM30\n");
   CHECK(iso::write(a.parsed) ==
-        "(program X)\nG21\nG94 F800.\nG0\nG0 X1. Y2. Z3.\nG1 X4. Y5. Z6.\nG1 X7. Y8. Z9.\nM30\n");
+        "%\nO0001 (X)\nG21\nG94 F800.\nG0\nG0 X1. Y2. Z3.\nG1 X4. Y5. Z6.\nG1 X7. Y8. Z9.\nM30\n%\n");
   const auto back = heidenhain::read(heidenhain::write(a.parsed), "a.h");
   CHECK(back.ok());
 
@@ -283,7 +288,7 @@ TEST_CASE("APT feed-only, rapid-only and units blocks in the G-code and Heidenha
   kin5::program::block empty;
   empty.text = "UNITS/XYZ";
   p.blocks = {empty};
-  CHECK(siemens::write(p) == "; UNITS/XYZ\n");
+  CHECK(siemens::write(p) == "%_N_PGM_MPF\n;$PATH=/_N_MPF_DIR\n; UNITS/XYZ\n");
   CHECK(heidenhain::write(p) == "0 BEGIN PGM PGM MM\n1 ;UNITS/XYZ\n2 END PGM PGM MM\n");
 }
 

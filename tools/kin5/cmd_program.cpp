@@ -441,6 +441,7 @@ struct common_arguments {
   std::string output_mode;  ///< tcp | machine; empty: the output dialect's
   std::string tool_table;   ///< --tool-table FILE
   std::string tcp_word;     ///< --tcp-word: translate and post into Heidenhain; empty: M128
+  std::optional<long long> program_number;  ///< --program-number: translate and post into ISO
 };
 
 std::optional<std::vector<double>> parse_list(std::string_view text, std::size_t count);
@@ -582,6 +583,27 @@ bool parse_tcp_word(std::string_view command, const std::string& word, job& j) {
   j.writer_choices.of<prog::heidenhain::dialect>().tcp =
       word == "function-tcpm" ? prog::heidenhain::tcp_word::function_tcpm : prog::heidenhain::tcp_word::m128;
   return true;
+}
+
+/// The `O` number of --program-number into `j.writer_choices`; false, with the reason printed,
+/// when the output dialect is not ISO (the only one numbering its programs).
+bool parse_program_number(std::string_view command, std::optional<long long> number, job& j) {
+  if (!number) return true;
+  if (j.output_dialect != prog::id_of<prog::iso::dialect>()) {
+    std::cerr << "kin5 " << command << ": --program-number numbers an ISO program (its O line); the output dialect is "
+              << prog::name(j.output_dialect) << '\n';
+    return false;
+  }
+  j.writer_choices.of<prog::iso::dialect>().program_number = *number;
+  return true;
+}
+
+/// Adds --program-number (the ISO output's O number) to `sub`.
+void add_program_number_option(CLI::App* sub, common_arguments& a) {
+  sub->add_option("--program-number", a.program_number,
+                  "ISO output of a program read in another dialect: the number N of its O line, 1 to 9999 "
+                  "(default: the source's name when it is such a number, else 1)")
+      ->check(CLI::Range(1LL, 9999LL));
 }
 
 /// Adds --tcp-word (the output's TCP switch) to `sub`.
@@ -762,6 +784,7 @@ int run_translate(const translate_arguments& a) {
   if (!common) return common_error;
   options.common = *common;
   if (!parse_tcp_word("translate", a.common.tcp_word, j)) return exit_codes::usage;
+  if (!parse_program_number("translate", a.common.program_number, j)) return exit_codes::usage;
   if (const auto why = translate_detail::output_mode_refusal(options.common, j.output_dialect)) {
     std::cerr << "kin5 translate: " << *why << '\n';
     return exit_codes::usage;
@@ -823,6 +846,7 @@ int run_post(const machine_arguments& a) {
   const auto common = parse_common("post", a.common, common_error);
   if (!common) return common_error;
   if (!parse_tcp_word("post", a.common.tcp_word, j)) return exit_codes::usage;
+  if (!parse_program_number("post", a.common.program_number, j)) return exit_codes::usage;
   if (const auto why = translate_detail::output_mode_refusal(*common, out)) {
     std::cerr << "kin5 post: " << *why << '\n';
     return exit_codes::usage;
@@ -883,6 +907,7 @@ void add_program_commands(CLI::App& app, int& exit_code) {
     add_placement_options(sub, a->common);
     add_source_options(sub, a->common);
     add_tcp_word_option(sub, a->common);
+    add_program_number_option(sub, a->common);
     sub->add_flag("-v,--verbose", a->verbose, "Also list the blocks translated on the other solution branch");
     sub->add_option("input", a->input, "Input NC program; '-' for stdin")->required();
     sub->footer(default_dialect_table() + exit_code_footer);
@@ -911,6 +936,7 @@ void add_program_commands(CLI::App& app, int& exit_code) {
     add_placement_options(sub, a->common);
     add_tolerance_option(sub, a->common);
     add_tcp_word_option(sub, a->common);
+    add_program_number_option(sub, a->common);
     sub->add_flag("-v,--verbose", a->verbose, "Also list the blocks posted on the other solution branch");
     sub->add_option("input", a->input, "Input APT CL file; '-' for stdin")->required();
     sub->footer(default_dialect_table() + exit_code_footer);

@@ -27,4 +27,11 @@ struct program_name {
   std::optional<std::string> name() const { return begin ? begin : end; }
 };
 
+/// The name program `p` gives itself (`program_name` over all its blocks), if any.
+inline std::optional<std::string> name_of(const program& p) {
+  program_name name;
+  for (const block& b : p.blocks) name.take(b);
+  return name.name();
+}
+
 }  // namespace kin5::program

@@ -114,9 +114,9 @@ struct arc_centre_block {
     if (!D::can.arcs) return;
     const auto back = written_and_read<D>(half_circle());
     REQUIRE(back.has_value());
-    // The centre is a block of its own only where the dialect says so (framing lines such as
-    // LinuxCNC's `%` are passed-through blocks, not centres).
-    const auto blocks = std::count_if(back->begin(), back->end(), [](const block& r) { return !r.passthrough; });
+    // The centre is a block of its own only where the dialect says so: blocks of geometry are
+    // counted, not the frame a writer puts around the program (`%`, `O0001`, `M30`, `%_N_…_MPF`).
+    const auto blocks = std::count_if(back->begin(), back->end(), [](const block& r) { return r.moves() || r.arc; });
     CHECK((static_cast<std::size_t>(blocks) > half_circle().blocks.size()) == D::can.arc_centre_block);
   }
 };

@@ -157,9 +157,9 @@ TEST_CASE("units: Heidenhain INCH programs are read in millimetres, F in 1/10 in
 TEST_CASE("units: inch programs between dialects keep their inch values") {
   // Heidenhain INCH → ISO G20: F98 (1/10 inch/min) is F9.8 inch/min.
   round_trip(id_of<heidenhain::dialect>(), "0 BEGIN PGM P INCH\n1 L X+1.2345 Y-0.5 Z+2 F98\n2 END PGM P INCH\n",
-             id_of<iso::dialect>(), "N0 G20 (program P)\nN1 G1 X1.2345 Y-0.5 Z2. F9.8\nN2 G20 M30\n");
+             id_of<iso::dialect>(), "%\nO0001 (P)\nN0 G20\nN1 G1 X1.2345 Y-0.5 Z2. F9.8\nN2 G20 M30\n%\n");
   round_trip(id_of<iso::dialect>(), "G20\nG1 X1.2345 Y2. Z3. F10.\n", id_of<siemens::dialect>(),
-             "G700\nG1 X1.2345 Y2 Z3 F10\n");
+             "%_N_PGM_MPF\n;$PATH=/_N_MPF_DIR\nG700\nG1 X1.2345 Y2 Z3 F10\n");
   // The unit Siemens states after its header is the BEGIN PGM's (program_unit).
   round_trip(id_of<siemens::dialect>(), "%_N_P_MPF\nG700\nG1 X1.2345 Y2 Z3 F10\nM30\n", id_of<heidenhain::dialect>(),
              "0 BEGIN PGM P INCH\n1 ;G700\n2 L X+1.2345 Y+2 Z+3 F100\n3 M30\n4 END PGM P INCH\n");

@@ -3,8 +3,9 @@
 /// says inch (`metric == false`, written `UNITS/INCHES`) GOTO points are written in inches and
 /// per-minute feeds as `FEDRAT/IPM`, each with one decimal more. A feed under inverse time (from
 /// the block or an earlier one) is `FEDRAT/INVERS`. Axis-word rotary angles and arcs cannot be written (std::invalid_argument naming the block);
-/// anything else without an APT form becomes a `$$` comment carrying the block's text. A dwell is
-/// `DELAY/t`.
+/// anything else without an APT form becomes a `$$` comment carrying the block's text. Another
+/// dialect's frame (`%`, `;$PATH=`) is not copied, and a block of another dialect after its end
+/// is refused unless it is only a comment (program_end.hpp). A dwell is `DELAY/t`.
 #pragma once
 
 #include <cstddef>
@@ -16,6 +17,7 @@
 
 #include "../block.hpp"
 #include "../number.hpp"
+#include "../program_end.hpp"
 #include "../units.hpp"
 #include "../work_offsets.hpp"
 #include "vocabulary.hpp"
@@ -48,6 +50,13 @@ class writer {
   /// Appends the statements of block `b` to `out`. Throws `std::invalid_argument` naming the
   /// block's `file:line` when it cannot be written in APT.
   void write(std::string& out, const block& b) {
+    if (!same_) {
+      if (b.framing) return;  // another dialect's frame: CL data have none
+      if (end_.after_end(b)) {
+        if (b.comment && !b.comment->empty()) out += "$$ " + flat(*b.comment) + '\n';
+        return;
+      }
+    }
     if (b.passthrough) {
       if (same_) out += b.text + '\n';
       else out += "$$ " + flat(b.text) + '\n';
@@ -64,7 +73,7 @@ class writer {
     if (b.state.radius_compensation && *b.state.radius_compensation != cutter_side::off)
       fail(b, "cutter radius compensation (G41/G42) is not written yet");
     lines_.clear();
-    foreign_note_ = false;
+    foreign_note_ = ends_ = false;
     if (b.metric) inch_ = !*b.metric;
     if (b.feed_mode) inverse_time_ = *b.feed_mode == feed_unit::inverse_time;
     block in_unit = b;
@@ -73,7 +82,7 @@ class writer {
     machine_functions(in_unit);
     feed(in_unit);
     motion(in_unit);
-    if (b.program_end) lines_.push_back("FINI");
+    if (b.program_end || ends_) lines_.push_back("FINI");
     if (foreign_note_) lines_.insert(lines_.begin(), "$$ " + flat(b.text));
     if (b.comment) {
       if (lines_.empty() || (foreign_note_ && lines_.size() == 1)) lines_.push_back("$$ " + one_line(b, *b.comment));
@@ -86,12 +95,14 @@ class writer {
  private:
   bool same_;  // the blocks were read as APT
   write_options options_;
+  source_end end_;  // where another dialect's program stops running
   bool rapid_pending_ = false;
   std::optional<long long> selected_tool_;  // the last tool number written
   bool inch_ = false;          // UNITS/INCHES written: lengths in inches
   bool inverse_time_ = false;  // inverse-time feed in effect (this block's or an earlier one's)
   std::vector<std::string> lines_;  // the block's statements
   bool foreign_note_ = false;       // something without an APT form: carry the block's text
+  bool ends_ = false;               // an M2 / M30 M function: the end of the program run
 
   [[noreturn]] static void fail(const block& b, const std::string& why) {
     throw std::invalid_argument(b.where.file + ":" + std::to_string(b.where.line) + ": block cannot be written in APT: " + why);
@@ -136,7 +147,8 @@ class writer {
     else if (b.tool) lines_.push_back("SELECT/TOOL," + std::to_string(*b.tool));
   }
 
-  /// SPINDL, COOLNT, STOP, OPSTOP from S and the M codes APT has a statement for.
+  /// SPINDL, COOLNT, STOP, OPSTOP from S and the M codes APT has a statement for; M2 / M30 (a
+  /// Heidenhain line's end of the program run) is FINI.
   void machine_functions(const block& b) {
     const std::string rpm =
         b.spindle_rpm ? format_number(*b.spindle_rpm, rate_decimals(*b.spindle_rpm, options_.feed_decimals,
@@ -154,6 +166,7 @@ class writer {
       else if (m == 0) lines_.push_back("STOP");
       else if (m == 1) lines_.push_back("OPSTOP");
       else if (m == 6) continue;  // LOADTL is the tool change: no M6 beside it
+      else if (m == 2 || m == 30) ends_ = true;  // a Heidenhain line's end of the program run: FINI
       else foreign_note_ = true;
     }
     if (!rpm_written) lines_.push_back("SPINDL/" + rpm);

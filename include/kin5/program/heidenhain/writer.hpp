@@ -4,7 +4,9 @@
 /// requires; source block numbers are not written. Every program opens with `BEGIN PGM name
 /// MM|INCH` and closes with `END PGM` of that name (`finish`), the frame the control reads a
 /// program in: another dialect's frame (`%`, `;$PATH=…`; its name from `O`, `%_N_…`, PARTNO)
-/// is never copied as text, and a source end (M2, M30, FINI) is an `M2`/`M30` before it. A block without coordinates is never an `L`
+/// is never copied as text, and a source end (M2, M30, FINI) is an `M2`/`M30` before it; a block
+/// of another dialect after that end is refused unless it is only a comment (program_end.hpp).
+/// A block without coordinates is never an `L`
 /// (the control's L needs its end point): a feed-only block's F goes to the next move without an
 /// F, a rapid-only block's FMAX to the next move; a block left with nothing Heidenhain can say
 /// (APT `UNITS/MM`, `RAPID`, a read `L F800`) becomes a comment carrying its source text. A
@@ -26,6 +28,7 @@
 #include "../block.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
+#include "../program_end.hpp"
 #include "../program_name.hpp"
 #include "../text.hpp"
 #include "../units.hpp"
@@ -84,6 +87,7 @@ class writer {
     dwell_header_ = false;
     if (b_mm.framing) return;  // always another dialect's (`%`, `;$PATH=`): BEGIN/END PGM stand for it
     if (closed_) return after_end(b_mm, bi);
+    if (!same_ && source_end_.after_end(b_mm)) return comment_after_end(out, b_mm);
     const bool opens = !begin_name_ && b_mm.program_begin && !b_mm.passthrough;
     if (!begin_name_ && !opens) open(out, options_.program_name);
     if (b_mm.passthrough) return passthrough(out, b_mm);
@@ -167,6 +171,7 @@ class writer {
   std::optional<std::string> begin_name_;  // set once BEGIN PGM is written
   std::optional<std::string> end_comment_; // the comment on the source's END PGM line
   bool closed_ = false;                    // a Heidenhain END PGM was read: the program text ends
+  source_end source_end_;                  // where another dialect's program stops running
   std::optional<bool> inch_;  // the unit BEGIN PGM said (INCH: true)
   std::optional<long long> selected_tool_;  // the last tool number written or selected
   bool tcp_on_ = false;                     // M128 / FUNCTION TCPM in effect after the last block
@@ -201,6 +206,16 @@ class writer {
   void after_end(const block& b, std::size_t bi) const {
     if (b.text.find_first_not_of(" \t\f\v\r\n") == std::string::npos && b.passthrough) return;
     fail(b, bi, "block after END PGM (the control reads a program only up to its END PGM)");
+  }
+
+  /// A block of another dialect after its end with no effect (`source_end`): its comment, if any,
+  /// on a line of its own before END PGM.
+  void comment_after_end(std::string& out, const block& b) {
+    if (!b.comment || b.comment->empty()) return;
+    std::string c = *b.comment;
+    std::replace(c.begin(), c.end(), '\n', ' ');
+    std::replace(c.begin(), c.end(), '\r', ' ');
+    out += std::to_string(number_++) + " ;" + without_continuation(c) + "\n";
   }
 
   /// The program's unit, said once by BEGIN PGM: INCH makes lengths inches (one decimal more)

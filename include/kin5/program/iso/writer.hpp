@@ -2,6 +2,10 @@
 /// Blocks written as ISO / Fanuc G code, one block per line, words in the order
 /// `N  G90/G91 G17-G19 G40  kept G  G0-G3  G43.4/G43.5/G49  G93/G94  G21/G20  X Y Z A B C  I J K  R  F S T M
 /// kept  (comment)`; a dwell is `N  G4 X1.5  (comment)`, a line of its own.
+/// A program read in another dialect is framed as a FANUC program: `%`, `O` and its number, the
+/// blocks, an end (`M30` when the source gives none; `finish`), `%`; the other dialect's frame
+/// (`%` of LinuxCNC, Siemens `;$PATH=`) is never copied, and a block after its end is refused
+/// unless it is only a comment (program_end.hpp). A program read as ISO is written as read.
 /// After a block that says inch (`metric == false`, written G20) lengths and per-minute feeds are
 /// written in inches with one decimal more. Every coordinate, angle, I J K, R and F has a decimal
 /// point (`X10.`, `write_options::decimal_point`). A block ISO cannot express (a tool-axis vector outside
@@ -21,6 +25,8 @@
 
 #include "../block.hpp"
 #include "../number.hpp"
+#include "../program_end.hpp"
+#include "../program_name.hpp"
 #include "../text.hpp"
 #include "../units.hpp"
 #include "../work_offsets.hpp"
@@ -46,6 +52,15 @@ struct write_options {
   /// control (Mitsubishi M700V Programming Manual §5.3: a point there is dropped, on a Fanuc an
   /// alarm); a speed with a fraction is an error. LinuxCNC's writer, whose S is a real, turns it off.
   bool whole_spindle_speed = true;
+  /// Frame a program read in another dialect (`%`, `O…`, …, `%`); LinuxCNC's writer, which
+  /// frames its own way, turns it off.
+  bool frame = true;
+  /// The program number of the `O` line (1 … 9999), when chosen (`--program-number`); else
+  /// `program_name` when it is such a number, else 1.
+  std::optional<long long> program_number;
+  /// The program's name when known ahead (`program_name`: the source's, or the output file's):
+  /// its number when it is one, else a comment on the `O` line.
+  std::optional<std::string> program_name;
 };
 
 namespace detail {
@@ -67,6 +82,21 @@ inline std::string as_comment(std::string text) {
   return "(" + text + ")";
 }
 
+/// Whether `name` is a FANUC program number: digits only, 1 … 9999 (program number 0 cannot be
+/// used: FANUC Series 16i/18i-PB Operator's Manual B-63684EN/01 §13, p. 129).
+inline bool is_program_number(std::string_view name) {
+  if (name.empty() || name.size() > 9 || name.find_first_not_of("0123456789") != std::string_view::npos) return false;
+  long long n = 0;
+  for (char c : name) n = n * 10 + (c - '0');
+  return n >= 1 && n <= 9999;
+}
+
+/// `O` and `n` in four digits (`O0001`), as FANUC programs write it.
+inline std::string program_number_word(long long n) {
+  std::string digits = std::to_string(n);
+  return "O" + std::string(digits.size() < 4 ? 4 - digits.size() : 0, '0') + digits;
+}
+
 }  // namespace detail
 
 /// Writes blocks as ISO / Fanuc G code one at a time, remembering the plane, the last point and
@@ -86,6 +116,14 @@ class writer {
   /// vector), else G43.4; a tool-axis vector outside G43.5 is an error. Throws
   /// `std::invalid_argument` naming the block's `file:line` when it cannot be written.
   void write(std::string& out, const block& b, bool vector_tcp_ahead = false) {
+    if (!same_) {
+      if (b.framing) return;  // another dialect's frame: `%` and `O` stand for it
+      if (end_.after_end(b)) {
+        if (b.comment && !b.comment->empty()) out += detail::as_comment(*b.comment) + '\n';
+        return;
+      }
+      if (options_.frame && !opened_) open(out);
+    }
     if (b.passthrough) {
       out += (same_ ? b.text : detail::as_comment(b.text)) + '\n';
       return;
@@ -112,7 +150,7 @@ class writer {
     for (std::string& k : tail_) words_.push_back(std::move(k));
     if (!notes_.empty()) words_.push_back(detail::as_comment(notes_));
     if (b.comment) words_.push_back(detail::as_comment(*b.comment));
-    if (words_.empty() && !same_ && !b.text.empty()) words_.push_back(detail::as_comment(b.text));
+    if (words_.empty() && !same_ && !b.text.empty() && !(b.program_begin && opened_)) words_.push_back(detail::as_comment(b.text));
     if (words_.empty() && !same_) return;  // nothing to say and no source text (APT MULTAX): no empty line
     std::string line;
     for (const std::string& w : words_) line += (line.empty() ? "" : " ") + w;
@@ -121,9 +159,20 @@ class writer {
     if (b.tcp) tcp_on_ = *b.tcp;
   }
 
+  /// Closes a program read in another dialect: `M30` when its source gave no end, then `%`.
+  /// Call once, after the last `write`.
+  void finish(std::string& out) {
+    if (!opened_) return;
+    if (!end_.ended()) out += "M30\n";
+    out += "%\n";
+    opened_ = false;
+  }
+
  private:
   bool same_;  // the blocks were read as ISO
   write_options options_;
+  source_end end_;       // where another dialect's program stops running
+  bool opened_ = false;  // `%` and `O` written, the closing `%` not yet
   bool vector_tcp_ = false;
   bool tcp_on_ = false;                    // G43.4 / G43.5 in effect after the last block
   std::optional<long long> selected_tool_;  // the last T written
@@ -139,6 +188,21 @@ class writer {
 
   [[noreturn]] static void fail(const block& b, const std::string& why) {
     throw std::invalid_argument(b.where.file + ":" + std::to_string(b.where.line) + ": block cannot be written in ISO: " + why);
+  }
+
+  /// Opens a program read in another dialect: `%`, then `O` and its number (FANUC Fast Data
+  /// Server Operator's Manual B-64014EN/03 §2.5: `%`, the `O` number at the beginning of the
+  /// program section, the blocks, an M code, `%`), with a name that is no number as the comment
+  /// its example puts there (`O0001(COMMENT)`).
+  void open(std::string& out) {
+    const std::string name = options_.program_name.value_or("");
+    const bool numbered = detail::is_program_number(name);
+    const long long n = options_.program_number ? *options_.program_number : numbered ? std::stoll(name) : 1;
+    if (n < 1 || n > 9999) throw std::invalid_argument("program number " + std::to_string(n) + " is outside 1 … 9999");
+    out += "%\n" + detail::program_number_word(n);
+    if (!numbered && !name.empty() && name.find_first_of("()\r\n") == std::string::npos) out += " (" + name + ")";
+    out += '\n';
+    opened_ = true;
   }
 
   /// A coordinate, angle, I J K, R or F word: with a decimal point (`decimal_point`).
@@ -175,7 +239,7 @@ class writer {
   /// N, O, kept G words (same dialect; the others into a note), G53, the plane of an arc.
   void head(const block& b) {
     if (b.number) words_.push_back(code('N', *b.number));
-    if (b.program_begin) {
+    if (b.program_begin && !opened_) {  // a framed program's `O` line is written
       const std::string& name = *b.program_begin;
       if (!name.empty() && name.find_first_not_of("0123456789") == std::string::npos) words_.push_back("O" + name);
       else note("program " + name);
@@ -331,12 +395,15 @@ class writer {
 /// Writes `p` as ISO / Fanuc G code, one block per line (see the file comment); tool-tip tracking
 /// is switched on with G43.5 where tool-axis vectors follow, else G43.4.
 inline std::string write(const program& p, const write_options& options = {}) {
-  writer w(p.language, p.file, options);
+  write_options chosen = options;
+  if (!chosen.program_name) chosen.program_name = name_of(p);
+  writer w(p.language, p.file, chosen);
   std::string out;
   for (std::size_t k = 0; k < p.blocks.size(); ++k) {
     const block& b = p.blocks[k];
     w.write(out, b, b.tcp && *b.tcp && detail::vector_tcp_from(p.blocks, k));
   }
+  w.finish(out);
   return out;
 }
 

@@ -3,7 +3,9 @@
 /// and this one writes what LinuxCNC spells otherwise, in front of it: tool-tip tracking as
 /// `M428` / `M429` (the remaps of the 5-axis trt configurations), tool length as `G43` [`H n`] /
 /// `G49`, work offsets 1 … 9 as `G54` … `G59.3`, a program name as a comment. A program read in
-/// another dialect is framed by `%` lines (the second after its end) and gets around each tool
+/// another dialect is framed by `%` lines (the first line, and the last, written by `finish`), never
+/// by a copy of the other dialect's frame, refuses a block after its end unless it is only a
+/// comment (program_end.hpp), and gets around each tool
 /// change what tracking needs there: `M429` before the `M6`, `G43` and `M428` after; tracking
 /// switched on gets a `G43` first when the loaded tool's length is not in effect. A tool-axis
 /// vector (LinuxCNC has no G43.5) and a work offset LinuxCNC does not select throw
@@ -25,6 +27,7 @@
 #include "../dwell.hpp"
 #include "../number.hpp"
 #include "../iso/writer.hpp"
+#include "../program_end.hpp"
 #include "../text.hpp"
 #include "../work_offsets.hpp"
 #include "vocabulary.hpp"
@@ -47,12 +50,19 @@ class writer {
   /// `%` lines back as they are, another dialect's as comments.
   explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
       : same_(source == id_of<dialect>()),
-        iso_(same_ ? id_of<iso::dialect>() : id_of<dialect>(), std::move(file), without_decimal_point(chosen)) {}
+        iso_(same_ ? id_of<iso::dialect>() : id_of<dialect>(), std::move(file), iso_options(chosen)) {}
 
   /// Appends the lines of block `b` to `out`; throws `std::invalid_argument` naming the block
   /// when LinuxCNC cannot say it.
   void write(std::string& out, const block& b) {
-    if (!same_ && !opened_) out += "%\n", opened_ = true;
+    if (!same_) {
+      if (b.framing) return;  // another dialect's frame (`%`, `;$PATH=`): the `%` lines stand for it
+      if (end_.after_end(b)) {
+        if (b.comment && !b.comment->empty()) out += iso::detail::as_comment(*b.comment) + '\n';
+        return;
+      }
+      if (!opened_) out += "%\n", opened_ = true;
+    }
     if (b.passthrough) return iso_.write(out, b);
     if (b.state.dwell_s) return dwell(out, b);
     if (b.axes.tool_axis) fail(b, "a tool-axis vector (LinuxCNC has no G43.5; its trt kinematics take A, B, C words)");
@@ -65,20 +75,28 @@ class writer {
     std::string line;
     iso_line(line, b);
     out += before + with_words(line, own) + after;
-    if (!same_ && b.program_end && !closed_) out += "%\n", closed_ = true;
+  }
+
+  /// The closing `%` of a program read in another dialect (LinuxCNC User Manual, "G-code
+  /// Overview", File requirements: a file demarcated by `%` lines, the first and the last).
+  /// Call once, after the last `write`.
+  void finish(std::string& out) {
+    if (opened_ && !closed_) out += "%\n", closed_ = true;
   }
 
  private:
   bool same_;  // the blocks were read as LinuxCNC
   iso::writer iso_;
   bool opened_ = false, closed_ = false;  // the `%` lines written (another dialect's program)
+  source_end end_;                        // where another dialect's program stops running
   bool tracking_ = false;                 // M428 in effect after the last block
   bool length_of_loaded_ = false;         // G43 holds the loaded tool's length
   std::optional<long long> selected_, loaded_;
 
   /// LinuxCNC reads `X10` as 10 mm (LinuxCNC Manual, "G-Code Overview", numbers): no point needed.
-  static iso::write_options without_decimal_point(iso::write_options o) {
+  static iso::write_options iso_options(iso::write_options o) {
     o.decimal_point = false;
+    o.frame = false;  // framed here, by `%` lines only
     o.whole_spindle_speed = false;  // S is a real (LinuxCNC User Manual, "G-code Overview", "S")
     return o;
   }
@@ -182,6 +200,7 @@ inline std::string write(const program& p, const write_options& options = {}) {
   writer w(p.language, p.file, options);
   std::string out;
   for (const block& b : p.blocks) w.write(out, b);
+  w.finish(out);
   return out;
 }
 

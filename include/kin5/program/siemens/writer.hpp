@@ -2,7 +2,10 @@
 /// Blocks written as Siemens 840D text, one line per block, in the order
 /// `N  TRAORI/TRAFOOF  G710/G700  G93/G94  G90/G91 G17-G19 G40  kept words  G54…  SUPA  G17-G19  G0-G3  X Y Z A B C  A3= B3= C3=
 /// I J K / CR=  F  S  T  D H T="name"  M  ;comment`. Blocks read from another dialect keep their
-/// passthrough text and kept words in a comment. Units are written `G710` (mm) or `G700` (inch),
+/// passthrough text and kept words in a comment; such a program opens with the punch-tape header
+/// `%_N_NAME_MPF` and `;$PATH=/_N_MPF_DIR` (its name made legal, `legal_program_name`), never
+/// with the other dialect's frame (`%`), and a block after its end is refused unless it is only a
+/// comment (program_end.hpp). Units are written `G710` (mm) or `G700` (inch),
 /// the forms that also set the unit of F: after `G700` lengths and per-minute feeds are written in
 /// inches, with one decimal more. A block Siemens cannot express (a rapid arc, an arc without a
 /// known start point) throws `std::invalid_argument` ("file:line: reason"). A dwell is
@@ -21,6 +24,8 @@
 #include "../block.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
+#include "../program_end.hpp"
+#include "../program_name.hpp"
 #include "../text.hpp"
 #include "../units.hpp"
 #include "../work_offsets.hpp"
@@ -38,6 +43,9 @@ struct write_options {
   int feed_decimals = 1;    ///< F (mm/min or 1/min) and S (1/min)
   int finest_feed_decimals = detail::finest_rate_decimals;  ///< more decimals for a small F or S, up to these (rate_decimals)
   int vector_decimals = 7;  ///< A3= B3= C3= tool-axis components
+  /// The program's name when known ahead (`program_name`: the source's, or the output file's),
+  /// for the header of a program read in another dialect; else `PGM`.
+  std::optional<std::string> program_name;
 };
 
 namespace detail {
@@ -67,6 +75,31 @@ inline std::string program_file_name(std::string name) {
   if (!(name.size() > 4 && lexing::upper(name.substr(name.size() - 4)) == "_SPF")) name += "_MPF";
   return "%_N_" + name;
 }
+
+/// Whether `upper` is a name Windows reserves (CON, PRN, AUX, NUL, COM1…9, LPT1…9), which
+/// SINUMERIK does not take as a program name.
+inline bool reserved_name(std::string_view upper) {
+  if (upper == "CON" || upper == "PRN" || upper == "AUX" || upper == "NUL") return true;
+  return upper.size() == 4 && (upper.starts_with("COM") || upper.starts_with("LPT")) && upper[3] >= '1' && upper[3] <= '9';
+}
+
+}  // namespace detail
+
+/// `name` as a SINUMERIK program name (SINUMERIK ONE Programming Manual 12/2019 §2.2.1 p. 42):
+/// letters, digits and `_` (any other byte becomes `_`); the first two characters two letters or
+/// `_` and a letter, else `PGM_` in front (also of a name Windows reserves: CON, COM1, …); at
+/// most 24 characters, the rest cut off; `PGM` for an empty name.
+inline std::string legal_program_name(std::string name) {
+  if (name.empty()) return "PGM";
+  for (char& c : name)
+    if (!detail::is_ident_char(c)) c = '_';
+  const bool starts = name.size() >= 2 && (is_letter(name[0]) || name[0] == '_') && is_letter(name[1]);
+  if (!starts || detail::reserved_name(lexing::upper(name))) name = "PGM_" + name;
+  if (name.size() > 24) name.resize(24);
+  return name;
+}
+
+namespace detail {
 
 inline std::optional<arc_plane> plane_of(std::string_view kept_word) {
   if (kept_word.size() < 2 || to_upper(kept_word[0]) != 'G') return std::nullopt;
@@ -108,12 +141,20 @@ class writer {
   /// `std::invalid_argument` ("file:line: reason") for a block Siemens cannot express.
   void write(std::string& out, const block& b) {
     const std::string& file = b.where.file.empty() ? program_file_ : b.where.file.str();
+    if (!same_) {
+      if (b.framing) return;  // another dialect's frame (`%`): the header stands for it
+      if (end_.after_end(b)) return after_end(out, b, file);
+      if (!opened_) open(out);
+    } else if (b.framing) {  // `;$PATH=…` as read: a path statement starts in the first column
+      out += detail::checked_line(b.text, b, file) + '\n';
+      return;
+    }
     if (b.passthrough) {
       out += detail::checked_line(same_ ? b.text : "; " + b.text, b, file) + '\n';
       return;
     }
     if (b.state.dwell_s) return dwell(out, b, file);
-    if (b.program_begin) {
+    if (b.program_begin && same_) {
       out += detail::checked_line(detail::program_file_name(*b.program_begin), b, file) + '\n';
       written_ = detail::modal_state{};
       model_motion_.reset();
@@ -144,6 +185,8 @@ class writer {
 
  private:
   bool same_;                                // the blocks were read as Siemens
+  bool opened_ = false;                      // the header written (another dialect's program)
+  source_end end_;                           // where another dialect's program stops running
   std::string program_file_;
   write_options options_;
   detail::modal_state written_;              // what the written text leaves the controller in
@@ -153,6 +196,24 @@ class writer {
   std::optional<long long> selected_tool_;   // the last T written
   bool inch_ = false;                        // G700 written: lengths and per-minute F in inches
   bool inverse_time_ = false;                // G93 written: F is not a length
+
+  /// The punch-tape header of a program read in another dialect, its first two lines: the name
+  /// (`%_N_NAME_MPF`, a main program) and the directory it is loaded into (SINUMERIK 840D/840Di/
+  /// 810D Operator's Guide HMI Advanced 03.04 §7.3 p. 7-369: `%` in the first column of the first
+  /// line, `;$PATH=` the next block; docs/dialects/siemens.md).
+  void open(std::string& out) {
+    opened_ = true;
+    out += "%_N_" + legal_program_name(options_.program_name.value_or("")) + "_MPF\n;$PATH=/_N_MPF_DIR\n";
+  }
+
+  /// A block after the source's end with no effect (`source_end`): its comment, if any.
+  static void after_end(std::string& out, const block& b, const std::string& file) {
+    if (!b.comment || b.comment->empty()) return;
+    std::string c = "; " + *b.comment;
+    std::replace(c.begin(), c.end(), '\n', ' ');
+    std::replace(c.begin(), c.end(), '\r', ' ');
+    out += detail::checked_line(std::move(c), b, file) + '\n';
+  }
 
   [[noreturn]] static void fail(const block& b, const std::string& file, const std::string& why) {
     throw std::invalid_argument(file + ":" + std::to_string(b.where.line) + ": " + why);
@@ -325,7 +386,9 @@ class writer {
 /// Writes `p` as a Siemens 840D program, one line per block (see the file comment). Throws
 /// `std::invalid_argument` ("file:line: reason") for a block Siemens cannot express.
 inline std::string write(const program& p, const write_options& options = {}) {
-  writer w(p.language, p.file, options);
+  write_options chosen = options;
+  if (!chosen.program_name) chosen.program_name = name_of(p);
+  writer w(p.language, p.file, chosen);
   std::string out;
   for (const block& b : p.blocks) w.write(out, b);
   return out;

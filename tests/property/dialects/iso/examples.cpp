@@ -149,7 +149,8 @@ TEST_CASE("iso: blocks from another dialect") {
   k.text = "BLK FORM 0.1 Z";
   k.kept_words = {"BLK FORM 0.1 Z"};
   p.blocks = {l, cyc, k};
-  CHECK(iso::write(p) == "G53 G0 X1. Y2.\n;CYCL DEF 7.0 (DATUM)\n(BLK FORM 0.1 Z)\n");
+  // Framed as a FANUC program: %, the O line, the blocks, M30 (the source gives no end), %.
+  CHECK(iso::write(p) == "%\nO0001\nG53 G0 X1. Y2.\n;CYCL DEF 7.0 (DATUM)\n(BLK FORM 0.1 Z)\nM30\n%\n");
 }
 
 TEST_CASE("iso: a line not understood is refused and changes nothing, spaced kept words write back as they were") {

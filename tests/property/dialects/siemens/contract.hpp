@@ -23,7 +23,11 @@ struct contract<program::siemens::dialect> : usual_contract<program::siemens::di
       .etx_in_comment = "; a\x03~\n"};
   static constexpr comparison read_exactly{.locations = true};
 
-  static program::siemens::write_options fuzz_options() { return {6, 6, 6, 6}; }
+  static program::siemens::write_options fuzz_options() {
+    program::siemens::write_options o;
+    o.linear_decimals = o.angle_decimals = o.feed_decimals = o.finest_feed_decimals = 6;
+    return o;
+  }
   static constexpr comparison fuzz_read_back{.tolerance = 1e-6};
   static constexpr comparison fuzz_fixed_point{.tolerance = 1e-6};
 };

@@ -83,9 +83,10 @@ TEST_CASE("siemens: a whole program with header, set-up, TRAORI and end", "[siem
   CHECK(bl[9].m_codes.empty());  // M30 is in program_end only
   CHECK(bl[9].program_end == "SAJO");
   CHECK(r.warnings.empty());
+  // The path statement as read: `;$PATH=` in the first column (`; $PATH=` would be a comment).
   CHECK(siemens::write(r.parsed) ==
         "%_N_SAJO_MPF\n"
-        "; $PATH=/_N_MPF_DIR\n"
+        ";$PATH=/_N_MPF_DIR\n"
         "N10 G710 G94 G90 G17 SOFT FFWON G642\n"
         "N20 T=\"MILL_6\" D1 M6\n"
         "N30 S4000 M3\n"
@@ -250,6 +251,7 @@ TEST_CASE("siemens: writing another dialect's program", "[siemens][quirks]") {
   p.blocks = {begin, tcp, rapid, next, cycle, end};
   CHECK(siemens::write(p) ==
         "%_N_PART_1_MPF\n"
+        ";$PATH=/_N_MPF_DIR\n"
         "N0 G710\n"
         "N1 TRAORI ; M126\n"
         "N2 G0 Z100\n"
