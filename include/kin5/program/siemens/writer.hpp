@@ -2,7 +2,9 @@
 /// Blocks written as Siemens 840D text, one line per block, in the order
 /// `N  TRAORI/TRAFOOF  G710/G700  G93/G94  G90/G91 G17-G19 G40  kept words  G54…  SUPA  G17-G19  G0-G3  X Y Z A B C  A3= B3= C3=
 /// I J K / CR=  F  S  T  D H T="name"  M  ;comment`. Blocks read from another dialect keep their
-/// passthrough text and kept words in a comment. Units are written `G710` (mm) or `G700` (inch),
+/// passthrough text and kept words in a comment; their tool length compensation is the active
+/// tool's `D1` (off: `D0`), and one that applies another register than the loaded tool's is
+/// refused. Units are written `G710` (mm) or `G700` (inch),
 /// the forms that also set the unit of F: after `G700` lengths and per-minute feeds are written in
 /// inches, with one decimal more. A block Siemens cannot express (a rapid arc, an arc without a
 /// known start point) throws `std::invalid_argument` ("file:line: reason").
@@ -21,6 +23,7 @@
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
+#include "../tool_length.hpp"
 #include "../units.hpp"
 #include "../work_offsets.hpp"
 #include "modal.hpp"
@@ -117,6 +120,7 @@ class writer {
       model_motion_.reset();
     }
     const bool change = !same_ && std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
+    source_.apply(b);
     if (b.tool) selected_tool_ = *b.tool;
     if (change && !selected_tool_) fail(b, file, "tool change (M6) without a tool number");
     if (change && tcp_on_ && !(b.tcp && !*b.tcp)) out += "TRAFOOF\n";  // the transformation off for the change
@@ -125,7 +129,7 @@ class writer {
     motion(line, b, file);
     axes(line, b, file);
     arc_data(line, b, file);
-    tail(line, b);
+    tail(line, b, file);
     written_.move(b);
     if (line.empty() && !same_ && !b.program_begin && !b.text.empty()) {  // nothing Siemens can say: the source text
       line = "; " + b.text;
@@ -135,7 +139,10 @@ class writer {
     if (line.empty()) return;  // nothing to say (a lone header has been written)
     if (b.program_begin && b.number && line == "N" + std::to_string(*b.number)) return;
     out += detail::checked_line(std::move(line), b, file) + '\n';
-    if (change) out += "D1\n";  // the new tool's first cutting edge: its length and radius
+    if (change) {  // the new tool's first cutting edge: its length and radius (or none, after G49)
+      length_on_ = length_in_effect(source_) != tool_length::off;
+      out += *length_on_ ? "D1\n" : "D0\n";
+    }
     if (change && tcp_on_ && !b.tcp) out += "TRAORI\n";
     if (b.tcp) tcp_on_ = *b.tcp;
   }
@@ -151,6 +158,8 @@ class writer {
   std::optional<long long> selected_tool_;   // the last T written
   bool inch_ = false;                        // G700 written: lengths and per-minute F in inches
   bool inverse_time_ = false;                // G93 written: F is not a length
+  modal_state source_;                       // the source program's state after the block (another dialect's)
+  std::optional<bool> length_on_;            // D1 (true) or D0 (false) written last; empty: not known
 
   [[noreturn]] static void fail(const block& b, const std::string& file, const std::string& why) {
     throw std::invalid_argument(file + ":" + std::to_string(b.where.line) + ": " + why);
@@ -202,6 +211,23 @@ class writer {
     if (s.radius_compensation && *s.radius_compensation != cutter_side::off)
       fail(b, file, "cutter radius compensation (G41/G42) is not written yet");
     if (s.radius_compensation) detail::append_word(line, "G40");
+  }
+
+  /// Another dialect's tool length compensation: the active tool's first edge, `D1`, or `D0`
+  /// (SINUMERIK 840D sl Fundamentals, ch. 6 "Tool offsets": D selects the edge whose length and
+  /// radius apply, D0 none); nothing when that is in effect already. A length that is not the
+  /// loaded tool's own (ISO `G43 H5` with T1 loaded, or before any tool change) has no D form:
+  /// refused at the block that says it and at each move under it. After a tool change the writer
+  /// writes the D itself (`write`).
+  void length_word(std::string& line, const block& b, const std::string& file) {
+    if (same_) return;
+    if (length_in_effect(source_) == tool_length::other && (b.state.length_compensation == true || is_motion(b)))
+      fail(b, file, "tool length compensation " + length_register_text(source_) +
+                        ": an 840D applies the active tool's own length (D1), not another tool's register");
+    const auto& on = b.state.length_compensation;
+    if (!on || changes_tool(b) || length_on_ == *on) return;
+    detail::append_word(line, *on ? "D1" : "D0");
+    length_on_ = *on;
   }
 
   /// G54 … G57 (settable zero offsets 1 … 4), G505 … G599, G500 (none): the 840D's only forms
@@ -271,7 +297,7 @@ class writer {
   }
 
   /// F S T, D H T="name" (same dialect), M codes, the program end, the comment.
-  void tail(std::string& line, const block& b) {
+  void tail(std::string& line, const block& b, const std::string& file) {
     if (b.feed) {
       const int inch = inch_ && !inverse_time_ ? 1 : 0;  // in/min: one decimal more
       const double f = *b.feed / (inch ? mm_per_inch : 1.0);
@@ -281,6 +307,7 @@ class writer {
       number(line, "S", *b.spindle_rpm,
              rate_decimals(*b.spindle_rpm, options_.feed_decimals, options_.finest_feed_decimals, "spindle speed"));
     if (b.tool) detail::append_code(line, 'T', *b.tool);
+    length_word(line, b, file);
     if (same_) {
       for (const auto& w : b.kept_words)
         if (detail::is_late_kept(w)) detail::append_word(line, w);
