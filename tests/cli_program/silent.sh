@@ -163,6 +163,21 @@ case "$name" in
     esac
     nothing h2.out
     ;;
+  # On an 840D the working plane turns the tool length (G18: along Y) and the TRAORI orientation:
+  # another dialect's G18 is refused in Siemens output, and a Siemens move under G18 is refused
+  # as a source, while a length may be in effect (docs/dialects/siemens.md).
+  plane-length)
+    printf '%s\n' '%' 'O3000' 'G21 G90 G17' 'T1 M6' 'G43.4 H1' 'G18' 'G1 X0. Y0. Z50. A0. C0. F500.' 'G49' 'M30' \
+      '%' >p.nc
+    run 2 translate --from ac-trunnion --to ac-trunnion --from-dialect iso --to-dialect siemens -o p.mpf p.nc
+    error_at 'p.nc:6:1: error: cannot write the program as siemens: G18 while tool length compensation may be on'
+    nothing p.mpf
+    printf '%s\n' 'N10 T1 M6' 'N20 D1' 'N30 TRAORI' 'N40 G18' 'N50 G1 X0 Y0 Z50 A-30 B10 F500' 'N60 TRAFOOF' \
+      'N70 M30' >p.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p -o p.h p.mpf
+    error_at 'p.mpf:5:1: error: motion under G18 while tool length compensation may be on'
+    nothing p.h
+    ;;
   iso-g54)
     run 0 translate --from sajo-12000p --to dmu-80p --to-dialect iso -o e.nc "$example"
     has_line e.nc 'N20 G54'

@@ -4,7 +4,8 @@
 /// I J K / CR=  F  S  T  D H T="name"  M  ;comment`. Blocks read from another dialect keep their
 /// passthrough text and kept words in a comment; their tool length compensation is the active
 /// tool's `D1` (off: `D0`), and one that applies another register than the loaded tool's is
-/// refused. Units are written `G710` (mm) or `G700` (inch),
+/// refused, as is a plane G18/G19 while a length may be in effect (the 840D turns the length with
+/// the plane). Units are written `G710` (mm) or `G700` (inch),
 /// the forms that also set the unit of F: after `G700` lengths and per-minute feeds are written in
 /// inches, with one decimal more. A block Siemens cannot express (a rapid arc, an arc without a
 /// known start point) throws `std::invalid_argument` ("file:line: reason").
@@ -206,7 +207,7 @@ class writer {
     if (s.distance) detail::append_word(line, *s.distance == distance_mode::absolute ? "G90" : "G91");
     if (s.working_plane) {
       written_.plane = *s.working_plane;
-      detail::append_word(line, detail::plane_word(*s.working_plane));
+      plane_word(line, b, file, *s.working_plane);
     }
     if (s.radius_compensation && *s.radius_compensation != cutter_side::off)
       fail(b, file, "cutter radius compensation (G41/G42) is not written yet");
@@ -228,6 +229,20 @@ class writer {
     if (!on || changes_tool(b) || length_on_ == *on) return;
     detail::append_word(line, *on ? "D1" : "D0");
     length_on_ = *on;
+  }
+
+  /// A plane word G18 / G19 of another dialect's program, refused while a tool length may be in
+  /// effect: an 840D applies a milling tool's length along the axis normal to the working plane
+  /// (Y under G18, X under G19) and under TRAORI turns the tool's basic orientation with the plane
+  /// (SINUMERIK ONE Programming Manual 12/2019 §3.13.3.4 "Tool length and plane change"; Function
+  /// Manual W1 11/2006 §2.7 "Basic tool orientation", p. 130), where the source dialects keep it
+  /// along the tool axis. After `D0` (no length) it is written.
+  void plane_word(std::string& line, const block& b, const std::string& file, arc_plane p) {
+    if (!same_ && p != arc_plane::xy && length_on_ != false)
+      fail(b, file, std::string(detail::plane_word(p)) + " while tool length compensation may be on: an 840D would "
+                        "apply the tool length along " + (p == arc_plane::zx ? "Y" : "X") +
+                        " (and turn the tool orientation under TRAORI), not along the tool axis");
+    detail::append_word(line, detail::plane_word(p));
   }
 
   /// G54 … G57 (settable zero offsets 1 … 4), G505 … G599, G500 (none): the 840D's only forms
@@ -254,7 +269,7 @@ class writer {
     if (b.arc) {
       if (!detail::is_arc(written_.motion)) fail(b, file, "arc data without G2 or G3 cannot be written");
       if (b.arc->plane != written_.plane) {
-        detail::append_word(line, detail::plane_word(b.arc->plane));
+        plane_word(line, b, file, b.arc->plane);
         written_.plane = b.arc->plane;
       }
     }
