@@ -141,6 +141,47 @@ case "$name" in
     error_at 'nt.mpf:1:1: error: cannot write the program as iso: block cannot be written in ISO: G43.4: tool-tip tracking switched on before any tool change: no tool gives its length offset H'
     nothing nt.nc
     ;;
+  # ISO tool length compensation (G43.4 H n) into the dialects that take the length with the
+  # tool: H equal to the loaded tool is that tool's own length (Siemens D1, Heidenhain TOOL CALL,
+  # LinuxCNC G43 H1), never a comment; H of another tool is refused at its block (Siemens,
+  # Heidenhain) or at the tracked move it would apply to (LinuxCNC), nothing written.
+  length-h-siemens|length-h-heidenhain|length-h-linuxcnc)
+    to=${name#length-h-}
+    for h in 1 2; do
+      printf '%s\n' '%' 'O3000' 'G21 G90 G17' 'T1 M6' "G43.4 H$h" 'G1 X0. Y0. Z50. A0. C0. F500.' 'X10.' 'G49' \
+        'M30' '%' >h$h.nc
+    done
+    set -- --from ac-trunnion --to ac-trunnion --from-dialect iso --to-dialect "$to"
+    run 0 translate "$@" -o h1.out h1.nc
+    no_line h1.out '.*H1.*iso.*|.*iso.*H1.*'
+    case $to in
+      siemens) has_line h1.out 'D1'; has_line h1.out 'TRAORI'; has_line h1.out 'TRAFOOF D0' ;;
+      heidenhain) has_line h1.out '[0-9]+ TOOL CALL 1 Z'; has_line h1.out '[0-9]+ M128' ;;
+      linuxcnc) has_line h1.out 'G43 H1 M428( \(G43\.4 H1\))?' ;;
+    esac
+    run 2 translate "$@" -o h2.out h2.nc
+    case $to in
+      siemens) error_at 'h2.nc:5:1: error: cannot write the program as siemens: tool length compensation H2 while tool 1 is loaded' ;;
+      heidenhain) error_at 'h2.nc:5:1: error: cannot write the program as heidenhain: block cannot be written in heidenhain: tool length compensation H2 while tool 1 is loaded' ;;
+      linuxcnc) error_at 'h2.nc:6:1: error: cannot write the program as linuxcnc: block cannot be written in LinuxCNC: a move under tracking while G43 does not hold the loaded tool' ;;
+    esac
+    nothing h2.out
+    ;;
+  # On an 840D the working plane turns the tool length (G18: along Y) and the TRAORI orientation:
+  # another dialect's G18 is refused in Siemens output, and a Siemens move under G18 is refused
+  # as a source, while a length may be in effect (docs/dialects/siemens.md).
+  plane-length)
+    printf '%s\n' '%' 'O3000' 'G21 G90 G17' 'T1 M6' 'G43.4 H1' 'G18' 'G1 X0. Y0. Z50. A0. C0. F500.' 'G49' 'M30' \
+      '%' >p.nc
+    run 2 translate --from ac-trunnion --to ac-trunnion --from-dialect iso --to-dialect siemens -o p.mpf p.nc
+    error_at 'p.nc:6:1: error: cannot write the program as siemens: G18 while tool length compensation may be on'
+    nothing p.mpf
+    printf '%s\n' 'N10 T1 M6' 'N20 D1' 'N30 TRAORI' 'N40 G18' 'N50 G1 X0 Y0 Z50 A-30 B10 F500' 'N60 TRAFOOF' \
+      'N70 M30' >p.mpf
+    run 2 translate --from sajo-12000p --to dmu-80p -o p.h p.mpf
+    error_at 'p.mpf:5:1: error: motion under G18 while tool length compensation may be on'
+    nothing p.h
+    ;;
   iso-g54)
     run 0 translate --from sajo-12000p --to dmu-80p --to-dialect iso -o e.nc "$example"
     has_line e.nc 'N20 G54'

@@ -80,6 +80,9 @@ struct controller {
   /// another control drops the fraction): a spindle speed with a fraction cannot be written.
   bool whole_spindle_speed = false;
   dwell_input dwell{};  ///< the dwells it takes (dwell.hpp): a dwell outside them is refused
+  /// The working plane turns the tool length: under G18/G19 a milling tool's length acts along Y/X
+  /// (and turns a TRAORI tool orientation), not along the tool axis (SINUMERIK 840D).
+  bool plane_turns_tool_length = false;
 };
 
 /// A word that a dialect's reader keeps without interpreting it (`block::kept_words`) and whose

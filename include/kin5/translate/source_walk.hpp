@@ -357,6 +357,14 @@ class source_walker {
                     "before machine-coordinate motion"));
       return false;
     }
+    if (const auto plane = modal_.working_plane; plane && *plane != program::arc_plane::xy &&
+        program::controller_of(context_.language).plane_turns_tool_length && modal_.length_compensation != false) {
+      to.fail(at(b, std::string("motion under ") + (*plane == program::arc_plane::zx ? "G18" : "G19") +
+                        " while tool length compensation may be on: the 840D applies the tool length along " +
+                        (*plane == program::arc_plane::zx ? "Y" : "X") + " (and turns the tool orientation under "
+                        "TRAORI), not along the tool axis kin5 reads; program the move under G17"));
+      return false;
+    }
     const auto kind = modal_.motion_of(b);
     if (!kind) to.warn(at(b, "no motion mode in effect; taken as linear (G1)"));
     s.motion = kind.value_or(program::motion_kind::linear);

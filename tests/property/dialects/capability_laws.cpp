@@ -122,6 +122,16 @@ struct arc_centre_block {
 };
 const bool law_4 = for_every_dialect<arc_centre_block>("capability: arc centre as a block", "[dialects][capabilities]");
 
+/// A tool change: tracking needs a tool's length (ISO writes G43.4 with the tool's H, and its
+/// reader refuses G43.4 without an H the program has said).
+block change_to_tool_1() {
+  block b;
+  b.where = {"in.nc", 2, 1};
+  b.tool = 1;
+  b.m_codes = {6};
+  return b;
+}
+
 /// Tool-tip tracking switched on, then a move with a tool-axis vector.
 program tracked_vector_move() {
   block on;
@@ -129,7 +139,7 @@ program tracked_vector_move() {
   on.tcp = true;
   block b = move(1, 2, 3, 4);
   b.axes.tool_axis = kin5::vec3{0, 0.6, 0.8};
-  return of({on, b});
+  return of({change_to_tool_1(), on, b});
 }
 
 template <class D>
@@ -149,7 +159,7 @@ struct tcp_switch {
     block on;
     on.where = {"in.nc", 3, 1};
     on.tcp = true;
-    const auto back = written_and_read<D>(of({on, move(1, 2, 3, 4)}));
+    const auto back = written_and_read<D>(of({change_to_tool_1(), on, move(1, 2, 3, 4)}));
     REQUIRE(back.has_value());  // never refused: without the words, the rest is written
     CHECK(any_block(back, [](const block& r) { return r.tcp == true; }) == D::can.tcp_switch);
   }

@@ -3,7 +3,10 @@
 // (docs/dialects/*.md): ISO, LinuxCNC and Siemens read and write the three as codes; Heidenhain
 // and APT write no word for them, because their text is absolute and uncompensated anyway and
 // every circle carries its own plane (a Heidenhain CC line; APT writes no circles from NC), so
-// the plane is compared there through the arcs only, not as a state; both refuse G91.
+// the plane is compared there through the arcs only, not as a state; both refuse G91. Siemens
+// refuses G18/G19 of another dialect while a tool length may be in effect (the 840D turns the
+// length with the plane; docs/dialects/siemens.md), as here, where no D0 is ever said; and the
+// translation refuses a Siemens source's move under its own G18/G19 for the same reason.
 //
 // 1. writers and readers: a generated program of state words and moves, written by the target's
 //    writer and read back by its reader, is in the same effective state at every move (absolute,
@@ -39,6 +42,28 @@ const std::vector<dialect> reading_dialects = {id_of<iso::dialect>(), id_of<linu
 bool writes_plane(dialect d) { return d != id_of<heidenhain::dialect>() && d != id_of<apt::dialect>(); }
 /// Whether dialect `d` can say incremental positioning.
 bool writes_incremental(dialect d) { return d != id_of<heidenhain::dialect>() && d != id_of<apt::dialect>(); }
+
+/// Whether writing `blocks` of dialect `from` in `to` is refused for a G18/G19 under a tool
+/// length (Siemens from another dialect; the programs here never switch the length off).
+bool plane_turns_length(dialect from, dialect to, const std::vector<block>& blocks) {
+  if (to != id_of<siemens::dialect>() || from == to) return false;
+  for (const block& b : blocks)
+    if (b.state.working_plane && *b.state.working_plane != arc_plane::xy) return true;
+  return false;
+}
+constexpr const char* plane_refusal = "while tool length compensation may be on";
+
+/// Whether a Siemens source moves under its own G18/G19: refused by the translation, which reads
+/// the point as the tip along the tool axis where the 840D puts the length along Y or X.
+bool moves_under_turned_length(dialect from, const std::vector<block>& blocks) {
+  if (from != id_of<siemens::dialect>()) return false;
+  modal_state m;
+  for (const block& b : blocks) {
+    m.apply(b);
+    if (is_motion(b) && m.working_plane && *m.working_plane != arc_plane::xy) return true;
+  }
+  return false;
+}
 
 /// The effective state at a move: plane (when compared), distance mode, radius compensation.
 using effective = std::tuple<std::optional<arc_plane>, distance_mode, cutter_side>;
@@ -93,15 +118,18 @@ TEST_CASE("modal words: every ordered pair of dialects writes the plane, G90 and
       g91.state.distance = distance_mode::incremental;
       p.blocks.insert(p.blocks.begin() + *rc::gen::inRange<std::size_t>(0, p.blocks.size() + 1), g91);
     }
+    const bool turns = plane_turns_length(from, to, p.blocks);
     std::string text;
     try {
       text = write(to, p);
     } catch (const std::invalid_argument& e) {
-      RC_ASSERT(incremental);
-      RC_ASSERT(std::string(e.what()).find("incremental positioning (G91)") != std::string::npos);
+      RC_ASSERT(incremental || turns);
+      RC_ASSERT(std::string(e.what()).find(incremental ? "incremental positioning (G91)" : plane_refusal) !=
+                std::string::npos);
       return;
     }
     RC_ASSERT(!incremental);
+    RC_ASSERT(!turns);
     const read_result back = read(to, text, "back");
     RC_ASSERT(back.ok());
     RC_ASSERT(trace_of(back.parsed.blocks, writes_plane(to)) == trace_of(p.blocks, writes_plane(to)));
@@ -127,6 +155,17 @@ TEST_CASE("modal words: translation keeps the plane, G90 and G40 in every ordere
     string_sink out;
     const auto run = stream_text(*t, text, from, "m", to, out);
     RC_ASSERT(run.input.ok());
+    if (moves_under_turned_length(from, p.blocks)) {
+      RC_ASSERT(!t->result().ok());
+      RC_ASSERT(t->result().errors.front().message.find("motion under G1") != std::string::npos);
+      RC_ASSERT(t->result().errors.front().message.find(plane_refusal) != std::string::npos);
+      return;
+    }
+    if (plane_turns_length(from, to, p.blocks)) {
+      RC_ASSERT(run.writer_error.has_value());
+      RC_ASSERT(run.writer_error->message.find(plane_refusal) != std::string::npos);
+      return;
+    }
     RC_ASSERT(run.ok(*t));
     const read_result back = read(to, out.text, "back");
     RC_ASSERT(back.ok());

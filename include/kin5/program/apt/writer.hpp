@@ -18,6 +18,7 @@
 #include "../block.hpp"
 #include "../number.hpp"
 #include "../program_end.hpp"
+#include "../tool_length.hpp"
 #include "../units.hpp"
 #include "../work_offsets.hpp"
 #include "vocabulary.hpp"
@@ -72,6 +73,7 @@ class writer {
     if (b.state.distance == distance_mode::incremental) fail(b, "incremental positioning (G91) has no APT form");
     if (b.state.radius_compensation && *b.state.radius_compensation != cutter_side::off)
       fail(b, "cutter radius compensation (G41/G42) is not written yet");
+    length_check(b);
     lines_.clear();
     foreign_note_ = ends_ = false;
     if (b.metric) inch_ = !*b.metric;
@@ -98,6 +100,7 @@ class writer {
   source_end end_;  // where another dialect's program stops running
   bool rapid_pending_ = false;
   std::optional<long long> selected_tool_;  // the last tool number written
+  modal_state source_;                      // the source program's state after the block (another dialect's)
   bool inch_ = false;          // UNITS/INCHES written: lengths in inches
   bool inverse_time_ = false;  // inverse-time feed in effect (this block's or an earlier one's)
   std::vector<std::string> lines_;  // the block's statements
@@ -129,6 +132,23 @@ class writer {
     out += "DELAY/" + format_number(*b.state.dwell_s, detail::dwell_steps.decimals);
     if (b.comment) out += " $$ " + one_line(b, *b.comment);
     out += '\n';
+  }
+
+  /// Another dialect's tool length compensation: a GOTO point is the tip of the tool loaded
+  /// (LOADTL; ISO 4343:2000, ISO 3592: CL data are tool positions), so G43
+  /// for that tool needs no statement. A length of another register (ISO `G43 H5` with tool 1
+  /// loaded, or before any tool change) is refused at the block that says it and at each move
+  /// under it; a move with the length switched off (G49), whose point is the spindle's gauge
+  /// point, is refused too.
+  void length_check(const block& b) {
+    if (same_) return;
+    source_.apply(b);
+    const tool_length t = length_in_effect(source_);
+    if (t == tool_length::other && (b.state.length_compensation == true || is_motion(b)))
+      fail(b, "tool length compensation " + length_register_text(source_) + " (a GOTO point is the loaded tool's tip)");
+    if (t == tool_length::off && is_motion(b))
+      fail(b, "a move with tool length compensation off (G49): its point is the spindle's gauge point, and a GOTO "
+              "point is the tool tip");
   }
 
   /// PARTNO, APT's own kept statements (MULTAX), UNITS/MM, LOADTL.

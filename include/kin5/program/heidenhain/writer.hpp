@@ -31,6 +31,7 @@
 #include "../program_end.hpp"
 #include "../program_name.hpp"
 #include "../text.hpp"
+#include "../tool_length.hpp"
 #include "../units.hpp"
 #include "../work_offsets.hpp"
 #include "lexer.hpp"
@@ -101,6 +102,7 @@ class writer {
       unit_change(b_mm, !*b_mm.metric, bi);
     }
     const block b = in_program_unit(b_mm);
+    length_check(b, bi);
     if (b.state.work_offset) preset_selection(b, *b.state.work_offset, bi);
     state_words(b, bi);
     const bool dropped = carry_feed(b);
@@ -174,6 +176,7 @@ class writer {
   source_end source_end_;                  // where another dialect's program stops running
   std::optional<bool> inch_;  // the unit BEGIN PGM said (INCH: true)
   std::optional<long long> selected_tool_;  // the last tool number written or selected
+  modal_state source_;                      // the source program's state after the block (another dialect's)
   bool tcp_on_ = false;                     // M128 / FUNCTION TCPM in effect after the last block
   // From a coordinate-less block of another dialect, for the next move that has no F of its own.
   std::optional<double> pending_feed_;
@@ -370,6 +373,24 @@ class writer {
     if (!header) add("CYCL DEF 9.0 DWELL TIME");
     add("CYCL DEF 9.1 DWELL " + format_number(*b.state.dwell_s, detail::dwell_steps.decimals));
     emit(out, b, {}, false);
+  }
+
+  /// Another dialect's tool length compensation: a TNC applies the called tool's own length from
+  /// TOOL CALL on, always (TNC 620 User's Manual 73498x-01 §5.3 "Tool compensation", p. 164: it
+  /// is cancelled only by calling a tool of length 0), so G43 for that tool needs no word. A length of another
+  /// register (ISO `G43 H5` with tool 1 called, or before any tool call) is refused at the block
+  /// that says it and at each move under it; a move with the length switched off (G49), whose
+  /// point is the spindle's gauge point, is refused too.
+  void length_check(const block& b, std::size_t bi) {
+    if (same_) return;
+    source_.apply(b);
+    const tool_length t = length_in_effect(source_);
+    if (t == tool_length::other && (b.state.length_compensation == true || is_motion(b)))
+      fail(b, bi, "tool length compensation " + length_register_text(source_) +
+                      " (a TNC applies the called tool's own length, from TOOL CALL)");
+    if (t == tool_length::off && is_motion(b))
+      fail(b, bi, "a move with tool length compensation off (G49): a TNC applies the called tool's length, so the "
+                  "point would be the tool tip instead of the spindle's gauge point");
   }
 
   /// A preset table row selected by Cycle 247 (TNC 640 User's Manual for Cycle Programming,

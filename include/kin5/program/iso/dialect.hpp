@@ -40,9 +40,9 @@ struct dialect {
                                     .whole_spindle_speed = true, .dwell = detail::dwell_steps};
   /// Catalog machines whose controller reads it (CN1624613's 4-axis machine).
   static constexpr std::array<std::string_view, 1> default_for{"a-rotary-4axis"};
-  /// Kept words a comment would lose: tool length compensation without tracking.
-  static constexpr std::array<kept_word_effect, 1> lost_as_comment{
-      {{"G43", kept_word_effect::match::code, "tool length compensation (G43, without tool-tip tracking)"}}};
+  /// Kept words a comment would lose: none (the dwell and tool length compensation are read into
+  /// the model and translated or refused by the writers).
+  static constexpr std::array<kept_word_effect, 0> lost_as_comment{};
   using write_options = iso::write_options;
   using writer = iso::writer;
   static void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,

@@ -3,13 +3,15 @@
 /// G0–G3 with `I J K` (incremental centre) or `R`, G17/G18/G19, `G43.4` / `G43.5` (tool-tip
 /// tracking; under G43.5 `I J K` in G0/G1 blocks are the tool-axis vector), `G49`, G93/G94, G21,
 /// `G53` / `G28` / `G30` (machine coordinates), M30/M2, G20/G21 (an inch program's lengths and
-/// per-minute feeds are converted to mm: units.hpp). Errors: G91 (except in `G91 G28`/`G30`
+/// per-minute feeds are converted to mm: units.hpp). Tool length compensation: `G43 H n`,
+/// `G43.4 H n`, `G43.5 H n` switch it on with offset n (without H: the last H of the program),
+/// `G49` off (`state.length_compensation`, `length_register`). Errors: G91 (except in `G91 G28`/`G30`
 /// homing blocks), G95, a unit change after motion, active frames (G68, G68.2, G51, G52 with
 /// offsets, G92), canned cycles, G41/G42, G10, macro and subprogram calls (G65, G66, M98, M97,
-/// M99), a move while G91 is in effect, and any word not understood, moving or not: each at its
-/// word, naming it. G17/G18/G19, G90 (G91 of a homing block) and G40 are read into `state`
+/// M99), a move while G91 is in effect, G44, `H` without G43/G43.4/G43.5, G43 without H before
+/// any H, and any word not understood, moving or not: each at its word, naming it. G17/G18/G19, G90 (G91 of a homing block) and G40 are read into `state`
 /// (working plane, distance mode, radius compensation off), `G4 X2.` / `G4 P2000` into
-/// `state.dwell_s` (seconds; a block of its own). Harmless modal words (G05.1 Q1, H1,
+/// `state.dwell_s` (seconds; a block of its own). Harmless modal words (G05.1 Q1,
 /// D1, …) are kept as written; `%` lines pass through. Work offsets
 /// G54 … G59 and G54.1 P n are read into `state.work_offset` (work_offsets.hpp). A parameter
 /// assigned a number (`#1 = 5000`, a line of its own, passed through) stands for that number in
@@ -47,6 +49,8 @@ struct line_words {
   const word* dwell_time = nullptr;  ///< that X or P
   const word* extended = nullptr;  ///< G54.1: its P is the number of the extended work offset
   const word* offset = nullptr;    ///< the work-offset word of the block
+  const word* g43 = nullptr;       ///< G43, G43.4 or G43.5: H is its length offset
+  const word* h = nullptr;         ///< the H word
   const word* motion = nullptr;
   std::optional<double> ijk[3];
   const word* ijk_word[3] = {};
@@ -69,6 +73,7 @@ struct reader_state {
   bool inch = false;          // G20 active: lengths are inches
   bool inverse_time = false;  // G93 active: F is not a length
   bool moved = false;         // a block has moved: the unit is fixed
+  std::optional<long long> length_register;  // the last H given: G43 without H takes it
 };
 
 /// The words a dialect built on this reader reads itself (LinuxCNC: program/linuxcnc/words.hpp).
@@ -205,6 +210,7 @@ class basic_reader {
       const int g = g_code(w.value);
       if (g == 280 || g == 300) l.homing = true;
       if (g == 435) l.g43_5 = true;
+      if (g == 430 || g == 434 || g == 435) l.g43 = &w;
       if (g == 50 || g == 51 || g == 80) l.uses_pq = true;
       if (g == 40) l.dwell = &w;
       if (g == 541 && !l.extended) l.extended = &w;  // its P may come first
@@ -235,6 +241,7 @@ class basic_reader {
     }
     for (const word& w : words_) take(b, w, l);
     if (l.dwell && !l.suppress && !failed_) dwell(b, l);  // after an error in a word: that one only
+    length_offset(b, l);
     if (l.extended && !b.state.work_offset && !l.suppress)
       error(l.extended->column, "G54.1 needs P n, the number of the extended work offset");
     machine_or_incremental(b);
@@ -305,7 +312,11 @@ class basic_reader {
           b.program_begin = std::string(w.digits);
         return;
       case 'M': return m_word(b, w, l);
-      case 'H': case 'D': return keep();
+      case 'H':
+        if (l.h) return error(w.column, "word 'H' appears twice");
+        l.h = &w;
+        return;
+      case 'D': return keep();
       case 'P':
         if (l.extended && !b.state.work_offset) return extended_offset(b, w, l);
         if (l.dwell) return dwell_time(w, l);
@@ -334,6 +345,29 @@ class basic_reader {
     if (lexing::is_whole(w.value)) return true;
     error(w.column, std::string(what) + " must be a whole number");
     return false;
+  }
+
+  /// G43 / G43.4 / G43.5 with H n: tool length compensation on with offset n (FANUC B-63942EN/02
+  /// App. B; without H the offset of the last H, which before any H the program does not say);
+  /// H anywhere else is refused: under G43 a lone H changes the offset. In a refused construct's
+  /// block (G44, M98, a cycle) H is kept with it.
+  void length_offset(block& b, line_words& l) {
+    if (l.suppress) {
+      if (l.h) b.kept_words.emplace_back(l.h->text);
+      return;
+    }
+    if (l.h && !l.g43)
+      return error(l.h->column, "word 'H' without G43, G43.4 or G43.5 (H is the length offset they apply; alone "
+                                "it would change the offset in effect)");
+    if (!l.g43) return;
+    if (l.h && !whole(*l.h, "length offset number H")) return;
+    if (l.h && l.h->value < 0) return error(l.h->column, "length offset number H must not be negative");
+    if (l.h) state_.length_register = static_cast<long long>(l.h->value);
+    if (!state_.length_register)
+      return error(l.g43->column, std::string(l.g43->text) + " without H: the length offset in effect before the "
+                                  "program is not known (G43 H n names it)");
+    b.state.length_compensation = true;
+    b.state.length_register = state_.length_register;
   }
 
   void m_word(block& b, const word& w, line_words& l) {
@@ -388,9 +422,12 @@ class basic_reader {
     } else if (g == 930 || g == 940) {
       state_.inverse_time = g == 930;
       b.feed_mode = g == 930 ? feed_unit::inverse_time : feed_unit::per_minute;
+    } else if (g == 430) {
+      return;  // tool length compensation, with its H: `length_offset`
     } else if (g == 434 || g == 435 || g == 490) {
       b.tcp = g != 490;
       state_.vector_tcp = g == 435;
+      if (g == 490) b.state.length_compensation = false;
     } else if (g == 530 || g == 280 || g == 300) {
       b.machine_coordinates = true;
       keep();
@@ -426,6 +463,7 @@ class basic_reader {
   /// Why G code `g` (times ten) is refused, after its name; empty for a code not understood.
   static std::string refusal_of_g(int g) {
     if (g == 410 || g == 420) return ": cutter radius compensation is not supported yet (the path would be off by the radius)";
+    if (g == 440) return ": negative tool length compensation is not supported (no other dialect subtracts the length)";
     if (g == 100) return ": setting offsets from the program is not supported (later moves would use other offsets)";
     if (g == 650 || g == 660 || g == 661) return ": a macro call is not supported (the motion it makes would be lost)";
     if (g == 920 || g == 921) return ": a coordinate system shift is not supported (the points that follow are in another frame)";

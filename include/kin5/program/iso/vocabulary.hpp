@@ -29,7 +29,7 @@ inline int g_code(double v) {
 /// dwell G4 are read into the block's state instead.
 inline bool kept_g(int g) {
   switch (g) {
-    case 50: case 51: case 80: case 131: case 150: case 430:
+    case 50: case 51: case 80: case 131: case 150:
     case 500: case 501:
     case 610: case 611: case 640: case 690: case 800: case 980: case 990:
       return true;

@@ -1,6 +1,6 @@
 /// @file program/iso/writer.hpp
 /// Blocks written as ISO / Fanuc G code, one block per line, words in the order
-/// `N  G90/G91 G17-G19 G40  kept G  G0-G3  G43.4/G43.5/G49  G93/G94  G21/G20  X Y Z A B C  I J K  R  F S T M
+/// `N  G90/G91 G17-G19 G40  kept G  G0-G3  G43.4 H/G43.5 H/G43 H/G49  G93/G94  G21/G20  X Y Z A B C  I J K  R  F S T M
 /// kept  (comment)`; a dwell is `N  G4 X1.5  (comment)`, a line of its own.
 /// A program read in another dialect is framed as a FANUC program: `%`, `O` and its number, the
 /// blocks, an end (`M30` when the source gives none; `finish`), `%`; the other dialect's frame
@@ -136,12 +136,13 @@ class writer {
     if (b.feed_mode) inverse_time_ = *b.feed_mode == feed_unit::inverse_time;
     block in_unit = b;
     if (inch_) mm_to_inches(in_unit, !inverse_time_);
-    const bool change = !same_ && std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
+    const bool loads = std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
+    const bool change = !same_ && loads;
     if (b.tool) selected_tool_ = *b.tool;
+    if (loads) active_tool_ = selected_tool_;
     if (change) {
       if (!selected_tool_) fail(b, "tool change (M6) without a tool number");
       if (tcp_on_ && !(b.tcp && !*b.tcp)) out += "G49\n";  // tool-tip tracking off for the change
-      active_tool_ = selected_tool_;
     }
     head(in_unit);
     modes(in_unit, vector_tcp_ahead);
@@ -176,7 +177,7 @@ class writer {
   bool vector_tcp_ = false;
   bool tcp_on_ = false;                    // G43.4 / G43.5 in effect after the last block
   std::optional<long long> selected_tool_;  // the last T written
-  std::optional<long long> active_tool_;    // the tool of the last change written (another dialect's)
+  std::optional<long long> active_tool_;    // the tool of the last change written
   bool inch_ = false;          // G20 written: lengths in inches
   bool inverse_time_ = false;  // G93 written: F is not a length
   arc_plane plane_ = arc_plane::xy;
@@ -311,22 +312,24 @@ class writer {
     if (b.tcp) {
       vector_tcp_ = *b.tcp && vector_tcp_ahead;
       words_.push_back(!*b.tcp ? "G49" : vector_tcp_ ? "G43.5" : "G43.4");
-      // Another dialect's TCP uses the active tool's own length: H is that tool's register (the
+      // H: the register the block names (ISO's own G43.4 H n, LinuxCNC's G43 H n), else, as
+      // another dialect's TCP uses the active tool's own length, that tool's register (the
       // offset number equal to the tool number, as tool-change macros set it). With no tool
-      // changed before, no register is known: refused (G43.4 without H takes whatever H is in
-      // effect on the control).
-      if (*b.tcp && !same_ && !active_tool_)
+      // changed before, no register is known: another dialect's is refused (G43.4 without H
+      // takes whatever H is in effect on the control); a block of ISO's own without one is
+      // written as it was given.
+      const auto h = b.state.length_register ? b.state.length_register : active_tool_;
+      if (*b.tcp && !same_ && !h)
         fail(b, std::string(vector_tcp_ ? "G43.5" : "G43.4") +
                     ": tool-tip tracking switched on before any tool change: no tool gives its length offset H");
-      if (*b.tcp && !same_) words_.push_back(code('H', *active_tool_));
+      if (*b.tcp && h) words_.push_back(code('H', *h));
     }
     if (b.state.length_compensation && !b.tcp) {  // without tool-tip tracking: G43 [H n] / G49
       words_.push_back(*b.state.length_compensation ? "G43" : "G49");
-      const auto h = *b.state.length_compensation ? b.state.length_register ? b.state.length_register
-                                                    : same_                 ? std::nullopt
-                                                                            : active_tool_
-                                                  : std::nullopt;
-      if (h) words_.push_back(code('H', *h));
+      const auto h = b.state.length_register ? b.state.length_register : active_tool_;
+      if (*b.state.length_compensation && !same_ && !h)
+        fail(b, "G43: tool length compensation switched on before any tool change: no tool gives its length offset H");
+      if (*b.state.length_compensation && h) words_.push_back(code('H', *h));
     }
     if (b.feed_mode) words_.push_back(*b.feed_mode == feed_unit::inverse_time ? "G93" : "G94");
     if (b.metric) words_.push_back(*b.metric ? "G21" : "G20");

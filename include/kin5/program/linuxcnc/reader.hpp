@@ -7,7 +7,7 @@
 /// |---|---|
 /// | `M428`, `G12.1 P1` | tool-tip tracking on (the TCP kinematics of the 5-axis trt configurations) |
 /// | `M429`, `G13.1` | tracking off (identity kinematics) |
-/// | `G43` (the loaded tool), `G43 H n` (tool n's table entry), `G49` | `state.length_compensation`, `length_register` |
+/// | `G43` (the loaded tool: its number is the register once an M6 has said it), `G43 H n` (tool n's table entry), `G49` | `state.length_compensation`, `length_register` |
 /// | `G54` … `G59`, `G59.1` … `G59.3` | `state.work_offset` 1 … 9 |
 /// | `G64 P… Q…`, `G91.1` | kept words (path blending tolerance, incremental arc centres: the default) |
 /// A numbered parameter assigned a number (`#1 = 5000`) stands for it, as in ISO (iso/reader.hpp);
@@ -50,6 +50,7 @@ struct line_words {
   const word* offset = nullptr; ///< the work-offset word
   const word* tcp = nullptr;    ///< the kinematics switch (M428, M429, G12.1, G13.1)
   const word* axis = nullptr;   ///< the first axis word
+  const word* t = nullptr;      ///< the T word (the tool an M6 of the line loads)
   bool g64 = false, radius = false, m6 = false;
 };
 
@@ -87,6 +88,7 @@ class own_words {
     for (const word& w : words)
       if (!own(w, b, l, error)) rest.push_back(w);
     finish(b, l, error);
+    loaded_length(b, l);
     words = std::move(rest);
   }
 
@@ -116,9 +118,19 @@ class own_words {
   std::optional<long long> selected_, loaded_;
   bool length_of_loaded_ = false, tracking_ = false, refused_ = false;
 
+  /// `G43` without H takes the length of the tool loaded now (LinuxCNC Manual, G43: "uses the
+  /// currently loaded tool"; the line's M6 runs first), and keeps it after a later M6: its
+  /// number is the register, once the program has loaded a tool.
+  void loaded_length(block& b, const line_words& l) const {
+    if (b.state.length_compensation != true || b.state.length_register || !l.g43 || g_code(l.g43->value) != 430) return;
+    const std::optional<long long> loaded = !l.m6 ? loaded_ : l.t ? std::optional<long long>(static_cast<long long>(l.t->value)) : selected_;
+    if (loaded) b.state.length_register = *loaded;
+  }
+
   static void classify(const word& w, line_words& l) {
     if (std::string_view("XYZABC").find(w.letter) != std::string_view::npos && !l.axis) l.axis = &w;
     if (w.letter == 'M' && w.value == 6) l.m6 = true;
+    if (w.letter == 'T' && lexing::is_whole(w.value)) l.t = &w;
     if (w.letter != 'G') return;
     const int g = g_code(w.value);
     if (g == 430 || g == 431 || g == 432 || g == 434 || g == 435) l.g43 = &w;

@@ -72,6 +72,9 @@ class writer {
     tool_change(b, before, after);  // M6 runs before G43 of the same line (its order of execution)
     own_words(b, own);
     tracking(b, own, before);
+    if (!same_ && tracking_ && !length_of_loaded_ && is_motion(b))
+      fail(b, "a move under tracking while G43 does not hold the loaded tool's length (G43 H n of another tool, or "
+              "G49): the TCP kinematics take the tool length from G43");
     std::string line;
     iso_line(line, b);
     out += before + with_words(line, own) + after;
@@ -151,7 +154,7 @@ class writer {
   void tracking(const block& b, std::vector<std::string>& own, std::string& before) {
     if (!b.tcp) return;
     const std::string word = *b.tcp ? "M428" : "M429";
-    if (*b.tcp && !same_ && !length_of_loaded_) before += "G43\n", length_of_loaded_ = true;
+    if (*b.tcp && !same_ && !length_of_loaded_ && !b.state.length_compensation) before += "G43\n", length_of_loaded_ = true;
     if (b.moves() || changes_tool(b)) before += word + "\n";
     else own.push_back(word);
     tracking_ = *b.tcp;

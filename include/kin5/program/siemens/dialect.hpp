@@ -38,7 +38,8 @@ struct dialect {
                                                   {"TRAORI", marker::place::anywhere},
                                                   {"TRAFOOF", marker::place::anywhere}}};
   /// 840Di Manual (HBI) 06/2003 §10.3.1: input rounded to MD10200/MD10210 (docs/dialects/siemens.md).
-  static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {6, 6, 3, 9}, .dwell = detail::dwell_steps};
+  static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {6, 6, 3, 9}, .dwell = detail::dwell_steps,
+                                    .plane_turns_tool_length = true};
   /// Catalog machines whose controller reads it (Tian 2010's SAJO 12000P; the usual one for the rest).
   static constexpr std::array<std::string_view, 4> default_for{"sajo-12000p", "ac-trunnion", "ac-head",
                                                                "b-head-a-tilted-table"};

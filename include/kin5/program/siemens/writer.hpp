@@ -5,7 +5,10 @@
 /// passthrough text and kept words in a comment; such a program opens with the punch-tape header
 /// `%_N_NAME_MPF` and `;$PATH=/_N_MPF_DIR` (its name made legal, `legal_program_name`), never
 /// with the other dialect's frame (`%`), and a block after its end is refused unless it is only a
-/// comment (program_end.hpp). Units are written `G710` (mm) or `G700` (inch),
+/// comment (program_end.hpp). Their tool length compensation is the active
+/// tool's `D1` (off: `D0`), and one that applies another register than the loaded tool's is
+/// refused, as is a plane G18/G19 while a length may be in effect (the 840D turns the length with
+/// the plane). Units are written `G710` (mm) or `G700` (inch),
 /// the forms that also set the unit of F: after `G700` lengths and per-minute feeds are written in
 /// inches, with one decimal more. A block Siemens cannot express (a rapid arc, an arc without a
 /// known start point) throws `std::invalid_argument` ("file:line: reason"). A dwell is
@@ -27,6 +30,7 @@
 #include "../program_end.hpp"
 #include "../program_name.hpp"
 #include "../text.hpp"
+#include "../tool_length.hpp"
 #include "../units.hpp"
 #include "../work_offsets.hpp"
 #include "modal.hpp"
@@ -160,6 +164,7 @@ class writer {
       model_motion_.reset();
     }
     const bool change = !same_ && std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
+    source_.apply(b);
     if (b.tool) selected_tool_ = *b.tool;
     if (change && !selected_tool_) fail(b, file, "tool change (M6) without a tool number");
     if (change && tcp_on_ && !(b.tcp && !*b.tcp)) out += "TRAFOOF\n";  // the transformation off for the change
@@ -168,7 +173,7 @@ class writer {
     motion(line, b, file);
     axes(line, b, file);
     arc_data(line, b, file);
-    tail(line, b);
+    tail(line, b, file);
     written_.move(b);
     if (line.empty() && !same_ && !b.program_begin && !b.text.empty()) {  // nothing Siemens can say: the source text
       line = "; " + b.text;
@@ -178,7 +183,10 @@ class writer {
     if (line.empty()) return;  // nothing to say (a lone header has been written)
     if (b.program_begin && b.number && line == "N" + std::to_string(*b.number)) return;
     out += detail::checked_line(std::move(line), b, file) + '\n';
-    if (change) out += "D1\n";  // the new tool's first cutting edge: its length and radius
+    if (change) {  // the new tool's first cutting edge: its length and radius (or none, after G49)
+      length_on_ = length_in_effect(source_) != tool_length::off;
+      out += *length_on_ ? "D1\n" : "D0\n";
+    }
     if (change && tcp_on_ && !b.tcp) out += "TRAORI\n";
     if (b.tcp) tcp_on_ = *b.tcp;
   }
@@ -196,6 +204,8 @@ class writer {
   std::optional<long long> selected_tool_;   // the last T written
   bool inch_ = false;                        // G700 written: lengths and per-minute F in inches
   bool inverse_time_ = false;                // G93 written: F is not a length
+  modal_state source_;                       // the source program's state after the block (another dialect's)
+  std::optional<bool> length_on_;            // D1 (true) or D0 (false) written last; empty: not known
 
   /// The punch-tape header of a program read in another dialect, its first two lines: the name
   /// (`%_N_NAME_MPF`, a main program) and the directory it is loaded into (SINUMERIK 840D/840Di/
@@ -274,11 +284,42 @@ class writer {
     if (s.distance) detail::append_word(line, *s.distance == distance_mode::absolute ? "G90" : "G91");
     if (s.working_plane) {
       written_.plane = *s.working_plane;
-      detail::append_word(line, detail::plane_word(*s.working_plane));
+      plane_word(line, b, file, *s.working_plane);
     }
     if (s.radius_compensation && *s.radius_compensation != cutter_side::off)
       fail(b, file, "cutter radius compensation (G41/G42) is not written yet");
     if (s.radius_compensation) detail::append_word(line, "G40");
+  }
+
+  /// Another dialect's tool length compensation: the active tool's first edge, `D1`, or `D0`
+  /// (SINUMERIK 840D sl Fundamentals, ch. 6 "Tool offsets": D selects the edge whose length and
+  /// radius apply, D0 none); nothing when that is in effect already. A length that is not the
+  /// loaded tool's own (ISO `G43 H5` with T1 loaded, or before any tool change) has no D form:
+  /// refused at the block that says it and at each move under it. After a tool change the writer
+  /// writes the D itself (`write`).
+  void length_word(std::string& line, const block& b, const std::string& file) {
+    if (same_) return;
+    if (length_in_effect(source_) == tool_length::other && (b.state.length_compensation == true || is_motion(b)))
+      fail(b, file, "tool length compensation " + length_register_text(source_) +
+                        ": an 840D applies the active tool's own length (D1), not another tool's register");
+    const auto& on = b.state.length_compensation;
+    if (!on || changes_tool(b) || length_on_ == *on) return;
+    detail::append_word(line, *on ? "D1" : "D0");
+    length_on_ = *on;
+  }
+
+  /// A plane word G18 / G19 of another dialect's program, refused while a tool length may be in
+  /// effect: an 840D applies a milling tool's length along the axis normal to the working plane
+  /// (Y under G18, X under G19) and under TRAORI turns the tool's basic orientation with the plane
+  /// (SINUMERIK ONE Programming Manual 12/2019 §3.13.3.4 "Tool length and plane change"; Function
+  /// Manual W1 11/2006 §2.7 "Basic tool orientation", p. 130), where the source dialects keep it
+  /// along the tool axis. After `D0` (no length) it is written.
+  void plane_word(std::string& line, const block& b, const std::string& file, arc_plane p) {
+    if (!same_ && p != arc_plane::xy && length_on_ != false)
+      fail(b, file, std::string(detail::plane_word(p)) + " while tool length compensation may be on: an 840D would "
+                        "apply the tool length along " + (p == arc_plane::zx ? "Y" : "X") +
+                        " (and turn the tool orientation under TRAORI), not along the tool axis");
+    detail::append_word(line, detail::plane_word(p));
   }
 
   /// G54 … G57 (settable zero offsets 1 … 4), G505 … G599, G500 (none): the 840D's only forms
@@ -305,7 +346,7 @@ class writer {
     if (b.arc) {
       if (!detail::is_arc(written_.motion)) fail(b, file, "arc data without G2 or G3 cannot be written");
       if (b.arc->plane != written_.plane) {
-        detail::append_word(line, detail::plane_word(b.arc->plane));
+        plane_word(line, b, file, b.arc->plane);
         written_.plane = b.arc->plane;
       }
     }
@@ -348,7 +389,7 @@ class writer {
   }
 
   /// F S T, D H T="name" (same dialect), M codes, the program end, the comment.
-  void tail(std::string& line, const block& b) {
+  void tail(std::string& line, const block& b, const std::string& file) {
     if (b.feed) {
       const int inch = inch_ && !inverse_time_ ? 1 : 0;  // in/min: one decimal more
       const double f = *b.feed / (inch ? mm_per_inch : 1.0);
@@ -358,6 +399,7 @@ class writer {
       number(line, "S", *b.spindle_rpm,
              rate_decimals(*b.spindle_rpm, options_.feed_decimals, options_.finest_feed_decimals, "spindle speed"));
     if (b.tool) detail::append_code(line, 'T', *b.tool);
+    length_word(line, b, file);
     if (same_) {
       for (const auto& w : b.kept_words)
         if (detail::is_late_kept(w)) detail::append_word(line, w);

@@ -60,7 +60,8 @@ TEST_CASE("iso: a Fanuc post style program with G43.4, homing and arcs") {
   CHECK((b[8].motion == motion_kind::rapid && b[8].axes.b_deg == -30.0 && b[8].axes.c_deg == 45.0));
   CHECK((b[8].spindle_rpm == 8000.0 && b[8].m_codes == std::vector<int>{3}));
   CHECK(b[8].state.distance == distance_mode::absolute);
-  CHECK((b[9].tcp == true && b[9].kept_words == strings{"H05"} && b[9].axes.x_mm == 10.0));
+  CHECK((b[9].tcp == true && b[9].kept_words.empty() && b[9].axes.x_mm == 10.0));
+  CHECK((b[9].state.length_compensation == true && b[9].state.length_register == 5));
   CHECK((!b[10].motion && b[10].axes.z_mm == 3.0));
   CHECK((b[11].motion == motion_kind::linear && b[11].feed == 250.0));
   // Arc from (20, -5.5, -1): centre 5 mm further in X.
@@ -71,7 +72,7 @@ TEST_CASE("iso: a Fanuc post style program with G43.4, homing and arcs") {
   REQUIRE(b[14].arc);
   CHECK((b[14].arc->radius_mm == 5.0 && !b[14].arc->centre_mm));
   CHECK((b[15].motion == motion_kind::linear && b[15].axes.x_mm == 35.0 && b[15].axes.c_deg == 44.8));
-  CHECK(b[16].tcp == false);
+  CHECK((b[16].tcp == false && b[16].state.length_compensation == false));
   CHECK(b[18].program_end == "M30");
   CHECK(b[19].passthrough);
 }
@@ -91,7 +92,8 @@ TEST_CASE("iso: LinuxCNC style: M428 remap, semicolon comments, G93, G43 is not 
   const auto b = kin5::test::read_example<iso::dialect>(text, "l.ngc", 10);
   CHECK((b[1].m_codes == std::vector<int>{428} && !b[1].tcp && b[1].comment == "TCP:xyzbc"));
   CHECK((b[2].motion == motion_kind::rapid && b[2].feed_mode == feed_unit::per_minute));
-  CHECK((!b[4].tcp && b[4].kept_words == strings{"G43", "H3"} && b[4].m_codes == std::vector<int>{8}));
+  CHECK((!b[4].tcp && b[4].kept_words.empty() && b[4].m_codes == std::vector<int>{8}));
+  CHECK((b[4].state.length_compensation == true && b[4].state.length_register == 3));
   CHECK(b[5].feed_mode == feed_unit::inverse_time);
   CHECK((b[6].feed == 120.75 && b[6].axes.z_mm == -0.25 && b[6].axes.c_deg == -90.0));
   CHECK(b[8].program_end == "M2");
@@ -117,7 +119,7 @@ TEST_CASE("iso: G43.5 vectors, arcs inside G43.5, other planes") {
   CHECK((b[4].arc->plane == arc_plane::yz && b[4].arc->radius_mm == 7.0));
   // Written back: G43.5 because vectors follow, arcs in their planes.
   CHECK(iso::write(r.parsed) ==
-        "G43.5 I0. J0. K1. H2\n"
+        "G43.5 H2 I0. J0. K1.\n"
         "G1 X10. Y0. Z5. I0. J-0.6 K0.8 F1000.\n"
         "G2 X20. Y0. I5. J0.\n"
         "G18 G3 X30. Z5. I5. K-1.\n"

@@ -188,6 +188,7 @@ item draw_item(state& st) {
       const int kind = *rc::gen::inRange(0, 3);
       if (kind == 2) {
         b.tcp = false;
+        b.state.length_compensation = false;
         st.vector_tcp = false;
         it.words.push_back(draw_case("G49"));
         break;
@@ -195,13 +196,14 @@ item draw_item(state& st) {
       b.tcp = true;
       st.vector_tcp = kind == 1;
       it.words.push_back(draw_case(kind == 1 ? "G43.5" : "G43.4"));
-      const std::string h = spell_code('H', *rc::gen::inRange(0, 100));
+      const int h = *rc::gen::inRange(0, 100);
       if (kind == 1 && *rc::gen::arbitrary<bool>()) {
         b.axes.tool_axis = kin5::vec3{0, 0, 1};
         it.words.push_back("I0 J0 K1");
       }
-      it.words.push_back(h);
-      b.kept_words.push_back(h);
+      it.words.push_back(spell_code('H', h));
+      b.state.length_compensation = true;  // G43.4 H n: the length of offset n, with tracking
+      b.state.length_register = h;
       break;
     }
     case 8: {

@@ -34,6 +34,7 @@ struct state {
   arc_plane plane = arc_plane::xy;
   std::optional<double> last[3];
   bool tracking = false, length = false;  // M428 on; G43 holds the loaded tool's length
+  std::optional<long long> loaded;        // the tool of the last M6: G43 without H is its length
 };
 
 std::string spell_code(char letter, int v) {
@@ -136,6 +137,7 @@ void draw_tracking(item& it, state& st) {
   const bool on = *rc::gen::arbitrary<bool>();
   if (on && !st.length) {
     b.state.length_compensation = true;
+    b.state.length_register = st.loaded;
     it.words.push_back(draw_case("G43"));
     st.length = true;
   }
@@ -151,6 +153,7 @@ void draw_tool(item& it, state& st) {
   block& b = it.expected;
   if (st.tracking) {
     b.state.length_compensation = true;
+    b.state.length_register = st.loaded;
     it.words.push_back(draw_case("G43"));
     st.length = true;
     return;
@@ -162,10 +165,12 @@ void draw_tool(item& it, state& st) {
     b.m_codes.push_back(6);
     it.words.push_back(spell_code('M', 6));
     st.length = false;
+    st.loaded = t;
   }
   const int length = *rc::gen::inRange(0, 3);
   if (length == 0) return;
   b.state.length_compensation = length == 1;
+  if (length == 1) b.state.length_register = st.loaded;  // G43 alone: the loaded tool's
   it.words.push_back(draw_case(length == 1 ? "G43" : "G49"));
   st.length = false;  // G43 H n may name another tool than the loaded one
   if (length == 1 && *rc::gen::arbitrary<bool>()) {
