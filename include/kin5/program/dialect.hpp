@@ -173,6 +173,12 @@ constexpr controller controller_of(dialect d) {
                              [] { return std::tuple_element_t<0, List>::reads; });
 }
 
+/// `controller_of(d)` for the folder of entry `Self` (program/dialect_id.hpp).
+template <class Self>
+constexpr controller controller_from(dialect d) {
+  return controller_of(d);
+}
+
 /// The dialect of cutter-location data (the one entry whose `can.cl_data` is set): what
 /// `reverse` writes and `post` reads.
 template <class List = dialects>

@@ -83,7 +83,17 @@ struct controller {
   /// The working plane turns the tool length: under G18/G19 a milling tool's length acts along Y/X
   /// (and turns a TRAORI tool orientation), not along the tool axis (SINUMERIK 840D).
   bool plane_turns_tool_length = false;
+  /// M5, M9 and M6 in a block that moves act before its move (LinuxCNC's order of execution);
+  /// false: M5 and M9 act at the block's end, after the move (TNC, 840D, Fanuc), and when M6
+  /// acts is the machine maker's choice. M3, M4, M7, M8 act at the start and M0, M1, M2, M30 at
+  /// the end in every kin5 dialect. docs/dialects/apt.md, "M functions on a moving block".
+  bool spindle_off_before_motion = false;
 };
+
+/// What the controller of dialect `d` reads, asked from the folder of entry `Self`, which cannot
+/// name the list (`controller_of`; defined in program/dialect.hpp, as `id_of` is).
+template <class Self>
+constexpr controller controller_from(dialect d);
 
 /// A word that a dialect's reader keeps without interpreting it (`block::kept_words`) and whose
 /// effect a program of another dialect would lose as a comment: a translation into another

@@ -2,7 +2,9 @@
 /// Blocks written as APT CL data, one statement per line, no continuations. After a block that
 /// says inch (`metric == false`, written `UNITS/INCHES`) GOTO points are written in inches and
 /// per-minute feeds as `FEDRAT/IPM`, each with one decimal more. A feed under inverse time (from
-/// the block or an earlier one) is `FEDRAT/INVERS`. Axis-word rotary angles and arcs cannot be written (std::invalid_argument naming the block);
+/// the block or an earlier one) is `FEDRAT/INVERS`. An M function of a moving block is written
+/// before or after its GOTO, where the source's controller runs it (`machine_functions`).
+/// Axis-word rotary angles and arcs cannot be written (std::invalid_argument naming the block);
 /// anything else without an APT form becomes a `$$` comment carrying the block's text. Another
 /// dialect's frame (`%`, `;$PATH=`) is not copied, and a block of another dialect after its end
 /// is refused unless it is only a comment (program_end.hpp). A dwell is `DELAY/t`.
@@ -44,7 +46,9 @@ class writer {
   /// A writer for blocks read from `source` (another dialect's blocks keep their text in `$$`
   /// comments). Blocks name themselves in messages: `file` is not needed.
   explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
-      : same_(source == id_of<dialect>()), options_(chosen) {
+      : same_(source == id_of<dialect>()),
+        off_first_(controller_from<dialect>(source).spindle_off_before_motion),
+        options_(chosen) {
     static_cast<void>(file);
   }
 
@@ -75,6 +79,7 @@ class writer {
       fail(b, "cutter radius compensation (G41/G42) is not written yet");
     length_check(b);
     lines_.clear();
+    after_.clear();
     foreign_note_ = ends_ = false;
     if (b.metric) inch_ = !*b.metric;
     if (b.feed_mode) inverse_time_ = *b.feed_mode == feed_unit::inverse_time;
@@ -84,6 +89,7 @@ class writer {
     machine_functions(in_unit);
     feed(in_unit);
     motion(in_unit);
+    lines_.insert(lines_.end(), after_.begin(), after_.end());  // what acts at the block's end
     if (b.program_end || ends_) lines_.push_back("FINI");
     if (foreign_note_) lines_.insert(lines_.begin(), "$$ " + flat(b.text));
     if (b.comment) {
@@ -95,7 +101,8 @@ class writer {
   }
 
  private:
-  bool same_;  // the blocks were read as APT
+  bool same_;       // the blocks were read as APT
+  bool off_first_;  // the source's controller runs M5, M9 and M6 before a block's move (LinuxCNC)
   write_options options_;
   source_end end_;  // where another dialect's program stops running
   bool rapid_pending_ = false;
@@ -103,7 +110,8 @@ class writer {
   modal_state source_;                      // the source program's state after the block (another dialect's)
   bool inch_ = false;          // UNITS/INCHES written: lengths in inches
   bool inverse_time_ = false;  // inverse-time feed in effect (this block's or an earlier one's)
-  std::vector<std::string> lines_;  // the block's statements
+  std::vector<std::string> lines_;  // the block's statements up to its GOTO
+  std::vector<std::string> after_;  // those after it: the M functions that act at the block's end
   bool foreign_note_ = false;       // something without an APT form: carry the block's text
   bool ends_ = false;               // an M2 / M30 M function: the end of the program run
 
@@ -167,8 +175,12 @@ class writer {
     else if (b.tool) lines_.push_back("SELECT/TOOL," + std::to_string(*b.tool));
   }
 
-  /// SPINDL, COOLNT, STOP, OPSTOP from S and the M codes APT has a statement for; M2 / M30 (a
-  /// Heidenhain line's end of the program run) is FINI.
+  /// SPINDL, COOLNT, STOP, OPSTOP from S and the M codes APT has a statement for, each on the
+  /// side of a moving block's GOTO where the source's controller runs it (docs/dialects/apt.md,
+  /// "M functions on a moving block"): what switches on before it; STOP and OPSTOP after it;
+  /// SPINDL/OFF and COOLNT/OFF after it too, but before it from LinuxCNC. A tool change beside a
+  /// move is refused unless the controller runs it first: elsewhere the machine maker chooses.
+  /// M2 / M30 (a Heidenhain line's end of the program run) is FINI.
   void machine_functions(const block& b) {
     const std::string rpm =
         b.spindle_rpm ? format_number(*b.spindle_rpm, rate_decimals(*b.spindle_rpm, options_.feed_decimals,
@@ -179,12 +191,13 @@ class writer {
       if (m == 3 || m == 4) {
         lines_.push_back("SPINDL/" + (rpm_written ? "" : rpm + ",") + (m == 3 ? "CLW" : "CCLW"));
         rpm_written = true;
-      } else if (m == 5) lines_.push_back("SPINDL/OFF");
+      } else if (m == 5) (off_first_ ? lines_ : after_).push_back("SPINDL/OFF");
       else if (m == 8) lines_.push_back("COOLNT/ON");
       else if (m == 7) lines_.push_back("COOLNT/MIST");
-      else if (m == 9) lines_.push_back("COOLNT/OFF");
-      else if (m == 0) lines_.push_back("STOP");
-      else if (m == 1) lines_.push_back("OPSTOP");
+      else if (m == 9) (off_first_ ? lines_ : after_).push_back("COOLNT/OFF");
+      else if (m == 0) after_.push_back("STOP");
+      else if (m == 1) after_.push_back("OPSTOP");
+      else if (m == 6 && b.moves() && !off_first_) fail(b, "tool change (M6) in a block that moves (before or after the move?)");
       else if (m == 6) continue;  // LOADTL is the tool change: no M6 beside it
       else if (m == 2 || m == 30) ends_ = true;  // a Heidenhain line's end of the program run: FINI
       else foreign_note_ = true;

@@ -38,9 +38,11 @@ struct dialect {
   static constexpr std::array<marker, 2> markers{{{"M428", marker::place::anywhere},
                                                   {"M429", marker::place::anywhere}}};
   /// LinuxCNC reads any decimals (User Manual, "G-code Overview", "Numbers"); feeds and speeds
-  /// to the ISO reader's finest, which it shares; `( … )` are comments.
+  /// to the ISO reader's finest, which it shares; `( … )` are comments. M6, M5 and M9 act before
+  /// the line's move ("G-code Overview", "G-code Order of Execution": change tool, spindle and
+  /// coolant come before "perform motion", stops after it).
   static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {6, 6, 3, 7}, .paren_comments = true,
-                                    .dwell = linuxcnc::dwell_steps};
+                                    .dwell = linuxcnc::dwell_steps, .spindle_off_before_motion = true};
   /// Catalog machines whose controller reads it: LinuxCNC's own 5-axis simulation machines.
   static constexpr std::array<std::string_view, 2> default_for{"xyzac-trt", "xyzbc-trt"};
   /// Kept words a comment would lose: none (its dwell is `state.dwell_s`).
