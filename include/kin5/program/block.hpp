@@ -135,6 +135,11 @@ struct block {
   /// tape marks `%` of ISO and LinuxCNC, Siemens `;$PATH=…`. The writer of the same dialect
   /// writes it back; a writer of another dialect writes its own frame instead, never this text.
   bool framing = false;
+  /// A number assigned to a parameter (`#1=500.`, `R1=5000`, `Q1 = 5000`): the reader recorded
+  /// it and puts it in every word that uses the parameter, so the block itself does nothing.
+  /// Kept as text like `passthrough` (a comment in another dialect), but understood: no
+  /// "not understood" warning.
+  bool assignment = false;
   /// Tool change, compensation, spindle, coolant, work offset, plane, distance mode, dwell and
   /// stop, as the text says them (state_words.hpp). Readers fill these instead of `m_codes` and
   /// `kept_words` for the words they map, so every such word has one meaning in every dialect.

@@ -97,6 +97,7 @@ class block_store {
     has_tool_axis = 1u << 20, has_arc = 1u << 21, arc_centre = 1u << 22, arc_radius = 1u << 23,
     has_feed = 1u << 24, feed_rapid = 1u << 25, machine_coordinates = 1u << 26, has_kept = 1u << 27,
     passthrough = 1u << 28, has_state = 1u << 29, framing = 1u << 30,
+    assignment = 1u << 31,
   };
 
   std::string file_;
@@ -192,6 +193,7 @@ class block_store {
     set(!b.kept_words.empty(), has_kept);
     set(b.passthrough, passthrough);
     set(b.framing, framing);
+    set(b.assignment, assignment);
     set(!b.state.empty(), has_state);
     // An upper bound of the record's size: the fixed part, then the strings and lists (a
     // LEB128 size takes at most 10 bytes).
@@ -306,6 +308,7 @@ class block_store {
     if (flags & has_state) p = get(p, b.state);
     b.passthrough = (flags & passthrough) != 0;
     b.framing = (flags & framing) != 0;
+    b.assignment = (flags & assignment) != 0;
     return p;
   }
 };

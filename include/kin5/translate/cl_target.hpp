@@ -40,7 +40,7 @@ class cl_target {
     if (s.what == source_step::kind::failed) return;
     if (s.what == source_step::kind::passthrough) {
       emit(carried_over(b, source_language_, program::cl_data_dialect()));
-      ++out.passed_through;
+      if (!b.framing) ++out.passed_through;  // a tape mark: the writer frames its own program
       return;
     }
     program::block o = b;

@@ -121,7 +121,7 @@ class nc_target {
     if (s.what == source_step::kind::failed) return;
     if (s.what == source_step::kind::passthrough) {
       emit(carried_over(b, source_language_, output_language_));
-      ++out.passed_through;
+      if (!b.framing) ++out.passed_through;  // a tape mark: the writer frames its own program
       machine_.forget();
       return;
     }

@@ -277,11 +277,13 @@ class source_walker {
       return s;
     }
     if (b.machine_coordinates || b.passthrough) {
-      last_tip_.reset();  // the tool position after it is unknown
+      if (!b.framing && !b.assignment) last_tip_.reset();  // the tool position after it is unknown
       s.what = source_step::kind::passthrough;
-      to.warn(at(b, b.machine_coordinates ? "machine-coordinate move passed through unchanged, not through "
-                                            "kinematics; the tool position after it is unknown"
-                                          : "block not understood: passed through unchanged"));
+      if (b.machine_coordinates)
+        to.warn(at(b, "machine-coordinate move passed through unchanged, not through kinematics; the tool "
+                      "position after it is unknown"));
+      else if (!b.framing && !b.assignment)  // a tape mark or a parameter's number is understood
+        to.warn(at(b, "block not understood: passed through unchanged"));
       return s;
     }
     if (!b.moves()) {  // copy; an arc centre on its own is mapped like the points of its arc

@@ -139,7 +139,7 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
     unit.take(b);
     name.take(b);
     moving += b.moves() ? 1 : 0;
-    not_understood += b.passthrough ? 1 : 0;
+    not_understood += b.passthrough && !b.framing && !b.assignment ? 1 : 0;
     t.plan(b);
     if (watch) watch(b, run.input, t.result());
     records.push(b, second_pass_reads_text(b));

@@ -144,7 +144,7 @@ class block_reader : public word_checks {
     } else if (auto cycle = scan_.keywords(i, {"CYCL", "DEF"})) {
       cycle_definition(i, *cycle);
     } else if (record_assignment(std::string_view(s_).substr(i), t_.where(i).line, state_.q)) {
-      b_.passthrough = true;  // kept as written; its value is read where a word uses it
+      b_.passthrough = b_.assignment = true;  // kept as written; its value is read where a word uses it
     } else {
       other(i, head);
     }

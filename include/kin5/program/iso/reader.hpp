@@ -176,7 +176,7 @@ class basic_reader {
       return error(a.column, why);
     }
     parameters_.assign(a.number, a.literal, line_);
-    b.passthrough = true;
+    b.passthrough = b.assignment = true;
   }
 
   /// Each word that uses a parameter takes its number, as if written there; the first parameter

@@ -81,6 +81,7 @@ class r_parameters {
     const parsed_number number = read_number(v);
     if (number.error == number_error::none && number.length > 0 && number.length == v.size()) {
       table_.assign(n, parameter_literal{number.value, std::string(v)}, line);
+      p.b.assignment = true;
       return true;
     }
     table_.refuse(n, line);
