@@ -272,10 +272,6 @@ class source_walker {
                     "machine's axis positions mean nothing on another machine"));
       return s;
     }
-    if (b.framing && b.passthrough) {  // a tape mark (`%`): understood, it frames the text for transfer
-      s.what = source_step::kind::passthrough;
-      return s;
-    }
     if (b.machine_coordinates || b.passthrough) {
       if (!b.framing && !b.assignment) last_tip_.reset();  // the tool position after it is unknown
       s.what = source_step::kind::passthrough;
