@@ -45,10 +45,10 @@ TEST_CASE("reverse: an M function of a moving block is written where its control
   const std::vector<row> rows = {
       {"ISO: M3 M8 start the move, M5 M9 and M1 end it, M30 after the last", "ac-trunnion", iso,
        "G21 G90\nT1 M6\nG43.4 H1\nG1 X1. Y2. Z3. A0. C0. F200. S8000 M3 M8\nX4. M5 M9\nX5. M1\nX6. M30\n",
-       "UNITS/MM\nLOADTL/1\n$$ iso: H1\nSPINDL/8000,CLW\nCOOLNT/ON\nFEDRAT/MMPM,200\nGOTO/1,2,3,0,0,1\n"
+       "UNITS/MM\nLOADTL/1\n$$ tool-tip tracking on\nSPINDL/8000,CLW\nCOOLNT/ON\nFEDRAT/MMPM,200\nGOTO/1,2,3,0,0,1\n"
        "GOTO/4,2,3,0,0,1\nSPINDL/OFF\nCOOLNT/OFF\nGOTO/5,2,3,0,0,1\nOPSTOP\nGOTO/6,2,3,0,0,1\nFINI\n"},
       {"ISO: a tool change beside a move is the machine maker's", "ac-trunnion", iso,
-       "G21 G90\nT1 M6\nG43.4 H1\nG1 X1. Y2. Z3. A0. C0. F200.\nT2 M6 X4.\n",
+       "G21 G90\nT1 M6\nG43.4 H1\nG1 X1. Y2. Z3. A0. C0. F200.\nT1 M6 X4.\n",  // T1 again: H1 stays its own
        "in:5:1: error: block cannot be written in APT: tool change (M6) in a block that moves (before or after the "
        "move?)"},
       {"Siemens: M5 M9 and M0 after the move", "sajo-12000p", sie,

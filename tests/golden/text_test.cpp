@@ -330,9 +330,9 @@ TEST_CASE("a dwell in every dialect, as its manual spells it, and through transl
   REQUIRE(cl.ok());
   // Each a block of its own: Fanuc G04 X (seconds with a point), LinuxCNC G4 P (seconds),
   // Siemens G4 F (seconds), Heidenhain Cycle 9 (two blocks), APT DELAY.
-  CHECK(iso::write(cl.parsed) == "G4 X1.5\nG4 X0.25 (wait)\n");
-  CHECK(linuxcnc::write(cl.parsed) == "%\nG4 P1.5\nG4 P0.25 (wait)\n");
-  CHECK(siemens::write(cl.parsed) == "G4 F1.5\nG4 F0.25 ; wait\n");
+  CHECK(iso::write(cl.parsed) == "%\nO0001\nG4 X1.5\nG4 X0.25 (wait)\nM30\n%\n");  // framed (iso.md)
+  CHECK(linuxcnc::write(cl.parsed) == "%\nG4 P1.5\nG4 P0.25 (wait)\n%\n");
+  CHECK(siemens::write(cl.parsed) == "%_N_PGM_MPF\n;$PATH=/_N_MPF_DIR\nG4 F1.5\nG4 F0.25 ; wait\n");
   CHECK(heidenhain::write(cl.parsed) ==
         "0 BEGIN PGM PGM MM\n"
         "1 CYCL DEF 9.0 DWELL TIME\n"
@@ -345,14 +345,14 @@ TEST_CASE("a dwell in every dialect, as its manual spells it, and through transl
   const auto i = iso::read("N10 G04 P2000\n", "d.nc");
   REQUIRE(i.ok());
   CHECK(iso::write(i.parsed) == "N10 G4 X2.\n");
-  CHECK(siemens::write(i.parsed) == "N10 G4 F2\n");
+  CHECK(siemens::write(i.parsed) == "%_N_PGM_MPF\n;$PATH=/_N_MPF_DIR\nN10 G4 F2\n");
   // A Heidenhain program's own Cycle 9 is written back once, its 9.0 as it was.
   const auto h = heidenhain::read("0 BEGIN PGM D MM\n1 CYCL DEF 9.0 DWELL TIME\n2 CYCL DEF 9.1 DWELL1.5\n3 END PGM D MM\n", "d.h");
   REQUIRE(h.ok());
   CHECK(heidenhain::write(h.parsed) ==
         "0 BEGIN PGM D MM\n1 CYCL DEF 9.0 DWELL TIME\n2 CYCL DEF 9.1 DWELL 1.5\n3 END PGM D MM\n");
   // In another dialect the 9.0 header is a comment, the 9.1 the dwell.
-  CHECK(siemens::write(h.parsed) == "%_N_D_MPF\nN0 G710\n; 1 CYCL DEF 9.0 DWELL TIME\nN2 G4 F1.5\nN3 G710 M30\n");
+  CHECK(siemens::write(h.parsed) == "%_N_PGM_D_MPF\n;$PATH=/_N_MPF_DIR\nN0 G710\n; 1 CYCL DEF 9.0 DWELL TIME\nN2 G4 F1.5\nN3 G710 M30\n");
 
   // Translated between the moves it stands between (SAJO 12000P to DMU 80P).
   const auto s = siemens::read("T1 M6\nTRAORI\nG1 X-34.983 Y9.1 Z118.526 A-77.954 B3.536 F1091\nG4 F2.5\n"

@@ -103,6 +103,7 @@ struct kept_word_effect {
     whole,   ///< the word itself ("D0")
     prefix,  ///< any word that starts with it ("T=")
     code,    ///< its letter with the same number, however written ("G4": G4, G04, G4.0)
+    other_code,  ///< its letter with another number above 0 ("D1": D2, D17; not D1, not D0)
   };
   std::string_view word;
   match how = match::whole;
@@ -112,7 +113,10 @@ struct kept_word_effect {
   constexpr bool matches(std::string_view w) const {
     if (how == match::whole) return w == word;
     if (how == match::prefix) return w.substr(0, word.size()) == word;
-    return !w.empty() && !word.empty() && w[0] == word[0] && number_of(w.substr(1)) == number_of(word.substr(1));
+    if (w.empty() || word.empty() || w[0] != word[0]) return false;
+    const double n = number_of(w.substr(1));
+    if (how == match::code) return n == number_of(word.substr(1));
+    return n > 0 && n != number_of(word.substr(1));
   }
 
  private:
@@ -134,6 +138,14 @@ struct kept_word_effect {
     return digits ? value : -1;
   }
 };
+
+static_assert(kept_word_effect{"G4", kept_word_effect::match::code, ""}.matches("G04"));
+static_assert(!kept_word_effect{"G4", kept_word_effect::match::code, ""}.matches("G40"));
+static_assert(kept_word_effect{"D1", kept_word_effect::match::other_code, ""}.matches("D2"));
+static_assert(kept_word_effect{"D1", kept_word_effect::match::other_code, ""}.matches("D12"));
+static_assert(!kept_word_effect{"D1", kept_word_effect::match::other_code, ""}.matches("D01"));
+static_assert(!kept_word_effect{"D1", kept_word_effect::match::other_code, ""}.matches("D0"));
+static_assert(!kept_word_effect{"D1", kept_word_effect::match::other_code, ""}.matches("DX"));
 
 /// Text only one dialect writes, as `guess_dialect` looks for it: an upper-case keyword matched
 /// case-insensitively, either at the start of a block (after an optional block number) or as a

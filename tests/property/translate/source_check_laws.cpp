@@ -442,6 +442,13 @@ TEST_CASE("across dialects, a kept word whose effect a comment would lose is ref
        "would become a comment)"},
       {iso, "G17 G40 G80 G90 G05.1 Q1\n", ""},
       {siemens, "G17 G40 G90 SOFT D1\n", ""},
+      // Edge 2's length is not tool 1's own: H1 (TOOL CALL 1) would apply another length.
+      {siemens, "D2\n",
+       "t:1:1: error: D2: another cutting edge's length and radius than the first's (D1, the tool's own) of siemens "
+       "is not translated into heidenhain yet (it would become a comment)"},
+      {siemens, "N5 D12\n",
+       "t:1:4: error: D12: another cutting edge's length and radius than the first's (D1, the tool's own) of "
+       "siemens is not translated into heidenhain yet (it would become a comment)"},
   };
   for (const case_row& r : rows) {
     INFO(r.text);

@@ -29,6 +29,7 @@
 #include "../iso/writer.hpp"
 #include "../program_end.hpp"
 #include "../text.hpp"
+#include "../tool_length.hpp"
 #include "../work_offsets.hpp"
 #include "vocabulary.hpp"
 
@@ -66,12 +67,20 @@ class writer {
     if (b.passthrough) return iso_.write(out, b);
     if (b.state.dwell_s) return dwell(out, b);
     if (b.axes.tool_axis) fail(b, "a tool-axis vector (LinuxCNC has no G43.5; its trt kinematics take A, B, C words)");
-    std::vector<std::string> own;
+    std::vector<std::string> own, length;
     std::string before, after;
     if (b.tool) selected_ = *b.tool;
+    if (!same_) source_.apply(b);
     tool_change(b, before, after);  // M6 runs before G43 of the same line (its order of execution)
-    own_words(b, own);
+    own_words(b, own, length);
+    // LinuxCNC runs M428/M429 (user M codes) before G43/G49 of the same line ("G-code Order of
+    // Execution"): a switch of another dialect gets its length on a line of its own, G43 before
+    // M428, G49 after M429.
+    const bool length_line = !same_ && b.tcp && !length.empty();
+    if (!length_line) own.insert(own.end(), length.begin(), length.end());
+    if (length_line && *b.tcp) before += joined(length) + '\n';
     tracking(b, own, before);
+    if (length_line && !*b.tcp) (b.moves() || changes_tool(b) ? before : after) += joined(length) + '\n';
     if (!same_ && tracking_ && !length_of_loaded_ && is_motion(b))
       fail(b, "a move under tracking while G43 does not hold the loaded tool's length (G43 H n of another tool, or "
               "G49): the TCP kinematics take the tool length from G43");
@@ -94,6 +103,7 @@ class writer {
   source_end end_;                        // where another dialect's program stops running
   bool tracking_ = false;                 // M428 in effect after the last block
   bool length_of_loaded_ = false;         // G43 holds the loaded tool's length
+  modal_state source_;                    // the source program's state after the block (another dialect's)
   std::optional<long long> selected_, loaded_;
 
   /// LinuxCNC reads `X10` as 10 mm (LinuxCNC Manual, "G-Code Overview", numbers): no point needed.
@@ -121,16 +131,16 @@ class writer {
   }
 
   /// Work offset, G43 [H n] / G49: LinuxCNC Manual, "G-Codes", G54–G59.3 and G43, G49.
-  void own_words(const block& b, std::vector<std::string>& own) {
+  void own_words(const block& b, std::vector<std::string>& own, std::vector<std::string>& length) {
     if (const auto& w = b.state.work_offset) {
       if (w->family != work_offset_family::g54 || w->number < 1 || w->number > 9)
         fail(b, "work offset " + spelling(*w) + " has no LinuxCNC form (G54 … G59.3; --work-offset-map names one)");
       own.push_back(spelling(*w));
     }
     if (const auto& on = b.state.length_compensation) {
-      own.push_back(*on ? "G43" : "G49");
+      length.push_back(*on ? "G43" : "G49");
       const auto& h = b.state.length_register;
-      if (*on && h) own.push_back("H" + std::to_string(*h));
+      if (*on && h) length.push_back("H" + std::to_string(*h));
       length_of_loaded_ = *on && (!h || (loaded_ && *h == *loaded_));
     }
   }
@@ -146,7 +156,15 @@ class writer {
     if (same_ || !tracking_ || b.tcp) return;
     before += "M429\n";
     after += "G43\nM428\n";
-    length_of_loaded_ = true;
+    // G43 is the new tool's length; the source's may still be another register's (ISO G43.4 H1
+    // kept over T2 M6): then its next move is refused (`write`).
+    length_of_loaded_ = length_in_effect(source_) != tool_length::other;
+  }
+
+  static std::string joined(const std::vector<std::string>& words) {
+    std::string s;
+    for (const std::string& w : words) s += (s.empty() ? "" : " ") + w;
+    return s;
   }
 
   /// M428 / M429: in the block's line, or on a line of their own before a block that moves or

@@ -44,9 +44,11 @@ struct dialect {
   static constexpr std::array<std::string_view, 4> default_for{"sajo-12000p", "ac-trunnion", "ac-head",
                                                                "b-head-a-tilted-table"};
   /// Kept words a comment would lose: a tool named in T="…", compensation off with D0.
-  static constexpr std::array<kept_word_effect, 2> lost_as_comment{
+  static constexpr std::array<kept_word_effect, 3> lost_as_comment{
       {{"T=", kept_word_effect::match::prefix, "a tool named in T="},
-       {"D0", kept_word_effect::match::whole, "tool length compensation off (D0)"}}};
+       {"D0", kept_word_effect::match::whole, "tool length compensation off (D0)"},
+       {"D1", kept_word_effect::match::other_code,
+        "another cutting edge's length and radius than the first's (D1, the tool's own)"}}};
   using write_options = siemens::write_options;
   using writer = siemens::writer;
   static void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,

@@ -150,6 +150,7 @@ inline void finish(line_parse& p, modal_state& state, read_result& result) {
     kept.text = b.text;
     kept.number = b.number;
     kept.passthrough = true;
+    kept.assignment = b.assignment;  // `R1=500`: understood, its number put into the words using it
     b = std::move(kept);
   } else {
     for (auto& d : p.unknown) keep_or_count(p.errors, p.errors_not_kept, std::move(d));

@@ -187,7 +187,8 @@ TEST_CASE("iso: a parameter in a whole-number word reads as the control rounds i
   const auto& b = r.parsed.blocks;
   REQUIRE(b.size() == 8);
   CHECK(b[4].tool == 1);
-  CHECK(b[5].kept_words == strings{"G43", "H1"});
+  CHECK(b[5].state.length_compensation == true);
+  CHECK(b[5].state.length_register == 1);
   CHECK(b[6].spindle_rpm == 1001.0);
   CHECK(b[6].m_codes == std::vector<int>{4});
   CHECK(b[7].axes.x_mm == 10.1234);
