@@ -157,7 +157,9 @@ case "$name" in
     case $to in
       siemens) has_line h1.out 'D1'; has_line h1.out 'TRAORI'; has_line h1.out 'TRAFOOF D0' ;;
       heidenhain) has_line h1.out '[0-9]+ TOOL CALL 1 Z'; has_line h1.out '[0-9]+ M128' ;;
-      linuxcnc) has_line h1.out 'G43 H1 M428( \(G43\.4 H1\))?' ;;
+      # G43 on a line before M428: LinuxCNC runs a line's M428 before its G43 (order of execution)
+      linuxcnc) has_line h1.out 'G43 H1'; n=$(grep -nx 'G43 H1' h1.out | head -1 | cut -d: -f1)
+        line_is h1.out $((${n:-0} + 1)) 'M428( \(G43\.4 H1\))?' ;;
     esac
     run 2 translate "$@" -o h2.out h2.nc
     case $to in

@@ -447,7 +447,7 @@ TEST_CASE("across dialects, a kept word whose effect a comment would lose is ref
        "t:1:1: error: D2: another cutting edge's length and radius than the first's (D1, the tool's own) of siemens "
        "is not translated into heidenhain yet (it would become a comment)"},
       {siemens, "N5 D12\n",
-       "t:1:4: error: D12: another cutting edge's length and radius than the first's (D1, the tool's own) of "
+       "t:1:1: error: D12: another cutting edge's length and radius than the first's (D1, the tool's own) of "
        "siemens is not translated into heidenhain yet (it would become a comment)"},
   };
   for (const case_row& r : rows) {
