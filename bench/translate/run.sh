@@ -7,7 +7,7 @@
 # Steps: a Release build of the kin5 tool and of this directory's two helpers; a BLOCKS-block
 # SAJO 12000P program (kin5_bench_gen_program); then, pinned to CPU 0 with taskset, RUNS runs
 # each of
-#   kin5 translate --from sajo-12000p --to dmu-80p -o OUT IN
+#   kin5 translate --from sajo-12000p --to dmu-80p --work-offset-map G54=1 -o OUT IN
 #   kin5_bench_parse_baseline IN OUT
 # under /usr/bin/time -v. Prints the median elapsed and user+system seconds of each, their
 # ratio (goal <= 1.5, never > 3), and the largest maximum resident set size divided by BLOCKS
@@ -60,7 +60,7 @@ measure() {
 }
 
 : >"$data/results.txt"
-measure translate "$kin5" translate --from sajo-12000p --to dmu-80p -o "$data/out.h" "$input"
+measure translate "$kin5" translate --from sajo-12000p --to dmu-80p --work-offset-map G54=1 -o "$data/out.h" "$input"
 measure baseline "$baseline" "$input" "$data/baseline.out"
 
 echo "input: $input ($blocks motion blocks, $(wc -c <"$input" | tr -d ' ') bytes); $runs runs each on CPU $cpu"
@@ -85,7 +85,7 @@ awk -v blocks="$blocks" '
 if [ "${INSTRUCTIONS:-0}" = 1 ] && command -v valgrind >/dev/null 2>&1; then
   head -n 20000 "$input" >"$data/prefix.mpf"
   ti=$(valgrind --tool=callgrind --callgrind-out-file="$data/callgrind.translate" \
-         "$kin5" translate --from sajo-12000p --to dmu-80p -o "$data/prefix.h" "$data/prefix.mpf" 2>&1 >/dev/null |
+         "$kin5" translate --from sajo-12000p --to dmu-80p --work-offset-map G54=1 -o "$data/prefix.h" "$data/prefix.mpf" 2>&1 >/dev/null |
        awk '/Collected/ { print $NF }')
   bi=$(valgrind --tool=callgrind --callgrind-out-file="$data/callgrind.baseline" \
          "$baseline" "$data/prefix.mpf" "$data/prefix.out" 2>&1 >/dev/null | awk '/Collected/ { print $NF }')
