@@ -215,7 +215,7 @@ TEST_CASE("translate: a tape mark and a parameter's number are understood, not p
       options.output_dialect = to;
       const auto t = make_translator<machines::dmu_50v, machines::dmu_50v>(from, "t", options);
       string_sink out;
-      const auto run = stream_text(*t, r.text, from, "t", to, out);
+      const auto run = stream_text(*t, std::string(r.text), from, "t", to, out);
       CAPTURE(out.text);
       REQUIRE(run.ok(*t));
       for (const auto& w : t->result().warnings) CHECK(w.message.find("not understood") == std::string::npos);
