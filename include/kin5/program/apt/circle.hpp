@@ -8,7 +8,8 @@
 /// arc_ccw, `arc` {plane, centre}, its place and text from the CIRCLE on. A GOTO right after it
 /// that ends elsewhere on the same circle is refused: a further point of the arc (Creo may write
 /// several) or a straight move, the record cannot say; one along the vector only (a retract) is a
-/// straight move.
+/// straight move. The writer takes `plane_vector` and
+/// `radius_in_plane_mm` for the CIRCLE it writes.
 /// @code
 ///   kin5::program::apt::detail::circle_state circles;
 ///   const auto c = circle_state::from(centre_mm, vector, radius_mm, start_mm, rapid_pending);

@@ -4,13 +4,16 @@
 /// per-minute feeds as `FEDRAT/IPM`, each with one decimal more. A feed under inverse time (from
 /// the block or an earlier one) is `FEDRAT/INVERS`. An M function of a moving block is written
 /// before or after its GOTO, where the source's controller runs it (`machine_functions`).
-/// Axis-word rotary angles and arcs cannot be written (std::invalid_argument naming the block);
+/// An arc is `CIRCLE/xc,yc,zc,i,j,k,r` then the GOTO of its end (circle.hpp).
+/// Axis-word rotary angles cannot be written (std::invalid_argument naming the block);
 /// anything else without an APT form becomes a `$$` comment carrying the block's text. Another
 /// dialect's frame (`%`, `;$PATH=`) is not copied, and a block of another dialect after its end
 /// is refused unless it is only a comment (program_end.hpp). A dwell is `DELAY/t`.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -23,6 +26,7 @@
 #include "../tool_length.hpp"
 #include "../units.hpp"
 #include "../work_offsets.hpp"
+#include "circle.hpp"
 #include "vocabulary.hpp"
 
 namespace kin5::program::apt {
@@ -114,6 +118,8 @@ class writer {
   std::vector<std::string> after_;  // those after it: the M functions that act at the block's end
   bool foreign_note_ = false;       // something without an APT form: carry the block's text
   bool ends_ = false;               // an M2 / M30 M function: the end of the program run
+  std::optional<vec3> at_;          // the last GOTO's point, in the unit written
+  vec3 axis_ = unit_z;              // the tool axis in effect (+Z until a GOTO gives one)
 
   [[noreturn]] static void fail(const block& b, const std::string& why) {
     throw std::invalid_argument(b.where.file + ":" + std::to_string(b.where.line) + ": block cannot be written in APT: " + why);
@@ -205,6 +211,32 @@ class writer {
     if (!rpm_written) lines_.push_back("SPINDL/" + rpm);
   }
 
+  /// `CIRCLE/xc,yc,zc,i,j,k,r` of arc block `b` ending at `end` (PTC Creo, "CL Output for
+  /// Circular Interpolation"): the centre, the plane's normal (− for clockwise: the right-hand
+  /// rule), the radius to the end; the centre at the start's height along the normal, as Creo
+  /// writes it (a rise to the end is a helix). Refused without a centre or a start, with start
+  /// and end not on one circle about the centre, or with a tool axis other than the one in effect.
+  std::string circle(const block& b, const vec3& end, int decimals) const {
+    if (!b.arc || !b.arc->centre_mm || !(b.motion == motion_kind::arc_cw || b.motion == motion_kind::arc_ccw))
+      fail(b, "an arc without its centre or direction (CIRCLE needs both)");
+    if (!at_) fail(b, "an arc whose start point is not known (CIRCLE follows the GOTO of its start)");
+    if (b.axes.tool_axis && norm(normalized(*b.axes.tool_axis) - normalized(axis_)) > 1e-6)
+      fail(b, "the tool axis changes during the arc (CIRCLE keeps the tool axis)");
+    const arc_plane plane = b.arc->plane;
+    vec3 c = *b.arc->centre_mm;
+    (plane == arc_plane::xy ? c.z : plane == arc_plane::zx ? c.y : c.x) =
+        plane == arc_plane::xy ? at_->z : plane == arc_plane::zx ? at_->y : at_->x;
+    const double tolerance = detail::circle_tolerance_mm / (inch_ ? mm_per_inch : 1.0);
+    const double r = detail::radius_in_plane_mm(plane, c, end), r_start = detail::radius_in_plane_mm(plane, c, *at_);
+    if (r <= tolerance || std::fabs(r - r_start) > tolerance)
+      fail(b, "the arc's start and end are not on one circle about its centre (radii " + format_number(r_start, decimals) +
+                  " and " + format_number(r, decimals) + ")");
+    const vec3 n = detail::plane_vector(plane, b.motion == motion_kind::arc_cw);
+    return "CIRCLE/" + format_number(c.x, decimals) + "," + format_number(c.y, decimals) + "," +
+           format_number(c.z, decimals) + "," + format_number(n.x, 0) + "," + format_number(n.y, 0) + "," +
+           format_number(n.z, 0) + "," + format_number(r, decimals);
+  }
+
   /// FEDRAT/MMPM,f or FEDRAT/INVERS,f.
   void feed(const block& b) {
     if (b.feed) {
@@ -223,13 +255,17 @@ class writer {
     const bool rapid = b.motion == motion_kind::rapid || b.feed_rapid;
     if (b.machine_coordinates && b.moves()) {
       foreign_note_ = true;
+      at_.reset();  // where the tool is after it is not known in CL data
     } else if (b.moves()) {
       if (b.axes.has_rotary()) fail(b, "rotary axis words (A, B, C) have no APT form");
-      if (b.arc || b.motion == motion_kind::arc_cw || b.motion == motion_kind::arc_ccw) fail(b, "arcs have no APT form");
       if (!b.axes.x_mm || !b.axes.y_mm || !b.axes.z_mm) fail(b, "GOTO needs x, y and z");
+      const vec3 end{*b.axes.x_mm, *b.axes.y_mm, *b.axes.z_mm};
+      const bool arc = b.arc || b.motion == motion_kind::arc_cw || b.motion == motion_kind::arc_ccw;
+      if (arc && rapid) fail(b, "a rapid arc (CIRCLE is a feed move)");
       if (rapid && !rapid_pending_) lines_.push_back("RAPID");
       if (!rapid && rapid_pending_) fail(b, "a linear move cannot follow RAPID");
       const int linear = options_.linear_decimals + (inch_ ? 1 : 0);
+      if (arc) lines_.push_back(circle(b, end, linear));
       std::string go = "GOTO/" + format_number(*b.axes.x_mm, linear) + "," + format_number(*b.axes.y_mm, linear) +
                        "," + format_number(*b.axes.z_mm, linear);
       if (b.axes.tool_axis) {
@@ -239,6 +275,8 @@ class writer {
       }
       lines_.push_back(std::move(go));
       rapid_pending_ = false;
+      at_ = end;
+      if (b.axes.tool_axis) axis_ = *b.axes.tool_axis;
     } else if (rapid) {
       lines_.push_back("RAPID");
       rapid_pending_ = true;
@@ -249,7 +287,7 @@ class writer {
 };
 
 /// Writes `p` as APT CL data, one statement per line. Throws std::invalid_argument naming the
-/// block's `file:line` when a block has rotary axis words, an arc, inch units, a move missing
+/// block's `file:line` when a block has rotary axis words, an arc CIRCLE cannot say, a move missing
 /// one of x, y, z, a linear move right after a rapid-only block, or a line break in a text field.
 inline std::string write(const program& p, const write_options& options = {}) {
   writer w(p.language, p.file, options);

@@ -1,5 +1,6 @@
 // APT input beyond its bad-input table (errors.txt, read by the dialect laws): reading goes on
-// after an error, a tool change, what the writer refuses.
+// after an error, a tool change, what the writer refuses (among them arcs CIRCLE cannot say).
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -47,4 +48,67 @@ TEST_CASE("apt: the writer names the block it cannot write") {
   p.blocks[0].axes.z_mm = 3;
   p.blocks[0].motion = motion_kind::arc_cw;
   CHECK_THROWS_AS(apt::write(p), std::invalid_argument);
+}
+
+namespace {
+
+/// A block of `file` at line `line` moving linearly to (x, y, z) mm.
+block goto_block(const char* file, std::size_t line, double x, double y, double z) {
+  block b;
+  b.where = {file, line, 1};
+  b.motion = motion_kind::linear;
+  b.axes.x_mm = x, b.axes.y_mm = y, b.axes.z_mm = z;
+  return b;
+}
+
+/// An arc block of `file` at line `line` to (x, y, z) about `centre` in `plane`.
+block arc_block(std::size_t line, double x, double y, double z, arc_plane plane, kin5::vec3 centre, bool clockwise) {
+  block b = goto_block("arc.nc", line, x, y, z);
+  b.motion = clockwise ? motion_kind::arc_cw : motion_kind::arc_ccw;
+  b.arc = arc_words{plane, centre, std::nullopt};
+  return b;
+}
+
+/// `blocks` read as ISO (`language`), written as APT: the text, or the writer's message.
+std::string written(std::vector<block> blocks, dialect language = id_of<iso::dialect>()) {
+  program p;
+  p.language = language;
+  p.blocks = std::move(blocks);
+  try {
+    return apt::write(p);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+}
+
+}  // namespace
+
+TEST_CASE("apt: an arc is CIRCLE (centre at the start's height, vector by the right-hand rule) and its GOTO") {
+  const block start = goto_block("arc.nc", 1, 10, 0, 5);
+  CHECK(written({start, arc_block(2, 0, 10, 5, arc_plane::xy, {0, 0, 0}, false)}) ==
+        "GOTO/10,0,5\nCIRCLE/0,0,5,0,0,1,10\nGOTO/0,10,5\n");
+  CHECK(written({start, arc_block(2, 0, -10, 5, arc_plane::xy, {0, 0, 5}, true)}) ==
+        "GOTO/10,0,5\nCIRCLE/0,0,5,0,0,-1,10\nGOTO/0,-10,5\n");
+  // a helix: the end 2 mm higher along the vector
+  CHECK(written({start, arc_block(2, 0, 10, 7, arc_plane::xy, {0, 0, 5}, false)}) ==
+        "GOTO/10,0,5\nCIRCLE/0,0,5,0,0,1,10\nGOTO/0,10,7\n");
+}
+
+TEST_CASE("apt: the writer refuses an arc CIRCLE cannot say") {
+  const block start = goto_block("arc.nc", 1, 10, 0, 5);
+  const std::string why = "arc.nc:2: block cannot be written in APT: ";
+  CHECK(written({arc_block(2, 0, 10, 5, arc_plane::xy, {0, 0, 5}, false)}) ==
+        why + "an arc whose start point is not known (CIRCLE follows the GOTO of its start)");
+  CHECK(written({start, arc_block(2, 0, 10.1, 5, arc_plane::xy, {0, 0, 5}, false)}) ==
+        why + "the arc's start and end are not on one circle about its centre (radii 10 and 10.1)");
+  block tilted = arc_block(2, 0, 10, 5, arc_plane::xy, {0, 0, 5}, false);
+  tilted.axes.tool_axis = kin5::vec3{0, 0.1, 1};
+  CHECK(written({start, tilted}) == why + "the tool axis changes during the arc (CIRCLE keeps the tool axis)");
+  block rapid = arc_block(2, 0, 10, 5, arc_plane::xy, {0, 0, 5}, false);
+  rapid.feed_rapid = true;
+  CHECK(written({start, rapid}) == why + "a rapid arc (CIRCLE is a feed move)");
+  block no_centre = arc_block(2, 0, 10, 5, arc_plane::xy, {0, 0, 5}, false);
+  no_centre.arc->centre_mm.reset();
+  no_centre.arc->radius_mm = 10;
+  CHECK(written({start, no_centre}) == why + "an arc without its centre or direction (CIRCLE needs both)");
 }
