@@ -4,9 +4,11 @@
 /// per-minute feeds as `FEDRAT/IPM`, each with one decimal more. A feed under inverse time (from
 /// the block or an earlier one) is `FEDRAT/INVERS`. An M function of a moving block is written
 /// before or after its GOTO, where the source's controller runs it (`machine_functions`).
-/// An arc is `CIRCLE/xc,yc,zc,i,j,k,r` then the GOTO of its end (circle.hpp).
-/// Axis-word rotary angles cannot be written (std::invalid_argument naming the block);
-/// anything else without an APT form becomes a `$$` comment carrying the block's text. Another
+/// An arc is `CIRCLE/xc,yc,zc,i,j,k,r` then the GOTO of its end (circle.hpp). What has no APT
+/// form is refused (std::invalid_argument naming the block): rotary axis words, an M function
+/// without a statement, a move in machine coordinates, a tool by name, a kept word a comment
+/// would lose; only text that moves nothing becomes a `$$` comment (docs/dialects/apt.md,
+/// "Writing": comments, passthrough text, tracking switches, plane and mode words). Another
 /// dialect's frame (`%`, `;$PATH=`) is not copied, and a block of another dialect after its end
 /// is refused unless it is only a comment (program_end.hpp). A dwell is `DELAY/t`.
 #pragma once
@@ -23,6 +25,7 @@
 #include "../block.hpp"
 #include "../number.hpp"
 #include "../program_end.hpp"
+#include "../text.hpp"
 #include "../tool_length.hpp"
 #include "../units.hpp"
 #include "../work_offsets.hpp"
@@ -51,6 +54,7 @@ class writer {
   /// comments). Blocks name themselves in messages: `file` is not needed.
   explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
       : same_(source == id_of<dialect>()),
+        source_language_(source),
         off_first_(controller_from<dialect>(source).spindle_off_before_motion),
         options_(chosen) {
     static_cast<void>(file);
@@ -73,6 +77,7 @@ class writer {
       return;
     }
     if (b.state.dwell_s) return dwell(out, b);
+    if (b.tool_name) fail(b, "a tool by name (" + one_line(b, *b.tool_name) + ") has no APT form (LOADTL takes a number)");
     // CL data are in the part's frame: APT has no statement that selects a work offset.
     if (b.state.work_offset) fail(b, "work offset " + spelling(*b.state.work_offset) + " has no APT form");
     // GOTO points are absolute tip positions and arcs are not written, so absolute mode, the
@@ -92,6 +97,7 @@ class writer {
     setup(in_unit);
     machine_functions(in_unit);
     feed(in_unit);
+    kept_words(in_unit);
     motion(in_unit);
     lines_.insert(lines_.end(), after_.begin(), after_.end());  // what acts at the block's end
     if (b.program_end || ends_) lines_.push_back("FINI");
@@ -106,6 +112,7 @@ class writer {
 
  private:
   bool same_;       // the blocks were read as APT
+  dialect_id source_language_;  // the dialect they were read in
   bool off_first_;  // the source's controller runs M5, M9 and M6 before a block's move (LinuxCNC)
   write_options options_;
   source_end end_;  // where another dialect's program stops running
@@ -114,6 +121,7 @@ class writer {
   modal_state source_;                      // the source program's state after the block (another dialect's)
   bool inch_ = false;          // UNITS/INCHES written: lengths in inches
   bool inverse_time_ = false;  // inverse-time feed in effect (this block's or an earlier one's)
+  std::optional<bool> fedrat_inverse_;  // whether the last FEDRAT written was INVERS
   std::vector<std::string> lines_;  // the block's statements up to its GOTO
   std::vector<std::string> after_;  // those after it: the M functions that act at the block's end
   bool foreign_note_ = false;       // something without an APT form: carry the block's text
@@ -206,7 +214,7 @@ class writer {
       else if (m == 6 && b.moves() && !off_first_) fail(b, "tool change (M6) in a block that moves (before or after the move?)");
       else if (m == 6) continue;  // LOADTL is the tool change: no M6 beside it
       else if (m == 2 || m == 30) ends_ = true;  // a Heidenhain line's end of the program run: FINI
-      else foreign_note_ = true;
+      else fail(b, "M function M" + std::to_string(m) + " has no APT statement");
     }
     if (!rpm_written) lines_.push_back("SPINDL/" + rpm);
   }
@@ -244,18 +252,34 @@ class writer {
       const int inch = inch_ ? 1 : 0;
       const int decimals = rate_decimals(*b.feed, options_.feed_decimals + inch, options_.finest_feed_decimals + inch);
       lines_.push_back(std::string("FEDRAT/") + mode + format_number(*b.feed, decimals));
+      fedrat_inverse_ = inverse_time_;
     } else if (b.feed_mode) {
+      foreign_note_ = true;  // the unit goes with the next FEDRAT (`motion` refuses a feed move without one)
+    }
+    if (b.tcp) foreign_note_ = true;  // CL data are tool-tip data: a tracking switch has no statement
+  }
+
+  /// Another dialect's kept words: the block's text as a `$$` comment when they are harmless
+  /// there (plane, absolute mode, cancels, path smoothing); refused when its dialect lists one
+  /// as a word whose effect a comment would lose (`lost_as_comment`: Siemens `T="NAME"`, `D0`).
+  void kept_words(const block& b) {
+    if (same_) return;
+    for (const std::string& w : b.kept_words) {
+      std::string word;
+      for (char c : w)
+        if (!is_space(c)) word.push_back(to_upper(c));
+      if (const std::string_view lost = lost_from<dialect>(source_language_, word); !lost.empty())
+        fail(b, w + " (" + std::string(lost) + ") has no APT form, and a $$ comment would lose it");
       foreign_note_ = true;
     }
-    if (b.tcp || (!b.kept_words.empty() && !same_)) foreign_note_ = true;
   }
 
   /// RAPID and GOTO/x,y,z[,i,j,k].
   void motion(const block& b) {
     const bool rapid = b.motion == motion_kind::rapid || b.feed_rapid;
     if (b.machine_coordinates && b.moves()) {
-      foreign_note_ = true;
-      at_.reset();  // where the tool is after it is not known in CL data
+      fail(b, "a move in machine coordinates (G53, G28, G30, SUPA, M91, M92) has no APT form (GOTO points are in the "
+              "part's frame)");
     } else if (b.moves()) {
       if (b.axes.has_rotary()) fail(b, "rotary axis words (A, B, C) have no APT form");
       if (!b.axes.x_mm || !b.axes.y_mm || !b.axes.z_mm) fail(b, "GOTO needs x, y and z");
@@ -264,6 +288,10 @@ class writer {
       if (arc && rapid) fail(b, "a rapid arc (CIRCLE is a feed move)");
       if (rapid && !rapid_pending_) lines_.push_back("RAPID");
       if (!rapid && rapid_pending_) fail(b, "a linear move cannot follow RAPID");
+      if (!rapid && fedrat_inverse_ && *fedrat_inverse_ != inverse_time_)
+        fail(b, std::string("a feed move ") + (inverse_time_ ? "in inverse time (G93)" : "per minute (G94)") +
+                    " without its own F: the FEDRAT in effect is in the other unit, and APT changes the unit only with "
+                    "a value");
       const int linear = options_.linear_decimals + (inch_ ? 1 : 0);
       if (arc) lines_.push_back(circle(b, end, linear));
       std::string go = "GOTO/" + format_number(*b.axes.x_mm, linear) + "," + format_number(*b.axes.y_mm, linear) +

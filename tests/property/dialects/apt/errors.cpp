@@ -1,12 +1,13 @@
 // APT input beyond its bad-input table (errors.txt, read by the dialect laws): reading goes on
-// after an error, a tool change, what the writer refuses (among them arcs CIRCLE cannot say).
+// after an error, a tool change, what the writer refuses (arcs CIRCLE cannot say, and every
+// construct of another dialect that has no APT form: never a `$$` comment in its place).
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
-#include <kin5/program/apt/dialect.hpp>
+#include <kin5/program/dialect.hpp>
 
 using namespace kin5::program;
 
@@ -111,4 +112,46 @@ TEST_CASE("apt: the writer refuses an arc CIRCLE cannot say") {
   no_centre.arc->centre_mm.reset();
   no_centre.arc->radius_mm = 10;
   CHECK(written({start, no_centre}) == why + "an arc without its centre or direction (CIRCLE needs both)");
+}
+
+TEST_CASE("apt: what another dialect says that has no APT form is refused, never a $$ comment") {
+  const block start = goto_block("in.nc", 1, 10, 0, 5);
+  const std::string why = "in.nc:2: block cannot be written in APT: ";
+  block m50 = goto_block("in.nc", 2, 20, 0, 5);
+  m50.m_codes = {50};
+  CHECK(written({start, m50}) == why + "M function M50 has no APT statement");
+  block home = goto_block("in.nc", 2, 0, 0, 0);
+  home.machine_coordinates = true;
+  CHECK(written({start, home}) ==
+        why + "a move in machine coordinates (G53, G28, G30, SUPA, M91, M92) has no APT form (GOTO points are in the "
+              "part's frame)");
+  block named;
+  named.where = {"in.nc", 2, 1};
+  named.tool_name = "BALL_D8";
+  CHECK(written({start, named}) == why + "a tool by name (BALL_D8) has no APT form (LOADTL takes a number)");
+  // G93 F2, then G94 and a feed move without F: FEDRAT/INVERS,2 would still be in effect
+  block inverse = goto_block("in.nc", 2, 20, 0, 5);
+  inverse.feed_mode = feed_unit::inverse_time, inverse.feed = 2;
+  block per_minute = goto_block("in.nc", 3, 30, 0, 5);
+  per_minute.feed_mode = feed_unit::per_minute;
+  CHECK(written({start, inverse, per_minute}) ==
+        "in.nc:3: block cannot be written in APT: a feed move per minute (G94) without its own F: the FEDRAT in effect "
+        "is in the other unit, and APT changes the unit only with a value");
+  per_minute.feed = 300;
+  CHECK(written({start, inverse, per_minute}) ==
+        "GOTO/10,0,5\nFEDRAT/INVERS,2\nGOTO/20,0,5\nFEDRAT/MMPM,300\nGOTO/30,0,5\n");
+}
+
+TEST_CASE("apt: a kept word whose effect a comment would lose is refused; a harmless one is a $$ comment") {
+  block lost;
+  lost.where = {"in.mpf", 2, 1};
+  lost.kept_words = {"T=\"BALL\""};
+  const std::string text = written({lost}, id_of<siemens::dialect>());
+  CHECK(text.rfind("in.mpf:2: block cannot be written in APT: T=\"BALL\" (", 0) == 0);
+  CHECK(text.find("a $$ comment would lose it") != std::string::npos);
+  block plane;
+  plane.where = {"in.nc", 2, 1};
+  plane.text = "G17 G40";
+  plane.kept_words = {"G17", "G40"};
+  CHECK(written({plane}) == "$$ G17 G40\n");
 }
