@@ -115,7 +115,8 @@ class circle_state {
     b.axes.tool_axis.reset();  // the axis in effect, unchanged
     b.motion = c.clockwise ? motion_kind::arc_cw : motion_kind::arc_ccw;
     b.arc = arc_words{c.plane, c.centre_mm, std::nullopt};
-    ended_ = c;
+    ended_ = c;  // the circle through its end, whatever radius the CIRCLE said
+    ended_->radius_mm = radius_in_plane_mm(c.plane, c.centre_mm, end_mm);
     ended_at_mm_ = end_mm;
     return std::nullopt;
   }

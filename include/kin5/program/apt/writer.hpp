@@ -221,9 +221,11 @@ class writer {
 
   /// `CIRCLE/xc,yc,zc,i,j,k,r` of arc block `b` ending at `end` (PTC Creo, "CL Output for
   /// Circular Interpolation"): the centre, the plane's normal (− for clockwise: the right-hand
-  /// rule), the radius to the end; the centre at the start's height along the normal, as Creo
-  /// writes it (a rise to the end is a helix). Refused without a centre or a start, with start
-  /// and end not on one circle about the centre, or with a tool axis other than the one in effect.
+  /// rule), the radius the mean of the start's and the end's, so that each lies within the
+  /// reader's tolerance of it whenever it lay so of the radius read; the centre at the start's
+  /// height along the normal, as Creo writes it (a rise to the end is a helix). Refused without
+  /// a centre or a start, with start and end more than twice the tolerance apart in radius, or
+  /// with a tool axis other than the one in effect.
   std::string circle(const block& b, const vec3& end, int decimals) const {
     if (!b.arc || !b.arc->centre_mm || !(b.motion == motion_kind::arc_cw || b.motion == motion_kind::arc_ccw))
       fail(b, "an arc without its centre or direction (CIRCLE needs both)");
@@ -235,10 +237,11 @@ class writer {
     (plane == arc_plane::xy ? c.z : plane == arc_plane::zx ? c.y : c.x) =
         plane == arc_plane::xy ? at_->z : plane == arc_plane::zx ? at_->y : at_->x;
     const double tolerance = detail::circle_tolerance_mm / (inch_ ? mm_per_inch : 1.0);
-    const double r = detail::radius_in_plane_mm(plane, c, end), r_start = detail::radius_in_plane_mm(plane, c, *at_);
-    if (r <= tolerance || std::fabs(r - r_start) > tolerance)
+    const double r_end = detail::radius_in_plane_mm(plane, c, end), r_start = detail::radius_in_plane_mm(plane, c, *at_);
+    const double r = (r_start + r_end) / 2.0;
+    if (r <= tolerance || std::fabs(r_end - r_start) > 2.0 * tolerance)
       fail(b, "the arc's start and end are not on one circle about its centre (radii " + format_number(r_start, decimals) +
-                  " and " + format_number(r, decimals) + ")");
+                  " and " + format_number(r_end, decimals) + ")");
     const vec3 n = detail::plane_vector(plane, b.motion == motion_kind::arc_cw);
     return "CIRCLE/" + format_number(c.x, decimals) + "," + format_number(c.y, decimals) + "," +
            format_number(c.z, decimals) + "," + format_number(n.x, 0) + "," + format_number(n.y, 0) + "," +

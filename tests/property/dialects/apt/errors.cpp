@@ -90,6 +90,10 @@ TEST_CASE("apt: an arc is CIRCLE (centre at the start's height, vector by the ri
         "GOTO/10,0,5\nCIRCLE/0,0,5,0,0,1,10\nGOTO/0,10,5\n");
   CHECK(written({start, arc_block(2, 0, -10, 5, arc_plane::xy, {0, 0, 5}, true)}) ==
         "GOTO/10,0,5\nCIRCLE/0,0,5,0,0,-1,10\nGOTO/0,-10,5\n");
+  // start and end 0.004 mm either side of the radius: r is their mean, and the text reads back
+  const std::string off = written({goto_block("arc.nc", 1, 10.004, 0, 5), arc_block(2, 0, 9.996, 5, arc_plane::xy, {0, 0, 5}, false)});
+  CHECK(off == "GOTO/10.004,0,5\nCIRCLE/0,0,5,0,0,1,10\nGOTO/0,9.996,5\n");
+  CHECK(apt::read(off, "back.cls").ok());
   // a helix: the end 2 mm higher along the vector
   CHECK(written({start, arc_block(2, 0, 10, 7, arc_plane::xy, {0, 0, 5}, false)}) ==
         "GOTO/10,0,5\nCIRCLE/0,0,5,0,0,1,10\nGOTO/0,10,7\n");
