@@ -217,6 +217,12 @@ constexpr std::string_view lost_as_comment(dialect d, std::string_view word) {
       [] { return std::string_view{}; });
 }
 
+/// `lost_as_comment(d, word)` for the folder of entry `Self` (program/dialect_id.hpp).
+template <class Self>
+constexpr std::string_view lost_from(dialect d, std::string_view word) {
+  return lost_as_comment(d, word);
+}
+
 /// The dialects of `List` that are not CL data, in list order: those `translate` reads and writes.
 template <class List = dialects>
 constexpr auto nc_dialect_ids() {

@@ -95,6 +95,12 @@ struct controller {
 template <class Self>
 constexpr controller controller_from(dialect d);
 
+/// What kept word `word` (upper case, no spaces) of dialect `d` does that a comment would lose
+/// (`lost_as_comment`), asked from the folder of entry `Self`; empty when nothing. Defined in
+/// program/dialect.hpp, as `controller_from` is.
+template <class Self>
+constexpr std::string_view lost_from(dialect d, std::string_view word);
+
 /// A word that a dialect's reader keeps without interpreting it (`block::kept_words`) and whose
 /// effect a program of another dialect would lose as a comment: a translation into another
 /// dialect refuses it (translate/source_checks.hpp). Words are compared upper case, spaces removed.

@@ -2,8 +2,9 @@
 /// Geometry of circular moves between two workpiece frames: the normal of a plane (G17 → +Z,
 /// G18 → +Y, G19 → +X), the principal plane a rotated normal lands on (if any: the setup must
 /// map an arc's plane onto XY, ZX or YZ of the target, else the arc cannot be written), a
-/// vector's component along a plane's normal, and the length of an arc's tool-tip path (for
-/// inverse-time feed). Points are in millimetres, in whatever frame the caller names.
+/// vector's component along a plane's normal, an arc's centre from its signed radius, and the
+/// length of an arc's tool-tip path (for inverse-time feed). Points are in millimetres, in
+/// whatever frame the caller names.
 /// @code
 ///   using namespace kin5::translate_detail;
 ///   const vec3 n_target = target_T_source.map_direction(plane_normal(plane_source));
@@ -59,6 +60,27 @@ struct arc_path {
   std::optional<vec3> centre_mm;        ///< absolute, in the plane of the start point
   std::optional<double> radius_mm;      ///< signed radius (CR, R) when no centre is given
 };
+
+/// The centre (mm) of arc `arc` from `start_mm` to `end_mm`, at the start's height along the
+/// normal: its own, or the one its signed radius gives (positive: the arc of at most 180°,
+/// negative: the longer one, as G2/G3 R and Heidenhain CR); none when the radius is more than
+/// 0.005 mm short of half the chord, or the chord is empty.
+inline std::optional<vec3> arc_centre_mm(const arc_path& arc, const vec3& start_mm, const vec3& end_mm) {
+  const double height_mm = normal_component(start_mm, arc.plane);
+  if (arc.centre_mm) {
+    vec3 c = *arc.centre_mm;
+    set_normal_component(c, arc.plane, height_mm);
+    return c;
+  }
+  if (!arc.radius_mm) return std::nullopt;
+  vec3 chord = end_mm - start_mm;
+  set_normal_component(chord, arc.plane, 0.0);
+  const double half_mm = norm(chord) / 2.0, r_mm = math::abs(*arc.radius_mm);
+  if (!(half_mm > 0.0) || half_mm > r_mm + 0.005) return std::nullopt;
+  const double h_mm = std::sqrt(std::fmax(0.0, r_mm * r_mm - half_mm * half_mm));
+  const bool left = arc.clockwise == (*arc.radius_mm < 0);  // left of the chord, about +normal
+  return start_mm + 0.5 * chord + (left ? h_mm : -h_mm) * normalized(cross(plane_normal(arc.plane), chord));
+}
 
 /// Length (mm) of the tool-tip path of arc `arc` from `start_mm` to `end_mm` (all in one
 /// frame), helical rise included; a full circle when start and end coincide about a centre.

@@ -4,7 +4,9 @@
 /// workpiece frame (CL data names no machine, so there is no setup and nothing to plan). F is
 /// kept: CL feed is tool-tip feed, and an inverse-time F (G93) stays one, `FEDRAT/INVERS`: each
 /// GOTO is the whole of its source block, so 1/(block time) means the same time. TCP switches
-/// become comments (CL data is tool-tip data); arcs are errors, since GOTO points cannot say them. Blocks that are
+/// become comments (CL data is tool-tip data). An arc keeps its plane, direction and centre (found
+/// from a signed radius where the source gives one: `arc_centre_mm`), which the APT writer
+/// writes as CIRCLE and the GOTO of its end. Blocks that are
 /// not motion are copied, their dialect text carried over (`carry_over.hpp`).
 /// @code
 ///   kin5::translate_detail::cl_target target(source_language);
@@ -60,10 +62,7 @@ class cl_target {
     block_report report{b.where, s.principal ? matchability::direct : matchability::other_branch, {}, {}, {}, 0.0};
     if (!s.principal) report.why = "the source pose is on the second solution branch of the source machine (K3)";
     on_report(std::move(report));
-    if (program::is_arc(s.motion)) {
-      out.errors.push_back(at(b, "circular move cannot be written as GOTO points; kin5 does not linearise arcs"));
-      return;
-    }
+    if (program::is_arc(s.motion) && !arc_into(o, b, s, out)) return;
     // A rotary feed move read as machine coordinates: each piece keeps its share of the block's
     // time T, (K15) = Tian et al. 2010, eq. (20), as FEDRAT/INVERS n/T (its tip may stand still).
     const bool timed = s.rotary_moves && !s.rapid;
@@ -86,7 +85,7 @@ class cl_target {
     o.axes = {};
     o.axes.x_mm = s.tip_source_mm.x, o.axes.y_mm = s.tip_source_mm.y, o.axes.z_mm = s.tip_source_mm.z;
     o.axes.tool_axis = s.u_source;
-    o.motion = s.rapid ? program::motion_kind::rapid : program::motion_kind::linear;
+    o.motion = program::is_arc(s.motion) ? s.motion : s.rapid ? program::motion_kind::rapid : program::motion_kind::linear;
     if (s.rapid) o.feed.reset();
     o.feed_mode.reset();
     if (timed) feed_in(o, pieces_per_min, program::feed_unit::inverse_time);
@@ -98,6 +97,19 @@ class cl_target {
   program::dialect source_language_;
   bool inverse_time_ = false;         // FEDRAT/INVERS in effect in the output
   bool source_inverse_time_ = false;  // and in the source
+
+  /// The arc of motion step `s` into `o` (the source frame is CL data's): plane and centre, the
+  /// centre of a signed radius found from its start and end; false, with an error at block `b`,
+  /// when the radius cannot reach the end.
+  static bool arc_into(program::block& o, const program::block& b, const source_step& s, translation& out) {
+    const auto centre = s.start_source_mm ? arc_centre_mm(s.arc_source, *s.start_source_mm, s.tip_source_mm) : std::nullopt;
+    if (!centre) {
+      out.errors.push_back(at(b, "circular move whose centre cannot be found (a radius shorter than half the chord)"));
+      return false;
+    }
+    o.arc = program::arc_words{s.arc_source.plane, *centre, std::nullopt};
+    return true;
+  }
 
   /// The source's feed unit again in `o` after pieces in inverse time: said, with its F (`per_minute`,
   /// the F in effect per minute, when `o` has none).

@@ -29,7 +29,7 @@ inline read_result read(std::string_view text, std::string file_name) {
 /// The APT CL data dialect: its id, capabilities, file markers, reader and writer.
 struct dialect {
   static constexpr std::string_view name = "apt";
-  static constexpr capabilities can{.cl_data = true, .inverse_time_feed = true, .tool_axis_vectors = true};
+  static constexpr capabilities can{.cl_data = true, .inverse_time_feed = true, .tool_axis_vectors = true, .arcs = true};
   static constexpr std::array<marker, 3> markers{{{"PARTNO", marker::place::block_start},
                                                   {"GOTO/", marker::place::block_start},
                                                   {"FEDRAT/", marker::place::block_start}}};

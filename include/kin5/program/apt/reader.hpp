@@ -5,12 +5,13 @@
 /// `LOADTL/n` and `LOAD/TOOL,n` (a tool change: the tool and M6, as ISO's `T n M6`),
 /// `SELECT/TOOL,n` (the tool alone, as ISO's `T n`), `MULTAX[/ON|OFF]` (a kept word),
 /// `COOLNT/ON|FLOOD|MIST|OFF`, `STOP`, `OPSTOP`, `DELAY/t` (a dwell of t seconds),
-/// `UNITS/MM|INCHES` (also `UNIT/`), `PARTNO name`, `FINI`, `PPRINT/text` and `$$ text` comments. After `UNITS/INCHES` GOTO points and unit-less
+/// `UNITS/MM|INCHES` (also `UNIT/`), `PARTNO name`, `FINI`, `PPRINT/text` and `$$ text` comments,
+/// `CIRCLE/xc,yc,zc,i,j,k,r` and the GOTO after it: one arc block (circle.hpp). After `UNITS/INCHES` GOTO points and unit-less
 /// feeds are inches, converted to mm (units.hpp); `IPM` feeds always are. Statements that only
 /// describe (vocabulary.hpp: `CUTTER`, `TLDATA`, …) and an identity `CSYS`/`MSYS`
 /// pass through; every other statement is refused at its major word, with the reason (`CYCLE`,
-/// `INSERT`, `TLAXIS`, `CUTCOM`, unknown words, …), as are per-revolution feeds, `CIRCLE`, and GOTO
-/// with other than 3 or 6 values.
+/// `INSERT`, `TLAXIS`, `CUTCOM`, unknown words, …), as are per-revolution feeds, a CIRCLE that is
+/// not one arc in a principal plane, and GOTO with other than 3 or 6 values.
 #pragma once
 
 #include <cstddef>
@@ -26,24 +27,38 @@
 #include "../text.hpp"
 #include "../transmission.hpp"
 #include "../units.hpp"
+#include "circle.hpp"
 #include "lexer.hpp"
 #include "vocabulary.hpp"
 
 namespace kin5::program::apt::detail {
 
-/// Reads one statement into a block; remembers whether a RAPID is pending.
+/// Reads one statement into a block; remembers whether a RAPID is pending, the last GOTO's
+/// point and tool axis, and a CIRCLE waiting for the GOTO of its end.
 class statement_reader {
  public:
   statement_reader(const file_name& file, bool& rapid_pending, read_result& diagnostics)
       : file_(file), rapid_pending_(rapid_pending), diagnostics_(diagnostics) {}
 
-  block read(const statement& st) {
+  /// The block of statement `st`; none for a CIRCLE, whose block is the GOTO after it.
+  std::optional<block> read(const statement& st) {
+    block b = read_statement(st);
+    if (std::exchange(holding_, false)) return std::nullopt;
+    return b;
+  }
+
+  /// The end of the text: a CIRCLE still waiting has no end point.
+  void finish() { circles_.interrupt(diagnostics_); }
+
+ private:
+  block read_statement(const statement& st) {
     st_ = &st;
     block b;
     b.where = st.at(file_, 0);
     b.text = st.text;
     if (st.has_comment) b.comment = st.comment;
     c_ = split_code(st.content);
+    if (c_.major != "GOTO" && !(c_.major.empty() && st.has_comment)) circles_.interrupt(diagnostics_);
     // Free text after PARTNO / PPRINT / INSERT may hold any byte; elsewhere control bytes are errors.
     const bool free_text = c_.major == "PARTNO" || c_.major == "PPRINT" || c_.major == "INSERT";
     if (control_byte(free_text ? c_.major_at : st.content.size())) return b;
@@ -65,7 +80,6 @@ class statement_reader {
     return b;
   }
 
- private:
   const file_name& file_;
   bool& rapid_pending_;
   read_result& diagnostics_;
@@ -73,6 +87,10 @@ class statement_reader {
   bool inch_ = false;  // UNITS/INCHES: GOTO points (and FEDRAT without a unit) in inches
   code c_;
   std::vector<argument> args_;
+  std::optional<vec3> at_mm_;  // the last GOTO's point, mm
+  vec3 axis_ = unit_z;         // the tool axis in effect (+Z until a GOTO gives one, as post reads it)
+  circle_state circles_;
+  bool holding_ = false;       // this statement is a CIRCLE held for its GOTO
 
   void error(std::size_t offset, std::string message, std::string construct = {}) {
     diagnostics_.add_error({st_->at(file_, offset), std::move(message), std::move(construct)});
@@ -167,7 +185,7 @@ class statement_reader {
       if (b.comment) text += (text.empty() ? "$$ " : " $$ ") + *b.comment;
       b.comment = std::string(lexing::trim(text));
     } else if (m == "CIRCLE") {
-      error(c_.major_at, "circular CL data (CIRCLE) is not supported", m);
+      circle();
     } else if (detail::described(m, c_.tail) || ((m == "CSYS" || m == "MSYS") && identity_frame())) {
       b.passthrough = true;  // written back in APT, a comment elsewhere: it changes no motion
     } else {
@@ -190,20 +208,46 @@ class statement_reader {
     return true;
   }
 
-  /// `GOTO/x,y,z[,i,j,k]`: rapid when a RAPID came before it.
+  /// `GOTO/x,y,z[,i,j,k]`: rapid when a RAPID came before it; the arc of a CIRCLE before it.
   void go_to(block& b) {
     b.motion = rapid_pending_ ? motion_kind::rapid : motion_kind::linear;
     rapid_pending_ = false;
-    if (!c_.slash || (args_.size() != 3 && args_.size() != 6)) return error(c_.major_at, "GOTO needs 3 or 6 values");
+    if (!c_.slash || (args_.size() != 3 && args_.size() != 6)) {
+      circles_.discard();
+      return error(c_.major_at, "GOTO needs 3 or 6 values");
+    }
     double v[6] = {};
+    bool good = true;
+    for (std::size_t a = 0; a < args_.size(); ++a) good = number(args_[a], v[a]) && good;
+    if (!good) return circles_.discard();
+    const double unit_mm = inch_ ? mm_per_inch : 1.0;
+    b.axes.x_mm = v[0] * unit_mm, b.axes.y_mm = v[1] * unit_mm, b.axes.z_mm = v[2] * unit_mm;
+    at_mm_ = vec3{*b.axes.x_mm, *b.axes.y_mm, *b.axes.z_mm};
+    if (args_.size() == 6 && !is_direction(v[3], v[4], v[5])) {
+      circles_.discard();
+      return error(args_[3].offset, "tool-axis vector shorter than 0.001 is not a direction");
+    }
+    if (args_.size() == 6) b.axes.tool_axis = vec3{v[3], v[4], v[5]};
+    if (const auto why = circles_.end_at(b, *at_mm_, axis_))
+      error(why->first == circle_state::at_vector ? args_[3].offset : c_.major_at, why->second, "CIRCLE");
+    if (args_.size() == 6) axis_ = vec3{v[3], v[4], v[5]};
+  }
+
+  /// `CIRCLE/xc,yc,zc,i,j,k,r` (circle.hpp): held for the GOTO of its end, or refused.
+  void circle() {
+    if (!c_.slash || args_.size() != 7)
+      return error(c_.major_at, "CIRCLE needs 7 values (x, y, z, i, j, k, r); other forms are not read", "CIRCLE");
+    double v[7] = {};
     bool good = true;
     for (std::size_t a = 0; a < args_.size(); ++a) good = number(args_[a], v[a]) && good;
     if (!good) return;
     const double unit_mm = inch_ ? mm_per_inch : 1.0;
-    b.axes.x_mm = v[0] * unit_mm, b.axes.y_mm = v[1] * unit_mm, b.axes.z_mm = v[2] * unit_mm;
-    if (args_.size() == 6 && !is_direction(v[3], v[4], v[5]))
-      error(args_[3].offset, "tool-axis vector shorter than 0.001 is not a direction");
-    else if (args_.size() == 6) b.axes.tool_axis = vec3{v[3], v[4], v[5]};
+    const auto c = circle_state::from(unit_mm * vec3{v[0], v[1], v[2]}, vec3{v[3], v[4], v[5]}, v[6] * unit_mm, at_mm_,
+                                      rapid_pending_);
+    if (const auto* why = std::get_if<circle_state::refusal>(&c))
+      return error(why->first == 0 ? c_.major_at : args_[why->first].offset, why->second, "CIRCLE");
+    circles_.hold(std::get<circle_state::circle>(c), *st_, file_);
+    holding_ = true;
   }
 
   /// `FEDRAT/[MMPM,|IPM,|INVERS,]f` (f alone: per minute in the program's unit).
@@ -304,7 +348,10 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
   bool rapid_pending = false;
   detail::statement_reader reader(file, rapid_pending, diagnostics);
   read_transmitted(text, file_path, diagnostics, on_block, [&](std::string_view body, const block_sink& sink) {
-    for_each_statement(body, [&](statement&& st) { sink(reader.read(st)); });
+    for_each_statement(body, [&](statement&& st) {
+      if (auto b = reader.read(st)) sink(std::move(*b));
+    });
+    reader.finish();
   });
 }
 

@@ -4,13 +4,18 @@
 /// per-minute feeds as `FEDRAT/IPM`, each with one decimal more. A feed under inverse time (from
 /// the block or an earlier one) is `FEDRAT/INVERS`. An M function of a moving block is written
 /// before or after its GOTO, where the source's controller runs it (`machine_functions`).
-/// Axis-word rotary angles and arcs cannot be written (std::invalid_argument naming the block);
-/// anything else without an APT form becomes a `$$` comment carrying the block's text. Another
+/// An arc is `CIRCLE/xc,yc,zc,i,j,k,r` then the GOTO of its end (circle.hpp). What has no APT
+/// form is refused (std::invalid_argument naming the block): rotary axis words, an M function
+/// without a statement, a move in machine coordinates, a tool by name, a kept word a comment
+/// would lose; only text that moves nothing becomes a `$$` comment (docs/dialects/apt.md,
+/// "Writing": comments, passthrough text, tracking switches, plane and mode words). Another
 /// dialect's frame (`%`, `;$PATH=`) is not copied, and a block of another dialect after its end
 /// is refused unless it is only a comment (program_end.hpp). A dwell is `DELAY/t`.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -20,9 +25,11 @@
 #include "../block.hpp"
 #include "../number.hpp"
 #include "../program_end.hpp"
+#include "../text.hpp"
 #include "../tool_length.hpp"
 #include "../units.hpp"
 #include "../work_offsets.hpp"
+#include "circle.hpp"
 #include "vocabulary.hpp"
 
 namespace kin5::program::apt {
@@ -47,6 +54,7 @@ class writer {
   /// comments). Blocks name themselves in messages: `file` is not needed.
   explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
       : same_(source == id_of<dialect>()),
+        source_language_(source),
         off_first_(controller_from<dialect>(source).spindle_off_before_motion),
         options_(chosen) {
     static_cast<void>(file);
@@ -69,6 +77,7 @@ class writer {
       return;
     }
     if (b.state.dwell_s) return dwell(out, b);
+    if (b.tool_name) fail(b, "a tool by name (" + one_line(b, *b.tool_name) + ") has no APT form (LOADTL takes a number)");
     // CL data are in the part's frame: APT has no statement that selects a work offset.
     if (b.state.work_offset) fail(b, "work offset " + spelling(*b.state.work_offset) + " has no APT form");
     // GOTO points are absolute tip positions and arcs are not written, so absolute mode, the
@@ -88,6 +97,7 @@ class writer {
     setup(in_unit);
     machine_functions(in_unit);
     feed(in_unit);
+    kept_words(in_unit);
     motion(in_unit);
     lines_.insert(lines_.end(), after_.begin(), after_.end());  // what acts at the block's end
     if (b.program_end || ends_) lines_.push_back("FINI");
@@ -102,6 +112,7 @@ class writer {
 
  private:
   bool same_;       // the blocks were read as APT
+  dialect_id source_language_;  // the dialect they were read in
   bool off_first_;  // the source's controller runs M5, M9 and M6 before a block's move (LinuxCNC)
   write_options options_;
   source_end end_;  // where another dialect's program stops running
@@ -110,10 +121,13 @@ class writer {
   modal_state source_;                      // the source program's state after the block (another dialect's)
   bool inch_ = false;          // UNITS/INCHES written: lengths in inches
   bool inverse_time_ = false;  // inverse-time feed in effect (this block's or an earlier one's)
+  std::optional<bool> fedrat_inverse_;  // whether the last FEDRAT written was INVERS
   std::vector<std::string> lines_;  // the block's statements up to its GOTO
   std::vector<std::string> after_;  // those after it: the M functions that act at the block's end
   bool foreign_note_ = false;       // something without an APT form: carry the block's text
   bool ends_ = false;               // an M2 / M30 M function: the end of the program run
+  std::optional<vec3> at_;          // the last GOTO's point, in the unit written
+  vec3 axis_ = unit_z;              // the tool axis in effect (+Z until a GOTO gives one)
 
   [[noreturn]] static void fail(const block& b, const std::string& why) {
     throw std::invalid_argument(b.where.file + ":" + std::to_string(b.where.line) + ": block cannot be written in APT: " + why);
@@ -200,9 +214,38 @@ class writer {
       else if (m == 6 && b.moves() && !off_first_) fail(b, "tool change (M6) in a block that moves (before or after the move?)");
       else if (m == 6) continue;  // LOADTL is the tool change: no M6 beside it
       else if (m == 2 || m == 30) ends_ = true;  // a Heidenhain line's end of the program run: FINI
-      else foreign_note_ = true;
+      else fail(b, "M function M" + std::to_string(m) + " has no APT statement");
     }
     if (!rpm_written) lines_.push_back("SPINDL/" + rpm);
+  }
+
+  /// `CIRCLE/xc,yc,zc,i,j,k,r` of arc block `b` ending at `end` (PTC Creo, "CL Output for
+  /// Circular Interpolation"): the centre, the plane's normal (− for clockwise: the right-hand
+  /// rule), the radius the mean of the start's and the end's, so that each lies within the
+  /// reader's tolerance of it whenever it lay so of the radius read; the centre at the start's
+  /// height along the normal, as Creo writes it (a rise to the end is a helix). Refused without
+  /// a centre or a start, with start and end more than twice the tolerance apart in radius, or
+  /// with a tool axis other than the one in effect.
+  std::string circle(const block& b, const vec3& end, int decimals) const {
+    if (!b.arc || !b.arc->centre_mm || !(b.motion == motion_kind::arc_cw || b.motion == motion_kind::arc_ccw))
+      fail(b, "an arc without its centre or direction (CIRCLE needs both)");
+    if (!at_) fail(b, "an arc whose start point is not known (CIRCLE follows the GOTO of its start)");
+    if (b.axes.tool_axis && norm(normalized(*b.axes.tool_axis) - normalized(axis_)) > 1e-6)
+      fail(b, "the tool axis changes during the arc (CIRCLE keeps the tool axis)");
+    const arc_plane plane = b.arc->plane;
+    vec3 c = *b.arc->centre_mm;
+    (plane == arc_plane::xy ? c.z : plane == arc_plane::zx ? c.y : c.x) =
+        plane == arc_plane::xy ? at_->z : plane == arc_plane::zx ? at_->y : at_->x;
+    const double tolerance = detail::circle_tolerance_mm / (inch_ ? mm_per_inch : 1.0);
+    const double r_end = detail::radius_in_plane_mm(plane, c, end), r_start = detail::radius_in_plane_mm(plane, c, *at_);
+    const double r = (r_start + r_end) / 2.0;
+    if (r <= tolerance || std::fabs(r_end - r_start) > 2.0 * tolerance)
+      fail(b, "the arc's start and end are not on one circle about its centre (radii " + format_number(r_start, decimals) +
+                  " and " + format_number(r_end, decimals) + ")");
+    const vec3 n = detail::plane_vector(plane, b.motion == motion_kind::arc_cw);
+    return "CIRCLE/" + format_number(c.x, decimals) + "," + format_number(c.y, decimals) + "," +
+           format_number(c.z, decimals) + "," + format_number(n.x, 0) + "," + format_number(n.y, 0) + "," +
+           format_number(n.z, 0) + "," + format_number(r, decimals);
   }
 
   /// FEDRAT/MMPM,f or FEDRAT/INVERS,f.
@@ -212,24 +255,48 @@ class writer {
       const int inch = inch_ ? 1 : 0;
       const int decimals = rate_decimals(*b.feed, options_.feed_decimals + inch, options_.finest_feed_decimals + inch);
       lines_.push_back(std::string("FEDRAT/") + mode + format_number(*b.feed, decimals));
+      fedrat_inverse_ = inverse_time_;
     } else if (b.feed_mode) {
+      foreign_note_ = true;  // the unit goes with the next FEDRAT (`motion` refuses a feed move without one)
+    }
+    if (b.tcp) foreign_note_ = true;  // CL data are tool-tip data: a tracking switch has no statement
+  }
+
+  /// Another dialect's kept words: the block's text as a `$$` comment when they are harmless
+  /// there (plane, absolute mode, cancels, path smoothing); refused when its dialect lists one
+  /// as a word whose effect a comment would lose (`lost_as_comment`: Siemens `T="NAME"`, `D0`).
+  void kept_words(const block& b) {
+    if (same_) return;
+    for (const std::string& w : b.kept_words) {
+      std::string word;
+      for (char c : w)
+        if (!is_space(c)) word.push_back(to_upper(c));
+      if (const std::string_view lost = lost_from<dialect>(source_language_, word); !lost.empty())
+        fail(b, w + " (" + std::string(lost) + ") has no APT form, and a $$ comment would lose it");
       foreign_note_ = true;
     }
-    if (b.tcp || (!b.kept_words.empty() && !same_)) foreign_note_ = true;
   }
 
   /// RAPID and GOTO/x,y,z[,i,j,k].
   void motion(const block& b) {
     const bool rapid = b.motion == motion_kind::rapid || b.feed_rapid;
     if (b.machine_coordinates && b.moves()) {
-      foreign_note_ = true;
+      fail(b, "a move in machine coordinates (G53, G28, G30, SUPA, M91, M92) has no APT form (GOTO points are in the "
+              "part's frame)");
     } else if (b.moves()) {
       if (b.axes.has_rotary()) fail(b, "rotary axis words (A, B, C) have no APT form");
-      if (b.arc || b.motion == motion_kind::arc_cw || b.motion == motion_kind::arc_ccw) fail(b, "arcs have no APT form");
       if (!b.axes.x_mm || !b.axes.y_mm || !b.axes.z_mm) fail(b, "GOTO needs x, y and z");
+      const vec3 end{*b.axes.x_mm, *b.axes.y_mm, *b.axes.z_mm};
+      const bool arc = b.arc || b.motion == motion_kind::arc_cw || b.motion == motion_kind::arc_ccw;
+      if (arc && rapid) fail(b, "a rapid arc (CIRCLE is a feed move)");
       if (rapid && !rapid_pending_) lines_.push_back("RAPID");
       if (!rapid && rapid_pending_) fail(b, "a linear move cannot follow RAPID");
+      if (!rapid && fedrat_inverse_ && *fedrat_inverse_ != inverse_time_)
+        fail(b, std::string("a feed move ") + (inverse_time_ ? "in inverse time (G93)" : "per minute (G94)") +
+                    " without its own F: the FEDRAT in effect is in the other unit, and APT changes the unit only with "
+                    "a value");
       const int linear = options_.linear_decimals + (inch_ ? 1 : 0);
+      if (arc) lines_.push_back(circle(b, end, linear));
       std::string go = "GOTO/" + format_number(*b.axes.x_mm, linear) + "," + format_number(*b.axes.y_mm, linear) +
                        "," + format_number(*b.axes.z_mm, linear);
       if (b.axes.tool_axis) {
@@ -239,6 +306,8 @@ class writer {
       }
       lines_.push_back(std::move(go));
       rapid_pending_ = false;
+      at_ = end;
+      if (b.axes.tool_axis) axis_ = *b.axes.tool_axis;
     } else if (rapid) {
       lines_.push_back("RAPID");
       rapid_pending_ = true;
@@ -249,7 +318,7 @@ class writer {
 };
 
 /// Writes `p` as APT CL data, one statement per line. Throws std::invalid_argument naming the
-/// block's `file:line` when a block has rotary axis words, an arc, inch units, a move missing
+/// block's `file:line` when a block has rotary axis words, an arc CIRCLE cannot say, a move missing
 /// one of x, y, z, a linear move right after a rapid-only block, or a line break in a text field.
 inline std::string write(const program& p, const write_options& options = {}) {
   writer w(p.language, p.file, options);
