@@ -78,9 +78,9 @@ class writer {
     // M428, G49 after M429.
     const bool length_line = !same_ && b.tcp && !length.empty();
     if (!length_line) own.insert(own.end(), length.begin(), length.end());
-    if (length_line && *b.tcp) before += joined(length) + '\n';
+    if (length_line && *b.tcp) before += with_words("", length);
     tracking(b, own, before);
-    if (length_line && !*b.tcp) (b.moves() || changes_tool(b) ? before : after) += joined(length) + '\n';
+    if (length_line && !*b.tcp) (b.moves() || changes_tool(b) ? before : after) += with_words("", length);
     if (!same_ && tracking_ && !length_of_loaded_ && is_motion(b))
       fail(b, "a move under tracking while G43 does not hold the loaded tool's length (G43 H n of another tool, or "
               "G49): the TCP kinematics take the tool length from G43");
@@ -161,11 +161,6 @@ class writer {
     length_of_loaded_ = length_in_effect(source_) != tool_length::other;
   }
 
-  static std::string joined(const std::vector<std::string>& words) {
-    std::string s;
-    for (const std::string& w : words) s += (s.empty() ? "" : " ") + w;
-    return s;
-  }
 
   /// M428 / M429: in the block's line, or on a line of their own before a block that moves or
   /// changes the tool (the reader refuses a switch on such a line).
