@@ -306,7 +306,8 @@ class statement_reader {
   /// DELAY); `DELAY/REV,n` and other forms are refused (vocabulary.hpp).
   void delay(block& b) {
     double t = 0;
-    if (!c_.slash || !number(args_[0], t)) return;
+    if (!c_.slash) return error(c_.major_at, "DELAY: a dwell is DELAY/t (a '/' and the seconds)", "DELAY");
+    if (!number(args_[0], t)) return;
     if (t < 0) return error(args_[0].offset, "DELAY: a dwell time cannot be negative", "DELAY");
     if (const std::string why = dwell_refusal(dwell_steps, t); !why.empty())
       return error(args_[0].offset, "DELAY: " + why, "DELAY");
