@@ -199,33 +199,42 @@ case "$name" in
     has_line d.nc 'N50 G2 X20\. Y0\. I5\. J0\.'
     no_line d.nc '(.* )?[XYZABCIJKRF][-+]?[0-9]+( .*)?'
     ;;
-  # Cutter radius compensation is refused at the word (a comment would leave the cut off by
-  # the radius).
+  # Cutter radius compensation is translated where the part stays the same and refused, at its
+  # block, elsewhere (docs/dialects/compensation.md); never passed on as a comment or dropped.
   compensation-rl)
+    tnc RL0 'X+0 Y+0 Z+50 B+0 C+0 RL F500' 'L X+10 Y+5' 'L X+20 R0'
+    run 0 translate --from dmu-80p --to dmu-80p --to-dialect iso -o rl0.nc RL0.h
+    has_line rl0.nc 'N3 G17 G41 D1 G1 X0\. Y0\. Z50\. B0\. C0\. F500\.'
+    has_line rl0.nc 'N5 G40 G1 X20\. Y5\. Z50\. B0\. C0\.'
+    no_line rl0.nc '.* (RL|RR|R0)( .*)?'
     tnc RL 'X+0 Y+0 Z+50 B+10 C+0 RL F500'
     run 2 translate --from dmu-80p --to dmu-80p --to-dialect iso -o rl.nc RL.h
-    error_at 'RL.h:4:27: error: RL: cutter radius compensation'
+    error_at 'RL.h:4:1: error: cutter radius compensation: the tool axis is not along Z'
     nothing rl.nc
     ;;
   compensation-g42)
     printf '%s\n' 'N10 TRAORI' 'N20 G1 G42 X0 Y0 Z50 A-30 B10 F500' 'N30 TRAFOOF' 'N40 M30' >g42.mpf
     run 2 translate --from sajo-12000p --to dmu-80p --to-dialect iso -o g42.nc g42.mpf
-    error_at 'g42.mpf:2:8: error: G42: cutter radius compensation'
+    error_at 'g42.mpf:2:8: error: G42: cutter radius compensation with no D since the tool change'
     nothing g42.nc
     ;;
-  # In every dialect compensation is refused at its word until it is translated
-  # (docs/dialects/compensation.md), never passed on as a comment or dropped.
   compensation-g41-iso)
     printf '%s\n' '%' 'O3000' 'G21 G90 G17' 'T1 M6' 'G43.4 H1' 'G1 X0. Y0. Z50. A0. C0. F500.' \
       'G41 D1 X10. Y0.' 'X20. Y10.' 'G40 X30. Y10.' 'G49' 'M30' '%' >g41.nc
-    run 2 translate --from ac-trunnion --to ac-trunnion --from-dialect iso --to-dialect siemens -o g41.mpf g41.nc
-    error_at 'g41.nc:7:1: error: G41: cutter radius compensation'
-    nothing g41.mpf
+    run 0 translate --from ac-trunnion --to ac-trunnion --from-dialect iso --to-dialect siemens -o g41.mpf g41.nc
+    has_line g41.mpf 'D1'
+    has_line g41.mpf 'G41 X10 Y0 Z50 A0 C0'
+    has_line g41.mpf 'G40 X30 Y10 Z50 A0 C0'
+    no_line g41.mpf '.*;.*(G4[0-2]|D[0-9]).*'
+    sed 's/G41 D1/G41 D2/' g41.nc >d2.nc
+    run 2 translate --from ac-trunnion --to ac-trunnion --from-dialect iso --to-dialect siemens -o d2.mpf d2.nc
+    error_at 'd2.nc:7:1: error: cannot write the program as siemens: cutter radius compensation D2 while tool 1 is loaded'
+    nothing d2.mpf
     ;;
   compensation-g41-linuxcnc)
     printf '%s\n' 'G21 G90 G17' 'T1 M6' 'G43' 'M428' 'G1 X0 Y0 Z50 A0 C0 F500' 'G42 X10 Y0' 'G40 X20' 'M429' 'M30' >g42.ngc
     run 2 translate --from xyzac-trt --to xyzac-trt --from-dialect linuxcnc --to-dialect iso -o g42.nc g42.ngc
-    error_at 'g42.ngc:6:1: error: G42: cutter radius compensation'
+    error_at 'g42.ngc:6:1: error: cutter radius compensation between linuxcnc and iso'
     nothing g42.nc
     ;;
   compensation-cutcom)

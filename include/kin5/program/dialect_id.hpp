@@ -88,6 +88,10 @@ struct controller {
   /// acts is the machine maker's choice. M3, M4, M7, M8 act at the start and M0, M1, M2, M30 at
   /// the end in every kin5 dialect. docs/dialects/apt.md, "M functions on a moving block".
   bool spindle_off_before_motion = false;
+  /// The cutter radius compensation's entry move ends tangent to the entry line, not at the
+  /// contour's start (LinuxCNC; docs/dialects/compensation.md): between two controls that differ
+  /// here the approach cuts differently, so compensation is not translated.
+  bool tangent_compensation_entry = false;
 };
 
 /// What the controller of dialect `d` reads, asked from the folder of entry `Self`, which cannot

@@ -107,6 +107,21 @@ class nc_target {
                                 feed_ == feed_policy::inverse_time);
   }
 
+  /// Cutter radius compensation in effect at block `b`, kept only where the target offsets the
+  /// same contour (docs/dialects/compensation.md): the setup turns about Z only (so the plane and
+  /// the side stay), and motion is written as the tool tip, not in machine coordinates. False,
+  /// with an error at the block, when refused.
+  bool compensation_kept(const program::block& b, const source_step& s, translation& out) const {
+    const char* why = norm(target_T_source_.map_direction(unit_z) - unit_z) > 1e-9
+                          ? "the setup between the machines turns the XY plane (the side is kept only by a setup "
+                            "turning about Z)"
+                      : machine_mode_ && s.what == source_step::kind::motion
+                          ? "motion written in machine coordinates (--output-mode machine) has no contour to offset"
+                          : nullptr;
+    if (why) out.errors.push_back(at(b, std::string("cutter radius compensation: ") + why));
+    return why == nullptr;
+  }
+
   /// First pass: the step of every block, in order.
   void plan(const source_step& s) {
     if (s.what != source_step::kind::motion) return;
@@ -125,6 +140,7 @@ class nc_target {
       machine_.forget();
       return;
     }
+    if (s.compensated && !compensation_kept(b, s, out)) return;
     if (program::changes_tool(b) || s.length_entry != length_entry_) tool_changed_ = true, length_entry_ = s.length_entry;
     if (placement_ && s.what == source_step::kind::motion && !tool_length_at(b, s, out)) return;
     program::block o = b;

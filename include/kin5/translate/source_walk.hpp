@@ -23,6 +23,7 @@
 /// @endcode
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cstddef>
@@ -124,6 +125,9 @@ struct source_step {
   std::optional<double> block_time_min;
   /// The tool-table entry whose length is in effect (tool_lengths.hpp), when known.
   std::optional<long long> length_entry;
+  /// Cutter radius compensation (G41/G42, RL/RR) is on after the block: the target checks that
+  /// it can keep the side (docs/dialects/compensation.md).
+  bool compensated = false;
 };
 
 /// The source pose of a motion step as a report shows it: "A=-77.954 B=3.536" (degrees, letters
@@ -261,7 +265,9 @@ class source_walker {
     const bool offset_ok = !b.state.work_offset || check_work_offset(b, ctx);
     const bool speed_ok = !b.spindle_rpm || check_spindle_speed(b, ctx);
     const bool dwell_ok = !b.state.dwell_s || check_dwell(b, ctx);
-    if (!kept_ok || !offset_ok || !speed_ok || !dwell_ok || (!b.m_codes.empty() && !check_m_codes(b, ctx)) ||
+    s.compensated = modal_.radius_compensation && *modal_.radius_compensation != program::cutter_side::off;
+    if (!compensation_ok(b, s.compensated, to) || !kept_ok || !offset_ok || !speed_ok || !dwell_ok ||
+        (!b.m_codes.empty() && !check_m_codes(b, ctx)) ||
         (b.moves() && !source_.check(b, ctx))) {
       s.what = source_step::kind::failed;
       return s;
@@ -296,11 +302,13 @@ class source_walker {
       return s;
     }
     std::vector<program::diagnostic> notes;
-    if (auto error = source_.pose(modal_, s, warned_letters_, notes, b, kinematics)) {
+    // A compensated move's tool axis is checked in both passes, so both give the same steps.
+    if (auto error = source_.pose(modal_, s, warned_letters_, notes, b, kinematics || s.compensated)) {
       to.fail(at(b, *error));
       return s;
     }
     for (auto& note : notes) to.refuse(std::move(note));
+    if (s.compensated && !compensated_pose_ok(b, s, to)) return s;
     s.feed_mode = modal_.feed_mode;
     if (modal_.feed_mode == program::feed_unit::per_minute) s.feed_mm_per_min = modal_.feed;
     else s.feed_inverse_per_min = modal_.feed;
@@ -379,6 +387,43 @@ class source_walker {
     if (before.x_mm && before.y_mm && before.z_mm) s.start_source_mm = vec3{*before.x_mm, *before.y_mm, *before.z_mm};
     s.untracked = Source::needs_tcp && !modal_.tcp;
     return true;
+  }
+
+  /// Cutter radius compensation at block `b` (`on`: in effect after it), where the target
+  /// could cut another contour (docs/dialects/compensation.md): outside the XY plane (G17, a TNC's
+  /// tool axis Z), or switched on between controls whose entry moves differ (LinuxCNC's ends
+  /// tangent to the entry line). False, with an error at the block, when refused.
+  bool compensation_ok(const program::block& b, bool on, const report& to) const {
+    const bool switched_on = b.state.radius_compensation && *b.state.radius_compensation != program::cutter_side::off;
+    if (!switched_on && !(on && b.moves())) return true;
+    if (modal_.working_plane != program::arc_plane::xy) {
+      to.fail(at(b, std::string("cutter radius compensation outside the XY plane (") +
+                        (!modal_.working_plane ? "no G17 in effect" : *modal_.working_plane == program::arc_plane::zx ? "G18" : "G19") +
+                        "): kin5 translates it only in the XY plane, where every control offsets alike"));
+      return false;
+    }
+    if (switched_on && program::controller_of(context_.language).tangent_compensation_entry !=
+                           program::controller_of(context_.output).tangent_compensation_entry) {
+      to.fail(at(b, "cutter radius compensation between " + std::string(program::name(context_.language)) + " and " +
+                        std::string(program::name(context_.output)) +
+                        ": one control ends the entry move tangent to the entry line, the other at the contour's start, "
+                        "so the approach would cut differently"));
+      return false;
+    }
+    return true;
+  }
+
+  /// A move under cutter radius compensation: its programmed point must be the tool tip (not
+  /// read as machine coordinates) and the tool must stand along Z (a tilted tool needs 3-D
+  /// compensation: G41.2, CUT3DC, LN blocks). False, with an error at the block, when refused.
+  bool compensated_pose_ok(const program::block& b, const source_step& s, const report& to) const {
+    const double tolerance = std::max(to_radians(context_.tolerance).value, 1e-9);
+    const char* why = s.untracked ? "the move is read as machine coordinates: there is no contour to offset"
+                      : norm(s.u_source - unit_z) > tolerance
+                          ? "the tool axis is not along Z (a tilted tool needs 3-D compensation, which is not translated)"
+                          : nullptr;
+    if (why) to.fail(at(b, std::string("cutter radius compensation: ") + why));
+    return why == nullptr;
   }
 
   /// Tool-tip tracking switched on (`on`) or off: an axis the next block does not program stays

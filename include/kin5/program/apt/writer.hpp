@@ -82,10 +82,12 @@ class writer {
     if (b.state.work_offset) fail(b, "work offset " + spelling(*b.state.work_offset) + " has no APT form");
     // GOTO points are absolute tip positions and arcs are not written, so absolute mode, the
     // working plane and a radius compensation cancel change nothing in CL data; incremental
-    // positioning would, and compensation on is not written yet.
+    // positioning would. Compensation on is refused: a GOTO point is the tool's position (ISO
+    // 3592), while a compensated program's points are the contour (docs/dialects/compensation.md).
     if (b.state.distance == distance_mode::incremental) fail(b, "incremental positioning (G91) has no APT form");
     if (b.state.radius_compensation && *b.state.radius_compensation != cutter_side::off)
-      fail(b, "cutter radius compensation (G41/G42) is not written yet");
+      fail(b, "cutter radius compensation (G41/G42): a GOTO point is the tool's position, and the program's points "
+              "are the contour it offsets");
     length_check(b);
     lines_.clear();
     after_.clear();

@@ -2,8 +2,8 @@
 /// The Heidenhain motion blocks, read from their words: `L` and `LN` (a straight line, `LN` with a
 /// tool-axis vector `TX TY TZ`), `CC` (a circle centre: two coordinates give the plane, a missing
 /// one comes from the last position), `C` (an arc around the last `CC`) and `CR` (an arc of
-/// radius `R`), with `R0`, `F`, `FMAX`, `DR±` and M functions. `RL`/`RR` (radius
-/// compensation) and `FAUTO` are refused until they are read into the model.
+/// radius `R`), with `R0`/`RL`/`RR` (cutter radius compensation, `state.radius_compensation`
+/// where it changes), `F`, `FMAX`, `DR±` and M functions. `FAUTO` is refused.
 #pragma once
 
 #include <cstddef>
@@ -30,6 +30,8 @@ struct reader_state {
   parameter_table q = q_parameters();
   arc_plane plane = arc_plane::xy;
   std::optional<vec3> centre;
+  cutter_side radius = cutter_side::off;  ///< RL/RR in effect (modal until R0)
+  std::optional<arc_plane> working;       ///< the working plane of the last TOOL CALL's axis
   std::optional<std::string> begin_name;
   std::optional<bool> inch;  ///< the unit of BEGIN PGM (INCH: true)
   /// Where a `CYCL DEF 9.0 DWELL TIME` stands whose `CYCL DEF 9.1 DWELL` line is still to come.
@@ -182,9 +184,10 @@ class motion_reader : public word_checks {
     if (key == "R" && head_ == "CR" && !radius_ && !w.sign) {
       if (value_ok(w)) radius_ = *w.value * state_.mm_per_length();
     } else if (key == "R" && w.value && *w.value == 0 && w.error == number_error::none) {
-      b_.kept_words.push_back("R0");
+      if (state_.radius == cutter_side::off) b_.kept_words.push_back("R0");
+      else compensation(w, cutter_side::off);
     } else if ((key == "RL" || key == "RR") && bare && w.error == number_error::none) {
-      error(w.pos, key + ": cutter radius compensation is not supported yet (the path would be off by the radius)");
+      compensation(w, key == "RL" ? cutter_side::left : cutter_side::right);
     } else if (key == "DR" && arc_ && w.sign && !direction_) {
       direction_ = w.sign;
     } else if (key == "F") {
@@ -201,6 +204,27 @@ class motion_reader : public word_checks {
     } else {
       error(w.pos, "unknown word '" + (w.written.empty() ? key : w.written) + "'");
     }
+  }
+
+  /// RL / RR / R0: cutter radius compensation left, right, off; modal until changed. It is
+  /// switched on and off only in a straight-line block L (TNC 620 ISO Programming User's Manual
+  /// 340 56x-02, "Radius compensation", p. 154: not in a circle block; iTNC 530 DIN/ISO 6/2010
+  /// §5.3 p. 183: R0 in a straight-line block cancels it); a circle block may repeat the side in
+  /// effect. An `LN` block's RL/RR is 3-D compensation: refused.
+  void compensation(const word& w, cutter_side side) {
+    const std::string key = side == cutter_side::off ? "R0" : w.key;
+    if (head_ == "LN" && side != cutter_side::off)
+      return error(w.pos, key + " in an LN block: 3-D tool compensation along the surface normal is not supported");
+    if (side == state_.radius) return;
+    if (arc_)
+      return error(w.pos, key + ": cutter radius compensation " + (side == cutter_side::off ? "cancelled" : "switched on") +
+                              " in a circle block (allowed only in a straight-line block L)");
+    if (side != cutter_side::off && state_.working != arc_plane::xy)
+      return error(w.pos, key + ": cutter radius compensation is translated only with the tool axis Z (TOOL CALL n Z "
+                                "before it: the working plane XY)");
+    if (side != cutter_side::off) b_.state.working_plane = arc_plane::xy;  // the plane it offsets in, said
+    b_.state.radius_compensation = side;
+    state_.radius = side;
   }
 
   /// CC: two coordinates give the plane; missing ones come from the last position.

@@ -221,7 +221,8 @@ class block_reader : public word_checks {
       error(oversize->pos, oversize->written + ": a tool oversize in TOOL CALL is not supported yet (the path would move by it)");
     b_ = std::move(t);
     for (const std::string& w : b_.kept_words)  // the tool axis sets the working plane
-      if (w == "X" || w == "Y" || w == "Z") state_.plane = w == "Z" ? arc_plane::xy : w == "Y" ? arc_plane::zx : arc_plane::yz;
+      if (w == "X" || w == "Y" || w == "Z")
+        state_.working = state_.plane = w == "Z" ? arc_plane::xy : w == "Y" ? arc_plane::zx : arc_plane::yz;
   }
 
   /// A line of M functions; with other words it passes through (axis words are an error).

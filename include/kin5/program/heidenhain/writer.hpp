@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../cutter_radius.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../program_end.hpp"
@@ -103,6 +104,7 @@ class writer {
     }
     const block b = in_program_unit(b_mm);
     length_check(b, bi);
+    radius_check(b, bi);
     if (b.state.work_offset) preset_selection(b, *b.state.work_offset, bi);
     state_words(b, bi);
     const bool dropped = carry_feed(b);
@@ -177,6 +179,8 @@ class writer {
   std::optional<bool> inch_;  // the unit BEGIN PGM said (INCH: true)
   std::optional<long long> selected_tool_;  // the last tool number written or selected
   modal_state source_;                      // the source program's state after the block (another dialect's)
+  std::optional<cutter_side> pending_radius_;  // RL/RR/R0 for the next move's L block
+  cutter_side radius_written_ = cutter_side::off;  // the compensation the written text leaves in effect
   bool tcp_on_ = false;                     // M128 / FUNCTION TCPM in effect after the last block
   // From a coordinate-less block of another dialect, for the next move that has no F of its own.
   std::optional<double> pending_feed_;
@@ -350,17 +354,48 @@ class writer {
     if (tcp_on_ && !b.tcp) add(function_tcpm() ? tcpm : "M128");
   }
 
-  /// Absolute positions and R0 are what the writer's text always says (no `I` prefix, no RL/RR:
-  /// TNC 640 User's Manual, "Absolute/incremental coordinates", "Tool radius compensation"), so
-  /// G90 and G40 need no word; incremental positioning and radius compensation on are refused.
+  /// Absolute positions are what the writer's text always says (no `I` prefix: TNC 640 User's
+  /// Manual, "Absolute/incremental coordinates"), so G90 needs no word; incremental positioning
+  /// is refused. Radius compensation switched on or off waits for the next move (`radius_word`).
   /// The working plane needs no word either: `TOOL CALL … Z` makes it XY, every circle names its
   /// own plane in its CC line, and a radius arc (CR) outside XY is refused where it stands
   /// (`arc_keyword`), so a G18 or G19 leaves nothing the text would read otherwise.
   void state_words(const block& b, std::size_t bi) const {
     const auto& s = b.state;
     if (s.distance == distance_mode::incremental) fail(b, bi, "incremental positioning (G91)");
-    if (s.radius_compensation && *s.radius_compensation != cutter_side::off)
-      fail(b, bi, "cutter radius compensation (G41/G42) is not written yet");
+  }
+
+  /// Another dialect's cutter radius compensation: a TNC compensates with the called tool's
+  /// radius, R + DR (iTNC 530 DIN/ISO User's Manual 6/2010 §5.3 "Tool compensation", p. 183), so
+  /// a radius of another register (ISO `G41 D5` with tool 1 called) is refused at the block that
+  /// says it and at each move under it, as is a change of side without `R0` between (the TNC
+  /// manuals describe switching on from `R0` only). The side goes on the block's move, or waits
+  /// for the next.
+  void radius_check(const block& b, std::size_t bi) {
+    const auto& side = b.state.radius_compensation;
+    if (!same_ && radius_in_effect(source_) == tool_radius::other && ((side && *side != cutter_side::off) || is_motion(b)))
+      fail(b, bi, "cutter radius compensation " + radius_register_text(source_) +
+                      " (a TNC compensates with the called tool's own radius, from TOOL CALL)");
+    const cutter_side now = pending_radius_.value_or(radius_written_);
+    if (!same_ && side && *side != cutter_side::off && now != cutter_side::off && *side != now)
+      fail(b, bi, "cutter radius compensation changes side without being switched off (G40, R0) between: a TNC "
+                  "switches RL/RR on from R0");
+    if (side) pending_radius_ = *side == radius_written_ ? std::nullopt : side;
+  }
+
+  /// `RL`, `RR` or `R0` on the straight-line block `l` of the move after a switch: a TNC switches
+  /// radius compensation only there (TNC 620 ISO Programming User's Manual 340 56x-02, "Radius
+  /// compensation", p. 154: not in a circle block; iTNC 530 §5.3 p. 183: R0 in a straight line
+  /// cancels it); it stays in effect until the next switch.
+  void radius_word(std::string& l, const block& b, bool straight, std::size_t bi) {
+    if (!pending_radius_) return;
+    const cutter_side side = *pending_radius_;
+    if (!straight)
+      fail(b, bi, std::string("cutter radius compensation ") + (side == cutter_side::off ? "cancelled" : "switched on") +
+                      " for a circular or LN move: a TNC switches it only in a straight-line block L");
+    l += side == cutter_side::left ? " RL" : side == cutter_side::right ? " RR" : " R0";
+    radius_written_ = side;
+    pending_radius_.reset();
   }
 
   /// Cycle 9, a dwell: `CYCL DEF 9.0 DWELL TIME` (unless `header`: the block just written is a
@@ -474,6 +509,7 @@ class writer {
     for (const std::string& w : kept)
       if (w.empty() || to_upper(w[0]) != 'N') l += " " + w;
     kept.clear();
+    radius_word(l, b, l.starts_with("L "), bi);
     feed_word(l, b, bi);
     l += m_words;
     add(l);

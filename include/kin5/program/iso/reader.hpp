@@ -5,9 +5,11 @@
 /// `G53` / `G28` / `G30` (machine coordinates), M30/M2, G20/G21 (an inch program's lengths and
 /// per-minute feeds are converted to mm: units.hpp). Tool length compensation: `G43 H n`,
 /// `G43.4 H n`, `G43.5 H n` switch it on with offset n (without H: the last H of the program),
-/// `G49` off (`state.length_compensation`, `length_register`). Errors: G91 (except in `G91 G28`/`G30`
+/// `G49` off (`state.length_compensation`, `length_register`). Cutter radius compensation:
+/// `G41 D n` / `G42 D n` (without D: the last D), `G40` (`state.radius_compensation`,
+/// `radius_register`; start-up and cancel in an arc refused). Errors: G91 (except in `G91 G28`/`G30`
 /// homing blocks), G95, a unit change after motion, active frames (G68, G68.2, G51, G52 with
-/// offsets, G92), canned cycles, G41/G42, G10, macro and subprogram calls (G65, G66, M98, M97,
+/// offsets, G92), canned cycles, G10, macro and subprogram calls (G65, G66, M98, M97,
 /// M99), a move while G91 is in effect, G44, `H` without G43/G43.4/G43.5, G43 without H before
 /// any H, and any word not understood, moving or not: each at its word, naming it. G17/G18/G19, G90 (G91 of a homing block) and G40 are read into `state`
 /// (working plane, distance mode, radius compensation off), `G4 X2.` / `G4 P2000` into
@@ -32,6 +34,7 @@
 
 #include "../block.hpp"
 #include "../lexing.hpp"
+#include "../modal.hpp"
 #include "../number.hpp"
 #include "../parameters.hpp"
 #include "../text.hpp"
@@ -51,6 +54,9 @@ struct line_words {
   const word* offset = nullptr;    ///< the work-offset word of the block
   const word* g43 = nullptr;       ///< G43, G43.4 or G43.5: H is its length offset
   const word* h = nullptr;         ///< the H word
+  const word* g41 = nullptr;       ///< G41 or G42: D is its radius offset
+  const word* g40 = nullptr;       ///< G40
+  const word* d = nullptr;         ///< the D word
   const word* motion = nullptr;
   std::optional<double> ijk[3];
   const word* ijk_word[3] = {};
@@ -74,6 +80,9 @@ struct reader_state {
   bool inverse_time = false;  // G93 active: F is not a length
   bool moved = false;         // a block has moved: the unit is fixed
   std::optional<long long> length_register;  // the last H given: G43 without H takes it
+  std::optional<long long> radius_register;  // the last D given: G41/G42 without D takes it
+  bool radius_on = false;           // G41/G42 in effect
+  bool startup_pending = false;     // G41/G42 said on a line without motion: the next move starts it up
 };
 
 /// The words a dialect built on this reader reads itself (LinuxCNC: program/linuxcnc/words.hpp).
@@ -211,6 +220,12 @@ class basic_reader {
       if (g == 280 || g == 300) l.homing = true;
       if (g == 435) l.g43_5 = true;
       if (g == 430 || g == 434 || g == 435) l.g43 = &w;
+      if (g == 400 || g == 410 || g == 420) {  // the same word twice says it once
+        const word* said = l.g41 ? l.g41 : l.g40;
+        if (said && g_code(said->value) != g)
+          return error(w.column, "two cutter radius compensation words in one block"), false;
+        (g == 400 ? l.g40 : l.g41) = &w;
+      }
       if (g == 50 || g == 51 || g == 80) l.uses_pq = true;
       if (g == 40) l.dwell = &w;
       if (g == 541 && !l.extended) l.extended = &w;  // its P may come first
@@ -242,6 +257,7 @@ class basic_reader {
     for (const word& w : words_) take(b, w, l);
     if (l.dwell && !l.suppress && !failed_) dwell(b, l);  // after an error in a word: that one only
     length_offset(b, l);
+    radius_offset(b, l);
     if (l.extended && !b.state.work_offset && !l.suppress)
       error(l.extended->column, "G54.1 needs P n, the number of the extended work offset");
     machine_or_incremental(b);
@@ -316,7 +332,10 @@ class basic_reader {
         if (l.h) return error(w.column, "word 'H' appears twice");
         l.h = &w;
         return;
-      case 'D': return keep();
+      case 'D':
+        if (l.d) return error(w.column, "word 'D' appears twice");
+        l.d = &w;
+        return;
       case 'P':
         if (l.extended && !b.state.work_offset) return extended_offset(b, w, l);
         if (l.dwell) return dwell_time(w, l);
@@ -370,6 +389,48 @@ class basic_reader {
     b.state.length_register = state_.length_register;
   }
 
+  /// G41 / G42 with D n: cutter radius compensation left / right with offset n (FANUC
+  /// B-63324EN/03 ch. 14; without D the offset of the last D, which before any D the program does
+  /// not say), G40 off. Start-up and cancel are refused in a circular move (ch. 14: only in G0/G1),
+  /// as is a D that would change the offset under compensation; a D with compensation off is kept
+  /// (it names the offset of a later G41 without D). In a refused construct's block D is kept.
+  void radius_offset(block& b, line_words& l) {
+    if (l.suppress) {
+      if (l.d) b.kept_words.emplace_back(l.d->text);
+      return;
+    }
+    if (l.d && !whole(*l.d, "radius offset number D")) return;
+    if (l.d && l.d->value < 1) return error(l.d->column, "radius offset number D must be 1 or more (D0 compensates no radius)");
+    if (l.d && !l.g41 && state_.radius_on)
+      return error(l.d->column, "word 'D' without G41 or G42 while cutter radius compensation is on (it would change "
+                                "the offset in effect)");
+    if (l.d) state_.radius_register = static_cast<long long>(l.d->value);
+    if (l.d && !l.g41) b.kept_words.emplace_back(l.d->text);
+    const word* sw = l.g41 ? l.g41 : l.g40;
+    const auto kind = b.motion ? b.motion : state_.motion;
+    const bool arc = kind && is_arc(*kind) && (b.motion || b.moves());
+    if (!sw) {
+      if (state_.startup_pending && arc)
+        error(l.motion ? l.motion->column : 1, "a circular move starts cutter radius compensation up (G41/G42 before "
+                                               "it): start-up is allowed only in G0/G1");
+      if (b.moves()) state_.startup_pending = false;
+      return;
+    }
+    if (arc && (l.g41 || state_.radius_on))  // G40 with compensation off cancels nothing
+      return error(sw->column, std::string(sw->text) + ": cutter radius compensation " +
+                                   (l.g41 ? "start-up" : "cancel") + " in a circular move (allowed only in G0/G1)");
+    if (l.g41 && !l.d && b.state.radius_register) state_.radius_register = b.state.radius_register;  // `Own`'s
+    if (l.g41 && !state_.radius_register && !failed_)
+      return error(sw->column, std::string(sw->text) + " without D: the radius offset in effect before the program "
+                                                       "is not known (G41 D n names it)");
+    if (failed_) return;
+    const bool left = l.g41 && g_code(l.g41->value) == 410;
+    b.state.radius_compensation = !l.g41 ? cutter_side::off : left ? cutter_side::left : cutter_side::right;
+    if (l.g41) b.state.radius_register = state_.radius_register;
+    state_.radius_on = l.g41 != nullptr;
+    state_.startup_pending = l.g41 && !b.moves();
+  }
+
   void m_word(block& b, const word& w, line_words& l) {
     if (!lexing::is_whole(w.value) || w.value > 99999) {
       if (!l.unknown) l.unknown = &w;
@@ -407,8 +468,8 @@ class basic_reader {
     } else if (g == 900) {
       state_.incremental = false;
       b.state.distance = distance_mode::absolute;
-    } else if (g == 400) {
-      b.state.radius_compensation = cutter_side::off;
+    } else if (g == 400 || g == 410 || g == 420) {
+      return;  // cutter radius compensation, with its D: `radius_offset`
     } else if (g >= 540 && g <= 590 && g % 10 == 0) {
       select_offset(b, w, {work_offset_family::g54, g / 10 - 53}, l);
     } else if (g == 541) {
@@ -462,7 +523,6 @@ class basic_reader {
 
   /// Why G code `g` (times ten) is refused, after its name; empty for a code not understood.
   static std::string refusal_of_g(int g) {
-    if (g == 410 || g == 420) return ": cutter radius compensation is not supported yet (the path would be off by the radius)";
     if (g == 440) return ": negative tool length compensation is not supported (no other dialect subtracts the length)";
     if (g == 100) return ": setting offsets from the program is not supported (later moves would use other offsets)";
     if (g == 650 || g == 660 || g == 661) return ": a macro call is not supported (the motion it makes would be lost)";

@@ -1,6 +1,6 @@
 /// @file program/iso/writer.hpp
 /// Blocks written as ISO / Fanuc G code, one block per line, words in the order
-/// `N  G90/G91 G17-G19 G40  kept G  G0-G3  G43.4 H/G43.5 H/G43 H/G49  G93/G94  G21/G20  X Y Z A B C  I J K  R  F S T M
+/// `N  G90/G91 G17-G19 G40/G41 D/G42 D  kept G  G0-G3  G43.4 H/G43.5 H/G43 H/G49  G93/G94  G21/G20  X Y Z A B C  I J K  R  F S T M
 /// kept  (comment)`; a dwell is `N  G4 X1.5  (comment)`, a line of its own.
 /// A program read in another dialect is framed as a FANUC program: `%`, `O` and its number, the
 /// blocks, an end (`M30` when the source gives none; `finish`), `%`; the other dialect's frame
@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../cutter_radius.hpp"
 #include "../number.hpp"
 #include "../program_end.hpp"
 #include "../program_name.hpp"
@@ -262,8 +263,10 @@ class writer {
 
   /// G90 / G91, G17 / G18 / G19, G40: the distance mode, working plane and radius compensation
   /// cancel the block says (Fanuc 30i/31i/32i-B Operator's Manual, "Absolute and incremental
-  /// programming (G90, G91)", "Plane selection", "Cutter compensation"). G41/G42 are not written:
-  /// no reader gives them yet.
+  /// programming (G90, G91)", "Plane selection", "Cutter compensation"). G41 / G42 take D: the
+  /// register the block names (ISO's, LinuxCNC's tool), else, as another dialect compensates
+  /// with the active tool's own radius, that tool's register (D n = tool n, as for H); with no
+  /// tool changed before, refused (FANUC B-63324EN/03 ch. 14; docs/dialects/compensation.md).
   void state_words(const block& b) {
     const auto& s = b.state;
     if (s.distance) words_.push_back(*s.distance == distance_mode::absolute ? "G90" : "G91");
@@ -271,9 +274,13 @@ class writer {
       plane_ = *s.working_plane;
       words_.push_back(plane_ == arc_plane::xy ? "G17" : plane_ == arc_plane::zx ? "G18" : "G19");
     }
-    if (s.radius_compensation && *s.radius_compensation != cutter_side::off)
-      fail(b, "cutter radius compensation (G41/G42) is not written yet");
-    if (s.radius_compensation) words_.push_back("G40");
+    if (!s.radius_compensation) return;
+    words_.push_back(cutter_side_code(*s.radius_compensation));
+    if (*s.radius_compensation == cutter_side::off) return;
+    const auto d = s.radius_register ? s.radius_register : active_tool_;
+    if (!d) fail(b, std::string(cutter_side_code(*s.radius_compensation)) + ": cutter radius compensation switched on "
+                    "before any tool change: no tool gives its radius offset D");
+    words_.push_back(code('D', *d));
   }
 
   /// G54 … G59 (work offsets 1 … 6), G54.1 P n (extended offset n): ISO's only forms (Fanuc

@@ -42,7 +42,8 @@ struct dialect {
   /// the line's move ("G-code Overview", "G-code Order of Execution": change tool, spindle and
   /// coolant come before "perform motion", stops after it).
   static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {6, 6, 3, 7}, .paren_comments = true,
-                                    .dwell = linuxcnc::dwell_steps, .spindle_off_before_motion = true};
+                                    .dwell = linuxcnc::dwell_steps, .spindle_off_before_motion = true,
+                                    .tangent_compensation_entry = true};
   /// Catalog machines whose controller reads it: LinuxCNC's own 5-axis simulation machines.
   static constexpr std::array<std::string_view, 2> default_for{"xyzac-trt", "xyzbc-trt"};
   /// Kept words a comment would lose: none (its dwell is `state.dwell_s`).

@@ -8,13 +8,14 @@
 /// | `M428`, `G12.1 P1` | tool-tip tracking on (the TCP kinematics of the 5-axis trt configurations) |
 /// | `M429`, `G13.1` | tracking off (identity kinematics) |
 /// | `G43` (the loaded tool: its number is the register once an M6 has said it), `G43 H n` (tool n's table entry), `G49` | `state.length_compensation`, `length_register` |
+/// | `G41`/`G42` (the loaded tool's radius), `G41 D n`/`G42 D n` (tool n's), `G40` | `state.radius_compensation`, `radius_register` |
 /// | `G54` … `G59`, `G59.1` … `G59.3` | `state.work_offset` 1 … 9 |
 /// | `G64 P… Q…`, `G91.1` | kept words (path blending tolerance, incremental arc centres: the default) |
 /// A numbered parameter assigned a number (`#1 = 5000`) stands for it, as in ISO (iso/reader.hpp);
 /// named parameters (`#<feed>`) and expressions are refused.
 /// Refused at the word: `M430`, `G12.1` with another type, a kinematics switch on a line with
 /// motion or M6, `G43.1`/`G43.2`, ISO codes LinuxCNC does not have (`G43.4`, `G43.5`, `G54.1`,
-/// `G50`), splines `G5`–`G5.3`, `G90.1`, `M61`, `H` without G43, `D` without G41/G42, `G4`
+/// `G50`), splines `G5`–`G5.3`, `G90.1`, `M61`, `H` without G43, `D` without G41/G42, `G41.1`/`G42.1`, `G4`
 /// with axis words, without P, with a negative P or with other words (`G4 P1.5` alone is
 /// `state.dwell_s`), o-words (lexer.hpp); under tracking, a move while G43 does not hold the
 /// loaded tool's length (the point programmed would not be the tool tip).
@@ -51,7 +52,8 @@ struct line_words {
   const word* tcp = nullptr;    ///< the kinematics switch (M428, M429, G12.1, G13.1)
   const word* axis = nullptr;   ///< the first axis word
   const word* t = nullptr;      ///< the T word (the tool an M6 of the line loads)
-  bool g64 = false, radius = false, m6 = false;
+  const word* g41 = nullptr;    ///< G41 or G42: D is its tool
+  bool g64 = false, radius = false, m6 = false, d = false;
 };
 
 /// The G name of a G code times ten: 430 → "G43", 591 → "G59.1".
@@ -89,6 +91,7 @@ class own_words {
       if (!own(w, b, l, error)) rest.push_back(w);
     finish(b, l, error);
     loaded_length(b, l);
+    loaded_radius(b, l, error);
     words = std::move(rest);
   }
 
@@ -127,17 +130,32 @@ class own_words {
     if (loaded) b.state.length_register = *loaded;
   }
 
+  /// `G41`/`G42` without D take the radius of the tool loaded now (LinuxCNC User Manual, "G-Codes",
+  /// "G41, G42 Cutter Compensation": the D word is optional, without it the loaded tool's radius
+  /// is used; the line's M6 runs first): its number is the register. Before any M6 the tool in
+  /// the spindle is not known: refused.
+  template <class Error>
+  void loaded_radius(block& b, const line_words& l, Error&& error) const {
+    if (!l.g41 || l.d) return;
+    const std::optional<long long> loaded = !l.m6 ? loaded_ : l.t ? std::optional<long long>(static_cast<long long>(l.t->value)) : selected_;
+    if (loaded) b.state.radius_register = *loaded;
+    else error(l.g41->column, std::string(l.g41->text) + " without D before any M6: the radius of the tool in the "
+                                                         "spindle is not known (G41 D n names the tool)");
+  }
+
   static void classify(const word& w, line_words& l) {
     if (std::string_view("XYZABC").find(w.letter) != std::string_view::npos && !l.axis) l.axis = &w;
     if (w.letter == 'M' && w.value == 6) l.m6 = true;
     if (w.letter == 'T' && lexing::is_whole(w.value)) l.t = &w;
+    if (w.letter == 'D') l.d = true;
     if (w.letter != 'G') return;
     const int g = g_code(w.value);
     if (g == 430 || g == 431 || g == 432 || g == 434 || g == 435) l.g43 = &w;
     if (g == 121) l.g12_1 = &w;
     if (g == 40) l.g4 = &w;
     if (g == 640) l.g64 = true;
-    if (g == 410 || g == 420) l.radius = true;
+    if (g == 410 || g == 420) l.radius = true, l.g41 = &w;
+    if (g == 411 || g == 421) l.radius = true;  // its D is refused with it
   }
 
   /// Whether word `w` is LinuxCNC's own (read into `b`, or refused); false leaves it to ISO.
@@ -182,6 +200,9 @@ class own_words {
       case 490: b.state.length_compensation = false; return true;
       case 431: case 432:
         return error(w.column, g_name(g) + ": a tool length offset other than the tool table's is not supported"), true;
+      case 411: case 421:
+        return error(w.column, g_name(g) + ": dynamic cutter compensation (the diameter in the program) is not "
+                                           "supported"), true;
       case 434: case 435: case 541: case 500: case 501:
         return error(w.column, g_name(g) + " is not a LinuxCNC G code" + not_linuxcnc_hint(g)), true;
       case 50: case 51: case 52: case 53:

@@ -5,7 +5,8 @@
 /// Reading rules (docs/dialects/siemens.md lists every word): `TRAORI` / `TRAFOOF` switch
 /// tool-tip tracking, `A3= B3= C3=` give a tool-axis vector, `I J K` (incremental from the last
 /// programmed point) or `CR=` give arcs, `SUPA` / `G53` / `G153` mean machine coordinates.
-/// `G70`/`G700` inch blocks are read in millimetres (`units`). An R parameter assigned a number
+/// `G70`/`G700` inch blocks are read in millimetres (`units`). `G41`/`G42`/`G40` are cutter
+/// radius compensation with the first edge `D1` only (`compensation`). An R parameter assigned a number
 /// stands for it in `X=R1` (parameters.hpp). Expressions, `G91` / `IC()` and
 /// active frame changes (`TRANS`, `ROT`, `CYCLE800`,
 /// …) are errors. A line without geometry that is not understood is kept verbatim (`passthrough`).
@@ -23,6 +24,7 @@
 
 #include "../block.hpp"
 #include "../lexing.hpp"
+#include "../modal.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
 #include "../transmission.hpp"
@@ -87,6 +89,43 @@ inline void arc(line_parse& p, const modal_state& state, std::vector<diagnostic>
   } else if (is_arc(state.motion) && b.axes.has_linear()) {
     error(p.geometry_column, "arc needs a centre (I J K) or a radius (CR=)");
   }
+}
+
+/// G41 / G42 compensate with the active cutting edge's radius, which kin5 translates only for
+/// the tool's first edge: `D1` said since the last tool change (SINUMERIK 840D sl Fundamentals
+/// 05/2017 ch. 11 "Tool radius compensation"; ch. 6: D selects the edge). Start-up and cancel
+/// (G40) are refused in a circular move, a D other than D1 while compensation is on too.
+inline void compensation(line_parse& p, modal_state& state, std::optional<motion_kind> before,
+                         std::vector<diagnostic>& errors) {
+  block& b = p.b;
+  const auto error = [&](std::size_t column, std::string m) {
+    errors.push_back({{b.where.file, b.where.line, column + 1}, std::move(m)});
+  };
+  if (changes_tool(b)) state.edge.reset();
+  if (p.edge) state.edge = *p.edge;
+  const auto kind = b.motion ? b.motion : before;
+  const bool arc = is_arc(kind) && (b.motion || b.moves());
+  if (!p.radius_word) {
+    if (state.startup_pending && arc)
+      error(0, "a circular move starts cutter radius compensation up (G41/G42 before it): start-up is allowed only "
+               "in G0/G1");
+    if (b.moves()) state.startup_pending = false;
+    if (p.edge && state.radius_on && *p.edge != 1)
+      error(0, "D" + std::to_string(*p.edge) + " while cutter radius compensation is on: kin5 translates only the "
+               "first cutting edge's radius (D1)");
+    return;
+  }
+  const auto& [word, column] = *p.radius_word;
+  const bool on = b.state.radius_compensation != cutter_side::off;
+  if (arc && (on || state.radius_on))  // G40 with compensation off cancels nothing
+    return error(column, word + ": cutter radius compensation " + (on ? "start-up" : "cancel") +
+                             " in a circular move (allowed only in G0/G1)");
+  if (on && state.edge != 1)
+    return error(column, word + ": cutter radius compensation with " +
+                             (state.edge ? "D" + std::to_string(*state.edge) : std::string("no D since the tool change")) +
+                             ": kin5 translates only the first cutting edge's radius (D1 after the tool change)");
+  state.radius_on = on;
+  state.startup_pending = on && !b.moves();
 }
 
 /// G70 / G700 (inch) and G71 / G710 (mm) apply from their own block on. In an inch block the
@@ -156,6 +195,7 @@ inline void finish(line_parse& p, modal_state& state, read_result& result) {
     for (auto& d : p.unknown) keep_or_count(p.errors, p.errors_not_kept, std::move(d));
     p.errors_not_kept += p.unknown_not_kept;
     std::stable_partition(b.kept_words.begin(), b.kept_words.end(), [](const std::string& w) { return !is_late_kept(w); });
+    const std::optional<motion_kind> motion_before = state.motion;
     if (b.motion) state.motion = b.motion;
     if (p.plane) state.plane = *p.plane;
     {
@@ -170,6 +210,7 @@ inline void finish(line_parse& p, modal_state& state, read_result& result) {
       if (p.dwell_column) dwell(p, found);
       tool_axis_vector(p, found);
       arc(p, state, found);
+      compensation(p, state, motion_before, found);
       for (auto& d : found) keep_or_count(p.errors, p.errors_not_kept, std::move(d));
     }
     state.move(b);
@@ -265,6 +306,7 @@ inline bool read_plain_motion(std::string_view line, block& b, modal_state& stat
   b.feed = words.feed;
   if (words.motion) state.motion = words.motion;
   state.move(b);
+  if (b.moves()) state.startup_pending = false;
   return true;
 }
 

@@ -48,6 +48,8 @@ struct line_parse {
   std::optional<std::size_t> dwell_column;          ///< G4 seen: its F is the dwell, in seconds
   std::optional<std::pair<double, std::size_t>> dwell_f;  ///< that F (value, column)
   std::string motion_word, feed_word, tcp_word;     ///< as written, for "conflicting words"
+  std::optional<std::pair<std::string, std::size_t>> radius_word;  ///< G40, G41 or G42 (column)
+  std::optional<long long> edge;                    ///< D n: the cutting edge selected
 };
 
 inline const std::string expression_in_axis = "expressions and parameters in axis words are not supported";
@@ -245,6 +247,7 @@ class word_reader {
       case 'D': case 'H':
         out_.has_content = true;
         if (whole(letter, v, start)) b.kept_words.push_back(letter + std::to_string(static_cast<long long>(v)));
+        if (letter == 'D' && lexing::is_whole(v)) out_.edge = static_cast<long long>(v);
         return;
       case 'L':
         return unknown(start, "L" + std::string(number_text) +
@@ -297,8 +300,11 @@ class word_reader {
       b.state.working_plane = out_.plane;
     } else if (g == 90) {
       b.state.distance = distance_mode::absolute;
-    } else if (g == 40) {
-      b.state.radius_compensation = cutter_side::off;
+    } else if (g == 40 || g == 41 || g == 42) {
+      if (out_.radius_word && out_.radius_word->first != canonical)
+        return error(start, "two cutter radius compensation words in one block");
+      out_.radius_word = {canonical, start};
+      b.state.radius_compensation = g == 40 ? cutter_side::off : g == 41 ? cutter_side::left : cutter_side::right;
     } else if ((g >= 54 && g <= 57) || g == 500 || (g >= 505 && g <= 599)) {
       // Settable zero offsets: G54 … G57 are the first four, G505 … G599 the others, G500 none
       const work_offset w = g <= 57 ? work_offset{work_offset_family::g54, static_cast<int>(g) - 53}
@@ -322,7 +328,6 @@ class word_reader {
     else if (g == 70 || g == 71 || g == 700 || g == 710) unit_word(g, canonical, start);
     else if (g == 53 || g == 153) out_.b.machine_coordinates = true;
     else if (g == 58 || g == 59) out_.frame_words.emplace_back(canonical, start);
-    else if (g == 41 || g == 42) error(start, canonical + ": cutter radius compensation is not supported yet (the path would be off by the radius)");
     else if (g == 4) out_.dwell_column = start;
     else unknown(start, "unknown word '" + canonical + "'");
   }

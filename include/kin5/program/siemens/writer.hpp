@@ -25,6 +25,7 @@
 #include <utility>
 
 #include "../block.hpp"
+#include "../cutter_radius.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../program_end.hpp"
@@ -286,9 +287,25 @@ class writer {
       written_.plane = *s.working_plane;
       plane_word(line, b, file, *s.working_plane);
     }
-    if (s.radius_compensation && *s.radius_compensation != cutter_side::off)
-      fail(b, file, "cutter radius compensation (G41/G42) is not written yet");
-    if (s.radius_compensation) detail::append_word(line, "G40");
+    radius_check(b, file);
+    if (s.radius_compensation) detail::append_word(line, cutter_side_code(*s.radius_compensation));
+  }
+
+  /// Another dialect's cutter radius compensation: G41 / G42 take the radius of the active
+  /// cutting edge (SINUMERIK 840D sl Fundamentals 05/2017, ch. 11 "Tool radius compensation"),
+  /// which is the loaded tool's own once the writer has written `D1` after its change. A radius
+  /// of another register (ISO `G41 D5` with tool 1 loaded) is refused at the block that says it
+  /// and at each move under it; so is G41/G42 while `D0` or no D is in effect.
+  void radius_check(const block& b, const std::string& file) const {
+    if (same_) return;
+    const bool says_on = b.state.radius_compensation && *b.state.radius_compensation != cutter_side::off;
+    if (radius_in_effect(source_) == tool_radius::other && (says_on || is_motion(b)))
+      fail(b, file, "cutter radius compensation " + radius_register_text(source_) +
+                        ": an 840D compensates with the active tool's own edge (D1), not another tool's register");
+    if (says_on && length_on_ != true)
+      fail(b, file, std::string(cutter_side_code(*b.state.radius_compensation)) +
+                        (length_on_ ? " while D0 is in effect" : " before any tool change") +
+                        ": an 840D compensates with the active edge's radius, and only D1 after a change is written");
   }
 
   /// Another dialect's tool length compensation: the active tool's first edge, `D1`, or `D0`

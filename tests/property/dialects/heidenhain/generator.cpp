@@ -129,7 +129,7 @@ item draw_item(modal& m) {
         if (a == 4) b.axes.b_deg = v;
         if (a == 5) b.axes.c_deg = v;
       }
-      // RL/RR (radius compensation) and FAUTO are refused until read into the model.
+      // R0 with compensation off is kept as written; RL/RR are read in cutter_compensation_laws.cpp.
       const std::string comp = *rc::gen::element<std::string>("", "", "R0");
       if (!comp.empty()) t += gap() + draw_case(comp), b.kept_words.push_back(comp);
       b.motion = motion_kind::linear;
