@@ -27,6 +27,7 @@
 
 #include "dialect_pairs.hpp"
 #include "law_move.hpp"
+#include "law_translation.hpp"
 
 using namespace kin5;
 using namespace kin5::program;
@@ -125,15 +126,6 @@ std::vector<block> draw_program(dialect from) {
   return out;
 }
 
-/// The translator of `from` text into `to` on the DMU 80P (to itself: the setup is the identity).
-std::unique_ptr<block_translator> translator(dialect from, dialect to, const translate_options& given = {}) {
-  using M = machines::dmu_80p;
-  if (to == apt_d) return make_reverse<M>(from, "m", report_detail::exceptions_only, {});
-  translate_options options = given;
-  options.output_dialect = to;
-  return make_translator<M, M>(from, "m", options, report_detail::exceptions_only);
-}
-
 /// Where and why a run was refused: the first error of the translation or of its writer.
 std::optional<diagnostic> refusal_of(const stream_result& run, block_translator& t) {
   if (!t.result().errors.empty()) return t.result().errors.front();
@@ -144,14 +136,11 @@ std::optional<diagnostic> refusal_of(const stream_result& run, block_translator&
 
 TEST_CASE("cutter compensation: every ordered pair keeps the side and the tool's radius at every move, or refuses") {
   kin5::test::check_each_pair(nc_sources, kin5::test::all_dialects(), [](dialect from, dialect to) {
-    program_text p;
-    p.language = from;
-    p.file = "m";
-    p.blocks = draw_program(from);
+    const program_text p = kin5::test::law_program(from, "m", draw_program(from));
     const std::string text = write(from, p);
     const read_result source = read(from, text, "m");
     RC_ASSERT(source.ok());
-    const auto t = translator(from, to);
+    const auto t = kin5::test::law_translator<machines::dmu_80p>(from, to, "m");
     string_sink out;
     const auto run = stream_text(*t, text, from, "m", to, out);
     RC_ASSERT(run.input.ok());
@@ -206,7 +195,7 @@ TEST_CASE("cutter compensation: each condition of the contract refused at its bl
   };
   for (const row& r : rows) {
     INFO(r.text << "into " << name(r.to) << ": " << r.message);
-    const auto t = translator(iso_d, r.to, options_for(r.how));
+    const auto t = kin5::test::law_translator<machines::dmu_80p>(iso_d, r.to, "m", options_for(r.how));
     string_sink out;
     const auto run = stream_text(*t, r.text, iso_d, "m", r.to, out);
     REQUIRE(run.input.ok());

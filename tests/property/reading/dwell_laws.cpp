@@ -26,6 +26,7 @@
 
 #include "dialect_pairs.hpp"
 #include "law_move.hpp"
+#include "law_translation.hpp"
 
 using namespace kin5;
 using namespace kin5::program;
@@ -158,10 +159,8 @@ TEST_CASE("dwell: translation keeps each dwell between the same moves, or refuse
   check_each_pair(all_dialects(), all_dialects(), [](dialect from, dialect to) {
     const bool cl = from == id_of<apt::dialect>();
     if (cl && to == from) return;  // post writes NC programs
-    program_text p;
-    p.language = id_of<apt::dialect>();  // CL data read: any duration, no text of a G-code dialect
-    p.file = "m";
-    p.blocks = draw_program(cl ? use::cl : use::nc, from);
+    // As if read from CL data: any duration, no text of a G-code dialect.
+    const program_text p = kin5::test::law_program(id_of<apt::dialect>(), "m", draw_program(cl ? use::cl : use::nc, from));
     std::string text;
     try {
       text = write(from, p);
@@ -169,16 +168,7 @@ TEST_CASE("dwell: translation keeps each dwell between the same moves, or refuse
       RC_ASSERT(documented_refusal(e.what(), p.blocks, from));
       return;
     }
-    std::unique_ptr<block_translator> t;
-    if (cl) {
-      t = make_post<M>(from, to, "m");
-    } else if (to == id_of<apt::dialect>()) {
-      t = make_reverse<M>(from, "m", report_detail::exceptions_only, {});
-    } else {
-      translate_options options;
-      options.output_dialect = to;
-      t = make_translator<M, M>(from, "m", options, report_detail::exceptions_only);
-    }
+    const auto t = kin5::test::law_translator<M>(from, to, "m");
     string_sink out;
     const auto run = stream_text(*t, text, from, "m", to, out);
     RC_ASSERT(run.input.ok());

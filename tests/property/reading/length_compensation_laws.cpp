@@ -29,6 +29,7 @@
 
 #include "dialect_pairs.hpp"
 #include "law_move.hpp"
+#include "law_translation.hpp"
 
 using namespace kin5;
 using namespace kin5::program;
@@ -163,10 +164,7 @@ std::vector<block> draw_program(dialect from, bool tracking) {
 
 TEST_CASE("length compensation: every ordered pair of dialects applies the same tool's length at every move") {
   kin5::test::check_each_pair(register_dialects, every_dialect, [](dialect from, dialect to) {
-    program_text p;
-    p.language = from;
-    p.file = "gen";
-    p.blocks = draw_program(from, false);
+    program_text p = kin5::test::law_program(from, "gen", draw_program(from, false));
     const read_result source = read(from, write(from, p), "gen");  // as its own reader gives it
     RC_ASSERT(source.ok());
     p.blocks = source.parsed.blocks;
@@ -191,10 +189,7 @@ TEST_CASE("length compensation: every ordered pair of dialects applies the same 
 TEST_CASE("length compensation: translation keeps the tool's length at every tracked move, or refuses") {
   using M = machines::dmu_80p;  // to itself: the setup is the identity
   kin5::test::check_each_pair(register_dialects, every_dialect, [](dialect from, dialect to) {
-    program_text p;
-    p.language = from;
-    p.file = "m";
-    p.blocks = draw_program(from, true);
+    const program_text p = kin5::test::law_program(from, "m", draw_program(from, true));
     const std::string text = write(from, p);
     const read_result source = read(from, text, "m");
     if (!source.ok()) {  // LinuxCNC refuses a tracked move without the loaded tool's G43 itself
@@ -202,14 +197,7 @@ TEST_CASE("length compensation: translation keeps the tool's length at every tra
       RC_ASSERT(expected_refusal(p.blocks, linuxcnc_d).has_value());
       return;
     }
-    std::unique_ptr<block_translator> t;
-    if (to == apt_d) {
-      t = make_reverse<M>(from, "m", report_detail::exceptions_only, {});
-    } else {
-      translate_options options;
-      options.output_dialect = to;
-      t = make_translator<M, M>(from, "m", options, report_detail::exceptions_only);
-    }
+    const auto t = kin5::test::law_translator<M>(from, to, "m");
     string_sink out;
     const auto run = stream_text(*t, text, from, "m", to, out);
     RC_ASSERT(run.input.ok());

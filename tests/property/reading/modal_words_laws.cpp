@@ -27,6 +27,7 @@
 
 #include "dialect_pairs.hpp"
 #include "law_move.hpp"
+#include "law_translation.hpp"
 
 using namespace kin5;
 using namespace kin5::program;
@@ -106,10 +107,7 @@ std::vector<block> draw_program(dialect from, bool rotary) {
 
 TEST_CASE("modal words: every ordered pair of dialects writes the plane, G90 and G40 or says them by its text") {
   kin5::test::check_each_pair(reading_dialects, every_dialect, [](dialect from, dialect to) {
-    program_text p;
-    p.language = from;
-    p.file = "gen";
-    p.blocks = draw_program(from, false);
+    program_text p = kin5::test::law_program(from, "gen", draw_program(from, false));
     // G91 between moves, cancelled before the next: only where the target cannot say it
     // (the readers of the others refuse a G91 outside a homing block).
     const bool incremental = !writes_incremental(to) && *rc::gen::inRange(0, 4) == 0;
@@ -139,19 +137,9 @@ TEST_CASE("modal words: every ordered pair of dialects writes the plane, G90 and
 TEST_CASE("modal words: translation keeps the plane, G90 and G40 in every ordered pair of dialects") {
   using M = machines::dmu_80p;  // to itself: the setup is the identity, planes map to themselves
   kin5::test::check_each_pair(reading_dialects, every_dialect, [](dialect from, dialect to) {
-    program_text p;
-    p.language = from;
-    p.file = "m";
-    p.blocks = draw_program(from, true);
+    const program_text p = kin5::test::law_program(from, "m", draw_program(from, true));
     const std::string text = write(from, p);
-    std::unique_ptr<block_translator> t;
-    if (to == id_of<apt::dialect>()) {
-      t = make_reverse<M>(from, "m", report_detail::exceptions_only, {});
-    } else {
-      translate_options options;
-      options.output_dialect = to;
-      t = make_translator<M, M>(from, "m", options, report_detail::exceptions_only);
-    }
+    const auto t = kin5::test::law_translator<M>(from, to, "m");
     string_sink out;
     const auto run = stream_text(*t, text, from, "m", to, out);
     RC_ASSERT(run.input.ok());

@@ -16,6 +16,8 @@
 
 #include <kin5/kin5.hpp>
 
+#include "law_translation.hpp"
+
 using namespace kin5;
 using namespace kin5::program;
 using program_text = kin5::program::program;
@@ -113,20 +115,17 @@ TEST_CASE("moving M functions: reverse then post keeps each spindle, coolant and
   using M = machines::dmu_80p;
   for (const dialect from : nc_dialects) {
     const bool ok = rc::check(std::string(name(from)) + " -> apt -> " + std::string(name(from)), [from] {
-      program_text p;
-      p.language = from;
-      p.file = "m";
-      p.blocks = draw_program(from);
+      const program_text p = kin5::test::law_program(from, "m", draw_program(from));
       const std::string text = write(from, p);
       const read_result source = read(from, text, "m");
       RC_ASSERT(source.ok());
       const auto want = trace_of(source.parsed.blocks, from);
       RC_ASSERT(trace_of(p.blocks, from) == want);
-      const auto cl = run(*make_reverse<M>(from, "m", report_detail::exceptions_only, {}), text, from, id_of<apt::dialect>());
+      const dialect apt_d = id_of<apt::dialect>();
+      const auto cl = run(*kin5::test::law_translator<M>(from, apt_d, "m"), text, from, apt_d);
       RC_ASSERT(cl.ok());
-      const std::string cl_text = write(id_of<apt::dialect>(), cl.parsed);
-      const auto back = run(*make_post<M>(id_of<apt::dialect>(), from, "m", report_detail::exceptions_only, {}), cl_text,
-                            id_of<apt::dialect>(), from);
+      const std::string cl_text = write(apt_d, cl.parsed);
+      const auto back = run(*kin5::test::law_translator<M>(apt_d, from, "m"), cl_text, apt_d, from);
       RC_ASSERT(back.ok());
       RC_ASSERT(trace_of(back.parsed.blocks, from) == want);
     });

@@ -25,6 +25,7 @@
 
 #include "dialect_pairs.hpp"
 #include "law_move.hpp"
+#include "law_translation.hpp"
 
 using namespace kin5;
 using namespace kin5::program;
@@ -132,10 +133,7 @@ TEST_CASE("work offsets: the table of selections is each dialect's capability") 
 
 TEST_CASE("work offsets: every ordered pair of dialects writes a selection it has and refuses one it lacks") {
   kin5::test::check_each_pair(writing_dialects, every_dialect, [](dialect from, dialect to) {
-    program_text p;
-    p.language = from;
-    p.file = "gen";
-    p.blocks = draw_program(from, false);
+    program_text p = kin5::test::law_program(from, "gen", draw_program(from, false));
     bool writable = true;
     for (const block& b : p.blocks)
       if (b.state.work_offset && !selects(to, *b.state.work_offset)) writable = false;
@@ -157,10 +155,7 @@ TEST_CASE("work offsets: every ordered pair of dialects writes a selection it ha
 TEST_CASE("work offsets: translation writes the same selection, the mapped one, or refuses at the selection") {
   using M = machines::dmu_80p;
   kin5::test::check_each_pair(writing_dialects, every_dialect, [](dialect from, dialect to) {
-    program_text p;
-    p.language = from;
-    p.file = "w";
-    p.blocks = draw_program(from, true);
+    program_text p = kin5::test::law_program(from, "w", draw_program(from, true));
     const std::string text = write(from, p);
     // A mapping of some of the program's selections: to one of the target's, to one it
     // lacks, or dropped.
@@ -192,15 +187,9 @@ TEST_CASE("work offsets: translation writes the same selection, the mapped one, 
         ++refused;
       }
     }
-    std::unique_ptr<block_translator> t;
-    if (to == id_of<apt::dialect>()) {
-      t = make_reverse<M>(from, "w", report_detail::exceptions_only, common);
-    } else {
-      translate_options options;
-      options.output_dialect = to;
-      options.common = common;
-      t = make_translator<M, M>(from, "w", options, report_detail::exceptions_only);
-    }
+    translate_options options;
+    options.common = common;
+    const auto t = kin5::test::law_translator<M>(from, to, "w", options);
     string_sink out;
     const auto run = stream_text(*t, text, from, "w", to, out);
     RC_ASSERT(run.input.ok());
