@@ -57,6 +57,11 @@ constexpr output_mode default_output_mode(program::dialect d) {
 
 namespace translate_detail {
 
+/// The word of rotary axis `l` in `w` (degrees).
+inline std::optional<double>& rotary_word(program::axis_words& w, axis_letter l) {
+  return l == axis_letter::A ? w.a_deg : (l == axis_letter::B ? w.b_deg : w.c_deg);
+}
+
 /// The program point (G8) of machine `m` with placement `in` whose slides put the tool tip at
 /// `tip_mm` (workpiece frame) with the angles `angles`: (G7) then (G8).
 inline vec3 program_point_for(const machine_model& m, const vec3& tip_mm, const kin5::rotary_values& angles,
@@ -189,7 +194,7 @@ class machine_writer {
     p.axes.x_mm = xyz_mm.x, p.axes.y_mm = xyz_mm.y, p.axes.z_mm = xyz_mm.z;
     std::array<double, 2> delta_deg{};
     for (std::size_t i = 0; i < to_.rotary_count; ++i) {
-      rotary_word_of(p.axes, to_.rotary(i).letter) = to_degrees(angles[i]).value;
+      rotary_word(p.axes, to_.rotary(i).letter) = to_degrees(angles[i]).value;
       delta_deg[i] = to_degrees(angles[i] - path.angles_at(s0)[i]).value;
     }
     p.feed.reset(), p.feed_mode.reset();
@@ -236,9 +241,6 @@ class machine_writer {
   bool in_inverse_time_ = false;  // G93 in effect in the output
   std::optional<written_pose> last_;
 
-  static std::optional<double>& rotary_word_of(program::axis_words& w, axis_letter l) {
-    return l == axis_letter::A ? w.a_deg : (l == axis_letter::B ? w.b_deg : w.c_deg);
-  }
   /// Says the feed unit in `p` when it changes.
   void unit(program::block& p, program::feed_unit u) {
     const bool inverse = u == program::feed_unit::inverse_time;

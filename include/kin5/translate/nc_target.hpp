@@ -36,32 +36,11 @@
 #include "feed.hpp"
 #include "machine_output.hpp"
 #include "options.hpp"
+#include "rotary_move.hpp"
+#include "slide_travel.hpp"
 #include "source_walk.hpp"
 
 namespace kin5::translate_detail {
-
-inline std::optional<double>& rotary_word(program::axis_words& w, axis_letter l) {
-  return l == axis_letter::A ? w.a_deg : (l == axis_letter::B ? w.b_deg : w.c_deg);
-}
-
-/// The change of the source's commanded angles from step `from` to step `to` (degrees, machine
-/// order), as (K16) counts it; `count` of them.
-struct rotary_delta_deg {
-  std::array<double, 2> value{};
-  std::size_t count = 0;
-  std::span<const double> span() const { return {value.data(), count}; }
-};
-inline rotary_delta_deg source_rotary_delta(const source_step& from, const source_step& to) {
-  rotary_delta_deg d;
-  d.count = to.rotary_count;
-  for (std::size_t i = 0; i < to.rotary_count && i < from.rotary_count; ++i)
-    d.value[i] = to.rotary_source_deg[i] - from.rotary_source_deg[i];
-  return d;
-}
-
-/// A rotary move of this much or more in one block, for less than half of it of tool-axis turn,
-/// is a warning (`nc_target::warn_rotary_move`).
-inline constexpr radians sudden_turn{pi / 2};
 
 /// The target side for an NC machine `to`: branch choice over the program (first pass), then
 /// feed and output blocks (second pass).
@@ -483,39 +462,18 @@ class nc_target {
     return true;
   }
 
-  /// A slide past its travel: the largest excess, mm, and what to say.
-  struct slide_excess {
-    double excess_mm;
-    std::string why;
-  };
-
   /// With a placement, the slides X, Y, Z (G7) of the source tip `tip_source_mm` with the planned angles:
-  /// the one farthest past its travel, if any is by more than `linear_slack_mm`. An arc is
-  /// checked at its end point.
+  /// the one farthest past its travel (slide_travel.hpp). An arc is checked at its end point.
   std::optional<slide_excess> slide_past_travel(const vec3& tip_source_mm, const kin5::rotary_values& angles) const {
     if (!placement_) return std::nullopt;
     const vec3 tip_target_mm = target_T_source_.map_point(tip_source_mm);
     return slides_past_travel(linear_axes_for(to_, angles, placement_->work_offset.map_point(tip_target_mm), *placement_));
   }
 
-  /// With a placement, the slide of `slides_mm` farthest past its travel, if any is by more
-  /// than `linear_slack_mm`.
+  /// With a placement, the slide of `slides_mm` farthest past its travel (slide_travel.hpp).
   std::optional<slide_excess> slides_past_travel(const vec3& slides_mm) const {
     if (!placement_) return std::nullopt;
-    const std::array<double, 3> x{slides_mm.x, slides_mm.y, slides_mm.z};
-    std::size_t worst = 0;
-    double excess = 0.0;
-    for (std::size_t i = 0; i < 3; ++i)
-      if (const double e = to_.linear(i).travel.excess_mm(x[i]); e > excess) excess = e, worst = i;
-    if (!(excess > inverse_options{}.linear_slack_mm)) return std::nullopt;
-    const linear_travel& t = to_.linear(worst).travel;
-    const char letter = to_char(to_.linear(worst).letter);
-    return slide_excess{excess, std::string("slide ") + letter + "=" + fixed(x[worst], 3) + " mm, " + fixed(excess, 3) +
-                                    " mm past its travel [" + fixed(t.lower_mm, 3) + ", " + fixed(t.upper_mm, 3) +
-                                    "] mm (tool length " + fixed(placement_->tool_length_mm, 3) + " mm, work offset " +
-                                    fixed(placement_->work_offset.translation_mm.x, 3) + "," +
-                                    fixed(placement_->work_offset.translation_mm.y, 3) + "," +
-                                    fixed(placement_->work_offset.translation_mm.z, 3) + ")"};
+    return translate_detail::slide_past_travel(to_, slides_mm, *placement_);
   }
 
   /// The words of an arc: end point, direction and centre in the plane the setup maps the
@@ -624,40 +582,18 @@ class nc_target {
     return length;
   }
 
-  /// Warnings at motion `j`, each with the largest rotary move: a change of solution branch from
-  /// the last motion off a pole (pole blocks in between, where both branches meet, included);
-  /// else a rotary axis turning by `sudden_turn` or more while the tool axis turns by less than
-  /// half of that (a swing past a pole: the table whips round inside a short block).
+  /// Warnings at motion `j` (rotary_move.hpp): a change of solution branch from the last motion
+  /// off a pole (pole blocks in between, where both branches meet, included), else a sudden turn.
   void warn_rotary_move(const program::block& b, std::size_t j, translation& out) {
     const int before = branch_off_pole_;
     if (!path_.pole[j]) branch_off_pole_ = path_.branch[j];
     if (!previous_motion_) return;
-    const kin5::rotary_values& from = *path_.angles[*previous_motion_];
-    const kin5::rotary_values& to = *path_.angles[j];
-    std::size_t axis = 0;
-    for (std::size_t i = 1; i < to_.rotary_count; ++i)
-      if (math::abs(to[i].value - from[i].value) > math::abs(to[axis].value - from[axis].value)) axis = i;
-    const radians turn{math::abs(to[axis].value - from[axis].value)};
-    // The text and the tool axes only when a warning is written: most blocks have none.
-    const auto turned = [&] {
-      return std::string(1, to_char(to_.rotary(axis).letter)) + " turns by " + fixed(to_degrees(turn).value, 3) + "°";
-    };
-    if (!path_.pole[j] && before >= 0 && before != path_.branch[j]) {
-      const bool avoidable = (path_.branches[*previous_motion_] & path_.branches[j]) != 0;
-      out.warnings.push_back(at(b, std::string(avoidable ? "solution branch switch (least total rotary travel)"
-                                                         : "unavoidable solution branch switch") +
-                                       " from branch " + std::to_string(before) + " to " +
-                                       std::to_string(path_.branch[j]) + " on " + std::string(to_.geometry.id) + ": " + turned()));
-      return;
-    }
-    if (turn.value < sudden_turn.value) return;
-    const radians axis_turn = angle_between(tool_axis(to_, from), tool_axis(to_, to));
-    if (turn.value > 2.0 * axis_turn.value)
-      out.warnings.push_back(at(b, "sudden rotary move on " + std::string(to_.geometry.id) + ": " + turned() +
-                                       " while the tool axis turns by " + fixed(to_degrees(axis_turn).value, 3) +
-                                       "° (past a pole)"));
+    std::optional<branch_change> change;
+    if (!path_.pole[j] && before >= 0 && before != path_.branch[j])
+      change = branch_change{before, path_.branch[j], (path_.branches[*previous_motion_] & path_.branches[j]) != 0};
+    if (auto warning = rotary_move_warning(to_, *path_.angles[*previous_motion_], *path_.angles[j], change))
+      out.warnings.push_back(at(b, std::move(*warning)));
   }
-
 };
 
 }  // namespace kin5::translate_detail
