@@ -10,10 +10,14 @@
 //
 // 1. writers and readers: a generated program of state words and moves, written by the target's
 //    writer and read back by its reader, is in the same effective state at every move (absolute,
-//    XY and no compensation where nothing was said); or the writer refuses G91, exactly where the
-//    table says it cannot say it.
+//    XY and no compensation where nothing was said), and a target that has the words says by each
+//    move all that the source said (the machine may start in another state); or the writer
+//    refuses G91, exactly where the table says it cannot say it.
 // 2. translation: the program, as text of its own dialect, translated (`translate`, or `reverse`
-//    into APT): the output read back is in the same effective state at every move.
+//    into APT): the output read back is in the same effective state at every move, and says as
+//    much as in 1.
+#include <array>
+#include <cstddef>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -82,6 +86,29 @@ std::vector<effective> trace_of(const std::vector<block>& blocks, bool with_plan
   return t;
 }
 
+/// Which of the plane, the distance mode and the radius compensation have been said by each
+/// move of `blocks`. The machine may start in any state (left by MDI or another program), so an
+/// output must say at each move at least what its source said by then.
+using said = std::array<bool, 3>;
+std::vector<said> said_of(const std::vector<block>& blocks) {
+  std::vector<said> t;
+  modal_state m;
+  for (const block& b : blocks) {
+    m.apply(b);
+    if (is_motion(b)) t.push_back({m.working_plane.has_value(), m.distance.has_value(), m.radius_compensation.has_value()});
+  }
+  return t;
+}
+
+/// Whether `output` says, at each move, all that `source` says (the same number of moves).
+bool says_all(const std::vector<said>& output, const std::vector<said>& source) {
+  if (output.size() != source.size()) return false;
+  for (std::size_t i = 0; i < source.size(); ++i)
+    for (std::size_t k = 0; k < 3; ++k)
+      if (source[i][k] && !output[i][k]) return false;
+  return true;
+}
+
 /// Blocks of state words and moves as the reader of `from` gives them; under tool-tip tracking
 /// with the rotary words of a B/C machine when `rotary` (for the translation), else X Y Z moves.
 std::vector<block> draw_program(dialect from, bool rotary) {
@@ -131,6 +158,7 @@ TEST_CASE("modal words: every ordered pair of dialects writes the plane, G90 and
     const read_result back = read(to, text, "back");
     RC_ASSERT(back.ok());
     RC_ASSERT(trace_of(back.parsed.blocks, writes_plane(to)) == trace_of(p.blocks, writes_plane(to)));
+    if (writes_plane(to)) RC_ASSERT(says_all(said_of(back.parsed.blocks), said_of(p.blocks)));
   });
 }
 
@@ -158,6 +186,7 @@ TEST_CASE("modal words: translation keeps the plane, G90 and G40 in every ordere
     const read_result back = read(to, out.text, "back");
     RC_ASSERT(back.ok());
     RC_ASSERT(trace_of(back.parsed.blocks, writes_plane(to)) == trace_of(p.blocks, writes_plane(to)));
+    if (writes_plane(to)) RC_ASSERT(says_all(said_of(back.parsed.blocks), said_of(p.blocks)));
   });
 }
 
