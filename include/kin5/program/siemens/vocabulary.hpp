@@ -39,10 +39,13 @@ inline std::string frame_message(std::string_view construct) {
   return std::string(construct) + " changes the working frame; kin5 does not model frame changes";
 }
 
-/// Words kept as written (after upper-casing) that do not change geometry.
+/// Words kept as written (after upper-casing) that do not change geometry. `FNORM` is the
+/// feed as every dialect means it, F constant over the block (SINUMERIK 840D sl Fundamentals
+/// 05/2017, ch. 8, "Feedrate characteristic (FNORM, FLIN, FCUB, FPO)"); FLIN, FCUB and FPO,
+/// which make F vary along the block, stay unknown words.
 inline bool is_kept_keyword(std::string_view w) {
-  static constexpr std::array<std::string_view, 17> words = {
-      "SOFT", "BRISK", "DRIVE", "FFWON", "FFWOF", "CUT2D", "CUT2DF", "ORIWKS", "ORIMKS",
+  static constexpr std::array<std::string_view, 18> words = {
+      "SOFT", "BRISK", "DRIVE", "FFWON", "FFWOF", "FNORM", "CUT2D", "CUT2DF", "ORIWKS", "ORIMKS",
       "ORIAXES", "ORIVECT", "COMPOF", "COMPON", "COMPCAD", "COMPCURV", "TOROTOF", "PAROTOF"};
   return std::find(words.begin(), words.end(), w) != words.end();
 }

@@ -83,7 +83,7 @@ struct line {
 };
 
 const std::vector<std::string> kept_pool = {"G17", "G18", "G19", "G40", "G54", "G57", "G64", "G642", "G90", "G500", "G505", "G601",
-                                            "SOFT", "BRISK", "FFWON", "CUT2DF", "ORIWKS", "ORIAXES", "D1", "H2"};
+                                            "SOFT", "BRISK", "FFWON", "FNORM", "CUT2DF", "ORIWKS", "ORIAXES", "D1", "H2"};
 
 const std::vector<std::string> passthrough_pool = {
     // Only lines that change nothing pass through (vocabulary.hpp `changes_nothing`); cycles,
