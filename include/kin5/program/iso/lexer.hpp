@@ -29,6 +29,7 @@ struct word {
   std::size_t column = 0;    ///< 1-based
   std::optional<long> parameter;   ///< `X#1`: the parameter standing for the number (the reader's to resolve)
   bool parameter_negated = false;  ///< `X-#1`
+  bool substituted = false;        ///< the number is a parameter's value (`X#1`), not written here
 };
 
 /// A line that assigns a parameter, `#1 = 5000` (after an optional block number).

@@ -105,6 +105,11 @@ struct no_own_words {
   /// (`S8000.5`: S is no decimal-point address, Mitsubishi M700V §5.3). LinuxCNC's `own_words`
   /// answers for LinuxCNC, whose S is a real.
   static bool whole_address(char l) { return l == 'S' || l == 'T' || l == 'H' || l == 'D' || l == 'M' || l == 'P'; }
+  /// Whether a number written at letter `l` without a decimal point counts least input
+  /// increments or whole units as a parameter of the control sets (decimal point input I or II:
+  /// `X10` is 0.010 mm or 10 mm; FANUC, Mitsubishi M700V §5.3), so that the reader refuses a
+  /// non-zero one. A parameter's value (`X#1`) is always in units. LinuxCNC's integers are units.
+  static bool point_decides_unit(char l) { return std::string_view("XYZABCIJKR").find(l) != std::string_view::npos; }
   template <class Error>
   void take(std::vector<word>&, block&, Error&&) {}
   template <class Error>
@@ -206,6 +211,7 @@ class basic_reader {
       w.value = n.value;
       w.text = substituted_.back();
       w.digits = w.text.substr(1);
+      w.substituted = true;
       w.parameter.reset();
     }
     return std::nullopt;
@@ -297,6 +303,11 @@ class basic_reader {
     const auto unknown = [&] {
       if (!l.unknown) l.unknown = &w;
     };
+    if (Own::point_decides_unit(w.letter) && !l.dwell && !w.substituted && w.value != 0 &&
+        w.digits.find('.') == std::string_view::npos)
+      return error(w.column, std::string(w.text) + " without a decimal point: least input increments or whole units as "
+                             "the control is set (on a control in decimal point input I, X10 is 0.010 mm); write " +
+                             std::string(w.text) + ".");
     switch (w.letter) {
       case 'G': return g_word(b, w, l);
       case 'X': case 'Y': case 'Z': case 'A': case 'B': case 'C': return axis_word(b, w, l);

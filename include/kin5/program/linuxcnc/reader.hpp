@@ -80,6 +80,9 @@ class own_words {
   /// or M is an error on it ("non-integer value for integer"), and in kin5 where those words are
   /// read; S and P are reals.
   static bool whole_address(char) { return false; }
+  /// Integers are whole units (User Manual, "G-code Overview", "Numbers"): no letter's unit
+  /// depends on a decimal point.
+  static bool point_decides_unit(char) { return false; }
 
   /// Reads and removes from `words` the words LinuxCNC reads itself.
   template <class Error>
