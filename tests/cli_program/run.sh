@@ -332,7 +332,7 @@ case "$name" in
     # statement of it is APT, never written as comments.
     run 2 post --machine dmu-80p -o p.h "$example"
     grep -q 'not APT CL data: it reads as an NC program in the siemens dialect' err || { report "Siemens program accepted"; show err; }
-    printf '%s\n' '%' 'O1000' 'G0 X0 Y0 Z50' 'G1 X10 F500' 'M30' '%' >plain.nc
+    printf '%s\n' '%' 'O1000' 'G0 X0 Y0 Z50.' 'G1 X10. F500' 'M30' '%' >plain.nc
     run 2 post --machine dmu-80p -o p.h plain.nc
     # Without markers: no GOTO/ and the ISO reader finds fewer errors than APT's, so one error
     # names the dialect it reads as, not one APT error per line.
@@ -433,7 +433,7 @@ case "$name" in
     printf '%s\n' 'N10 G54' 'N20 SUPA G0 Z0' 'N30 TRAORI' 'N40 G1 X0 Y0 Z50 A-45 B30 F500' 'N50 M30' >mc.mpf
     run 2 translate --from sajo-12000p --to dmu-80p --to-dialect iso -o mc.nc mc.mpf
     grep -q '^mc\.mpf:2:1: error: a move in machine coordinates' err || { report "SUPA move not refused"; show err; }
-    printf '%s\n' '%' 'O1' 'G54' 'G43.4 H1' 'G1 X0 Y0 Z50 B10 C20 F500' 'G49' 'G91 G28 Z0' 'M30' '%' >mc.nc
+    printf '%s\n' '%' 'O1' 'G54' 'G43.4 H1' 'G1 X0 Y0 Z50. B10. C20. F500' 'G49' 'G91 G28 Z0' 'M30' '%' >mc.nc
     run 2 translate --from dmu-80p --to dmu-80p --from-dialect iso --to-dialect siemens -o mc.mpf mc.nc
     grep -q '^mc\.nc:7:1: error: a move in machine coordinates' err || { report "G28 move not refused"; show err; }
     ;;
@@ -636,8 +636,8 @@ EOF
     # (0, -1, 0), is p + (150 + L)((0, 0, 1) - (0, -1, 0)) = p + (150 + L)(0, 1, 1) (theory.md,
     # (G8) and (G6), worked by hand): tool 1 (L 50) puts N40 at (0, 200, 200), tool 2 (L 100)
     # puts N70 at (0, 250, 250).
-    printf '%s\n' 'N10 G90 G17' 'N20 T1 M6' 'N30 G0 X0 Y0 Z0 A0 C0' 'N40 G0 A90' 'N50 G1 Z-5 F300' \
-      'N60 T2 M6' 'N70 G0 X0 Y0 Z0 A90 C0' 'N80 G1 Z-5 F300' 'N90 M30' >t.nc
+    printf '%s\n' 'N10 G90 G17' 'N20 T1 M6' 'N30 G0 X0 Y0 Z0 A0 C0' 'N40 G0 A90.' 'N50 G1 Z-5. F300' \
+      'N60 T2 M6' 'N70 G0 X0 Y0 Z0 A90. C0' 'N80 G1 Z-5. F300' 'N90 M30' >t.nc
     printf '%s\n' '# two tools' 'kin5_tools = 1' '' '[[tool]]' 'number = 1' 'length_mm = 50' '' '[[tool]]' \
       'number = 2' 'length_mm = 100' 'radius_mm = 5' >tools.toml
     src="--from ac-head --to ac-head --from-dialect iso --to-dialect iso --source-work-offset 0,0,-400"
@@ -685,8 +685,8 @@ EOF
     # --tcp-word chooses Heidenhain's TCP switch (docs/dialects/heidenhain.md): FUNCTION TCPM on a
     # block of its own before the moves, FUNCTION RESET TCPM before the tool call and after it
     # again; M128/M129 by default. Another output dialect has no choice: a usage error.
-    printf '%s\n' 'G90 G94 G21' 'T1 M6' 'S8000 M3' 'G43.4 H1' 'G1 X10 Y0 Z20 A-10 C20 F1000' 'T1 M6' \
-      'G1 X12 Y0 Z20 A-12 C20' 'G49' 'M30' >w.nc
+    printf '%s\n' 'G90 G94 G21' 'T1 M6' 'S8000 M3' 'G43.4 H1' 'G1 X10. Y0 Z20. A-10. C20. F1000' 'T1 M6' \
+      'G1 X12. Y0 Z20. A-12. C20.' 'G49' 'M30' >w.nc
     pair="--from ac-trunnion --to ac-trunnion --from-dialect iso --to-dialect heidenhain"
     run 0 translate $pair --tcp-word function-tcpm -o w.h w.nc
     grep -q 'M12[89]' w.h && { report "M128/M129 with function-tcpm"; show w.h; }

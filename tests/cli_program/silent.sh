@@ -282,7 +282,7 @@ case "$name" in
     run 2 post --machine dmu-80p -o p.h "$example"
     error_at "$example: error: not APT CL data: it reads as an NC program in the siemens dialect"
     nothing p.h
-    printf '%s\n' '%' 'O1000' 'G0 X0 Y0 Z50' 'G1 X10 F500' 'M30' '%' >plain.nc
+    printf '%s\n' '%' 'O1000' 'G0 X0 Y0 Z50.' 'G1 X10. F500' 'M30' '%' >plain.nc
     run 2 post --machine dmu-80p -o p.h plain.nc
     # No marker: one error naming the dialect whose reader reads it, not one per line.
     error_at 'plain.nc: error: not APT CL data: it reads as an NC program in the iso dialect (no GOTO/, and its reader finds fewer errors)'

@@ -35,7 +35,7 @@ run 1 unknown match --from sajo-12000p --to no-such-machine
 grep -q "unknown machine 'no-such-machine'" "$out/unknown.err" || report "unknown: no message"
 
 # --from-dialect takes the NC dialects of the list (an ISO program here), not CL data.
-printf '%%\nO0001\nG90 G17\nG43.4 H1\nG1 X0 Y0 Z50 A-45 B30 F1000\nG1 X10 A5\nG49\nM30\n%%\n' >"$out/wall.nc"
+printf '%%\nO0001\nG90 G17\nG43.4 H1\nG1 X0 Y0 Z50. A-45. B30. F1000\nG1 X10. A5.\nG49\nM30\n%%\n' >"$out/wall.nc"
 run 3 iso match --from sajo-12000p --to dmu-80p --program "$out/wall.nc" --from-dialect iso
 has iso "| 6 | 1 | 5.000 |"
 run 1 apt match --from sajo-12000p --to dmu-80p --program "$out/wall.nc" --from-dialect apt

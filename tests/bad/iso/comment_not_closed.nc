@@ -1,3 +1,3 @@
-; expect: 3:25: comment is not closed
+; expect: 3:26: comment is not closed
 G43.4 H1
-G1 X0 Y0 Z0 A10 C0 F100 (open
+G1 X0 Y0 Z0 A10. C0 F100 (open

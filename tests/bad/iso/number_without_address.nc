@@ -1,3 +1,3 @@
-; expect: 3:25: number with no address letter
+; expect: 3:26: number with no address letter
 G43.4 H1
-G1 X0 Y0 Z0 A10 C0 F100 12
+G1 X0 Y0 Z0 A10. C0 F100 12

@@ -1,3 +1,3 @@
-; expect: 3:25: tool number must be a whole number
+; expect: 3:26: tool number must be a whole number
 G43.4 H1
-G1 X0 Y0 Z0 A10 C0 F100 T1.5
+G1 X0 Y0 Z0 A10. C0 F100 T1.5

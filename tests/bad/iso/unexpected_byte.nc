@@ -1,3 +1,3 @@
-; expect: 3:25: unexpected byte 0x01
+; expect: 3:26: unexpected byte 0x01
 G43.4 H1
-G1 X0 Y0 Z0 A10 C0 F100 
+G1 X0 Y0 Z0 A10. C0 F100 

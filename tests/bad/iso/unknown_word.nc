@@ -1,3 +1,3 @@
-; expect: 3:25: unknown word 'Q5'
+; expect: 3:26: unknown word 'Q5'
 G43.4 H1
-G1 X0 Y0 Z0 A10 C0 F100 Q5
+G1 X0 Y0 Z0 A10. C0 F100 Q5

@@ -43,12 +43,14 @@ inline kin5::vec3 draw_direction() {
   return {c[0], c[1], c[2]};
 }
 
-/// `value` spelled in one of the ways NC programs write it: `+5`, `5.`, `.5`, `-.5`, `5.500`.
-inline std::string draw_spelling(double value, int decimals) {
+/// `value` spelled in one of the ways NC programs write it: `+5`, `5.`, `.5`, `-.5`, `5.500`;
+/// with `point`, a whole number other than zero always with its point (`5.`, never `5`: ISO's
+/// coordinates, where the point decides the unit).
+inline std::string draw_spelling(double value, int decimals, bool point = false) {
   std::string s = kin5::program::format_number(value, decimals);
   const bool negative = s.front() == '-';
   std::string digits = negative ? s.substr(1) : s;
-  if (digits.find('.') == std::string::npos && *rc::gen::arbitrary<bool>()) digits += '.';
+  if (digits.find('.') == std::string::npos && ((point && value != 0) || *rc::gen::arbitrary<bool>())) digits += '.';
   if (digits.rfind("0.", 0) == 0 && digits.size() > 2 && *rc::gen::arbitrary<bool>()) digits.erase(0, 1);  // never a bare "."
   if (digits.find('.') != std::string::npos && *rc::gen::arbitrary<bool>()) digits += "00";
   const std::string sign = negative ? "-" : (*rc::gen::arbitrary<bool>() ? "+" : "");
@@ -65,10 +67,11 @@ inline std::string draw_case(std::string word) {
   return word;
 }
 
-/// An address word: `letter` in random case, then `value` spelled as `draw_spelling` does, at
-/// random with a blank between (`X 5.`).
-inline std::string spell_word(char letter, double value, int decimals) {
-  return draw_case(std::string(1, letter)) + (*rc::gen::inRange(0, 6) == 0 ? " " : "") + draw_spelling(value, decimals);
+/// An address word: `letter` in random case, then `value` spelled as `draw_spelling` does (with
+/// `point` as there), at random with a blank between (`X 5.`).
+inline std::string spell_word(char letter, double value, int decimals, bool point = false) {
+  return draw_case(std::string(1, letter)) + (*rc::gen::inRange(0, 6) == 0 ? " " : "") +
+         draw_spelling(value, decimals, point);
 }
 
 /// Zero to two spaces or tabs.

@@ -43,9 +43,9 @@ TEST_CASE("iso: a parameter assigned a number reads as the number in the words t
   const std::vector<row> rows = {
       {"#1 = 1200. (XY FEED)\nG1 X10. F#1\n", "#1 = 1200. (XY FEED)\nG1 X10. F1200.\n"},
       {"N5 #2=-5.25\nG1 X#2 Y-#2 Z+#2\n", "N5 #2=-5.25\nG1 X-5.25 Y5.25 Z-5.25\n"},
-      {"#3=30\nG43.4 H1\nG1 X0 A#3 C-#3 F100.\n", "#3=30\nG43.4 H1\nG1 X0 A30 C-30 F100.\n"},
+      {"#3=30\nG43.4 H1\nG1 X0 A#3 C-#3 F100.\n", "#3=30\nG43.4 H1\nG1 X0 A30. C-30. F100.\n"},
       {"#4=7\nT#4 M6\nG43.4 H#4\n", "#4=7\nT7 M6\nG43.4 H7\n"},
-      {"#1=5\nG1 X#1\n#1=6\nG1 X#1\n", "#1=5\nG1 X5\n#1=6\nG1 X6\n"},  // the last assignment before the use
+      {"#1=5\nG1 X#1\n#1=6\nG1 X#1\n", "#1=5\nG1 X5.\n#1=6\nG1 X6.\n"},  // the last assignment before the use
       {"#500=12000\nS#500 M3\n", "#500=12000\nS12000 M3\n"},
   };
   same_reading(

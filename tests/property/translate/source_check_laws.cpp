@@ -360,7 +360,7 @@ TEST_CASE("post refuses an NC program given as CL data, and nothing reaches the 
   CHECK(siemens.errors[0].message.find("it reads as an NC program in the siemens dialect") != std::string::npos);
   // No marker: no GOTO/, and the ISO reader finds fewer errors than the APT reader (4): one
   // error naming the dialect, not one per line.
-  const auto iso = post_text("%\nO1000\nG0 X0 Y0 Z50\nG1 X10 F500\nM30\n%\n");
+  const auto iso = post_text("%\nO1000\nG0 X0 Y0 Z50.\nG1 X10. F500\nM30\n%\n");
   REQUIRE(iso.errors.size() == 1);
   CHECK(iso.errors[0].where.line == 0);  // about the whole file
   CHECK(iso.errors[0].message == "not APT CL data: it reads as an NC program in the iso dialect (no GOTO/, and its reader finds fewer "

@@ -10,7 +10,7 @@
 using namespace kin5::program;
 
 TEST_CASE("iso: reading goes on after an error and keeps every line") {
-  const read_result r = iso::read("G95\nG1 X1\nG1 Y\n", "t.nc");
+  const read_result r = iso::read("G95\nG1 X1.\nG1 Y\n", "t.nc");
   REQUIRE(r.errors.size() == 2);
   CHECK(r.errors[0].to_string() == "t.nc:1:1: error: feed per revolution (G95) is not supported");
   CHECK(r.errors[1].to_string() == "t.nc:3:4: error: word 'Y' has no value");
@@ -19,7 +19,7 @@ TEST_CASE("iso: reading goes on after an error and keeps every line") {
 }
 
 TEST_CASE("iso: harmless words and resets are not errors") {
-  const read_result r = iso::read("G52 X0 Y0\nG69\nG50\nG49\nG90\nG10 L2 P1 X5\n", "t.nc");
+  const read_result r = iso::read("G52 X0 Y0\nG69\nG50\nG49\nG90\nG10 L2 P1 X5.\n", "t.nc");
   // G10 (offsets set from the program) is refused; the others read fine.
   REQUIRE(r.errors.size() == 1);
   CHECK(r.errors[0].to_string() ==

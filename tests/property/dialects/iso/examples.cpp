@@ -32,8 +32,8 @@ TEST_CASE("iso: a Fanuc post style program with G43.4, homing and arcs") {
       "G01 Z-1. F250.\r\n"
       "X20.\r\n"
       "G02 X25. Y-.5 I5. J0\r\n"
-      "G03 X30 Y-5.5 R5.\r\n"
-      "g1x35y-5.5b-29.5c+44.8\r\n"
+      "G03 X30. Y-5.5 R5.\r\n"
+      "g1x35.y-5.5b-29.5c+44.8\r\n"
       "G49\r\n"
       "G05.1 Q0\r\n"
       "M30\r\n"
@@ -85,7 +85,7 @@ TEST_CASE("iso: LinuxCNC style: M428 remap, semicolon comments, G93, G43 is not 
       "T3 M6\n"
       "G43 H3 Z12.5 M08\n"
       "G93\n"
-      "G01 X1.5 Y-2 Z-.25 B10 C-90 F120.75\n"
+      "G01 X1.5 Y-2. Z-.25 B10. C-90. F120.75\n"
       "G94\n"
       "M2\n"
       "%\n";
@@ -101,11 +101,11 @@ TEST_CASE("iso: LinuxCNC style: M428 remap, semicolon comments, G93, G43 is not 
 
 TEST_CASE("iso: G43.5 vectors, arcs inside G43.5, other planes") {
   const std::string text =
-      "G43.5 H2 I0 J0 K1\n"
-      "G1 X10 Y0 Z5 I0 J-.6 K.8 F1000\n"
-      "G2 X20 Y0 I5 J0\n"
-      "G18 G3 X30 Z5 I5 K-1\n"
-      "G19 G2 Y5 Z10 R7\n"
+      "G43.5 H2 I0 J0 K1.\n"
+      "G1 X10. Y0 Z5. I0 J-.6 K.8 F1000\n"
+      "G2 X20. Y0 I5. J0\n"
+      "G18 G3 X30. Z5. I5. K-1.\n"
+      "G19 G2 Y5. Z10. R7.\n"
       "G49\n";
   const read_result r = iso::read(text, "v.nc");
   REQUIRE(r.errors.empty());
@@ -128,7 +128,7 @@ TEST_CASE("iso: G43.5 vectors, arcs inside G43.5, other planes") {
 }
 
 TEST_CASE("iso: comments keep non-UTF-8 bytes, lone CR ends lines, blank lines are skipped") {
-  const read_result r = iso::read("(caf\xe9 \x80)\r\r  \rG0 X1", "c.nc");
+  const read_result r = iso::read("(caf\xe9 \x80)\r\r  \rG0 X1.", "c.nc");
   REQUIRE(r.errors.empty());
   REQUIRE(r.parsed.blocks.size() == 2);
   CHECK(r.parsed.blocks[0].comment == "caf\xe9 \x80");
@@ -157,7 +157,7 @@ TEST_CASE("iso: blocks from another dialect") {
 
 TEST_CASE("iso: a line not understood is refused and changes nothing, spaced kept words write back as they were") {
   // G29 is not understood: refused, and the G18 beside it must not select the ZX plane.
-  const std::string text = "G0 X0 Y0 Z0\nG18 G29\nG2 X10 Y0 I5\nG 28 Z0\nO004200404\n";
+  const std::string text = "G0 X0 Y0 Z0\nG18 G29\nG2 X10. Y0 I5.\nG 28 Z0\nO004200404\n";
   const read_result r = iso::read(text, "p.nc");
   REQUIRE(r.errors.size() == 1);
   CHECK(r.errors[0].to_string() == "p.nc:2:5: error: unknown word 'G29'");

@@ -88,19 +88,19 @@ void draw_motion(item& it, state& st) {
   for (int k = 0; k < 3; ++k)
     if (have[k]) {
       (k == 0 ? b.axes.x_mm : k == 1 ? b.axes.y_mm : b.axes.z_mm) = pos[k];
-      it.words.push_back(spell_word(names[k], pos[k], 3));
+      it.words.push_back(spell_word(names[k], pos[k], 3, true));
     }
   const char* rot = "ABC";
   for (int k = 0; k < 3; ++k)
     if (*rc::gen::inRange(0, 3) == 0) {
       const double v = draw_decimal(-360, 360, 3);
       (k == 0 ? b.axes.a_deg : k == 1 ? b.axes.b_deg : b.axes.c_deg) = v;
-      it.words.push_back(spell_word(rot[k], v, 3));
+      it.words.push_back(spell_word(rot[k], v, 3, true));
     }
   if (!b.moves()) {  // at least one axis word
     const double v = draw_decimal(-360, 360, 3);
     b.axes.c_deg = v;
-    it.words.push_back(spell_word('C', v, 3));
+    it.words.push_back(spell_word('C', v, 3, true));
   }
   if (arc_effective) {
     arc_words a;
@@ -108,7 +108,7 @@ void draw_motion(item& it, state& st) {
     if (*rc::gen::arbitrary<bool>() || !known) {
       const double r = draw_decimal(-500, 500, 3);
       a.radius_mm = r;
-      it.words.push_back(spell_word('R', r, 3));
+      it.words.push_back(spell_word('R', r, 3, true));
     } else {
       const int first = st.plane == arc_plane::xy ? 0 : st.plane == arc_plane::zx ? 0 : 1;
       const int second = st.plane == arc_plane::xy ? 1 : 2;
@@ -118,7 +118,7 @@ void draw_motion(item& it, state& st) {
         if (k == first ? !skip_first : !skip_second) {
           const double off = draw_decimal(-300, 300, 3);
           c[k] = c[k] + off;
-          it.words.push_back(spell_word(static_cast<char>('I' + k), off, 3));
+          it.words.push_back(spell_word(static_cast<char>('I' + k), off, 3, true));
         }
       a.centre_mm = kin5::vec3{c[0], c[1], c[2]};
     }
@@ -126,9 +126,9 @@ void draw_motion(item& it, state& st) {
   } else if (st.vector_tcp && *rc::gen::arbitrary<bool>()) {
     const auto [i, j, k] = draw_direction();
     b.axes.tool_axis = kin5::vec3{i, j, k};
-    it.words.push_back(spell_word('I', i, 7));
-    it.words.push_back(spell_word('J', j, 7));
-    it.words.push_back(spell_word('K', k, 7));
+    it.words.push_back(spell_word('I', i, 7, true));
+    it.words.push_back(spell_word('J', j, 7, true));
+    it.words.push_back(spell_word('K', k, 7, true));
   }
   for (int k = 0; k < 3; ++k)
     if (have[k]) st.last[k] = pos[k];
@@ -199,7 +199,7 @@ item draw_item(state& st) {
       const int h = *rc::gen::inRange(0, 100);
       if (kind == 1 && *rc::gen::arbitrary<bool>()) {
         b.axes.tool_axis = kin5::vec3{0, 0, 1};
-        it.words.push_back("I0 J0 K1");
+        it.words.push_back("I0 J0 K1.");
       }
       it.words.push_back(spell_code('H', h));
       b.state.length_compensation = true;  // G43.4 H n: the length of offset n, with tracking
@@ -260,7 +260,7 @@ item draw_item(state& st) {
       it.words.push_back(b.kept_words.back());
       const double z = draw_decimal(-500, 500, 3);
       b.axes.z_mm = z;
-      it.words.push_back(spell_word('Z', z, 3));
+      it.words.push_back(spell_word('Z', z, 3, true));
       st.last[2].reset();
       break;
     }

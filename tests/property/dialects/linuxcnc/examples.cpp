@@ -83,7 +83,7 @@ TEST_CASE("linuxcnc: the writer spells tracking, length and offsets its own way"
 TEST_CASE("linuxcnc: another dialect's program gets % lines, G43 before tracking, M429 around its tool changes") {
   // Its own % lines only: the source's tape marks are never copied, not even as comments.
   const read_result iso_in = read(*parse_dialect("iso"),
-                                  "%\nO12\nT1 M6\nG43.4 H1\nG1 X1 Y2 Z3 B4 C5 F500\nT2 M6\nG43.4 H2\nG1 X2\nG49\nM30\n%\n", "i.nc");
+                                  "%\nO12\nT1 M6\nG43.4 H1\nG1 X1. Y2. Z3. B4. C5. F500\nT2 M6\nG43.4 H2\nG1 X2.\nG49\nM30\n%\n", "i.nc");
   REQUIRE(iso_in.errors.empty());
   const std::string out = write(*parse_dialect("linuxcnc"), iso_in.parsed);
   CHECK(out ==
@@ -109,7 +109,7 @@ TEST_CASE("linuxcnc: another dialect's program gets % lines, G43 before tracking
   // Without G43.4 H2 the source moves tool 2 with H1, tool 1's length: no LinuxCNC G43 under M428
   // says that (its kinematics take the length from G43), so the move is refused.
   const read_result h1_kept =
-      read(*parse_dialect("iso"), "T1 M6\nG43.4 H1\nG1 X1 Y2 Z3 B4 C5 F500\nT2 M6\nG1 X2\n", "k.nc");
+      read(*parse_dialect("iso"), "T1 M6\nG43.4 H1\nG1 X1. Y2. Z3. B4. C5. F500\nT2 M6\nG1 X2.\n", "k.nc");
   REQUIRE(h1_kept.errors.empty());
   CHECK_THROWS_WITH(write(*parse_dialect("linuxcnc"), h1_kept.parsed),
                     Catch::Contains("k.nc:5: block cannot be written in LinuxCNC: a move under tracking while G43 "
