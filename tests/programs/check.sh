@@ -1,0 +1,105 @@
+#!/bin/sh
+# Runs one realistic program of tests/programs as README.md there says a user would, and checks
+# what kin5 does with it today: exit 0 with the lines that carry its constructs, or exit 2 with
+# its first error at the line and column given and nothing written. A program refused today for
+# a construct not yet translated is a row here too, so that no change lets it through unnoticed.
+#
+#   check.sh KIN5_EXE NAME        (NAME: dialect/file, run from tests/programs)
+set -u
+exe=$1 name=$2
+tmp=$(mktemp -d) || exit 2
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+report() { echo "FAIL [$name]: $*" >&2; fail=1; }
+
+# expect CODE WHERE ARGS...: run kin5 ARGS on the program, writing $tmp/out; CODE is the exit
+# code; with CODE 2, WHERE is LINE:COL and the first error's words after it (a grep -F pattern).
+expect() {
+  code=$1 where=$2
+  shift 2
+  "$exe" "$@" -o "$tmp/out" "$name" >"$tmp/stdout" 2>"$tmp/err"
+  got=$?
+  [ "$got" = "$code" ] || { report "exit $got, expected $code: kin5 $*"; cat "$tmp/err" >&2; }
+  if [ "$code" = 2 ]; then
+    first=$(grep -m 1 ': error: ' "$tmp/err")
+    case $first in
+      "$name:$where"*) ;;
+      *) report "first error is not $name:$where: $first" ;;
+    esac
+    [ -e "$tmp/out" ] && report "an output was written"
+  fi
+  return 0
+}
+# has PATTERN...: each (grep -E) is a line of the output.
+has() {
+  for p in "$@"; do grep -Eq -- "$p" "$tmp/out" 2>/dev/null || report "no line matching '$p'"; done
+}
+
+case $name in
+  heidenhain/bracket_5axis.h)
+    expect 2 "12:1: error: preset 1: a work offset of heidenhain" translate --from dmu-80p --to sajo-12000p
+    # Mapped: refused where compensation is switched on, as the paper's setup turns the XY plane.
+    expect 2 "23:1: error: cutter radius compensation: the setup between the machines turns the XY plane" \
+      translate --from dmu-80p --to sajo-12000p --work-offset-map 1=G54 ;;
+  heidenhain/housing_inch.h)
+    expect 2 "4:1: error: preset 4" translate --from dmu-80p --to sajo-12000p
+    expect 0 - translate --from dmu-80p --to sajo-12000p --work-offset-map 4=G57
+    has '^N0 G700$' '^N3 G57' 'TRAORI' ;;
+  heidenhain/drill_cycle_refused.h)
+    expect 2 "7:3: error: CYCL DEF 200 is not supported" translate --from dmu-80p --to sajo-12000p ;;
+  heidenhain/tilted_plane_refused.h)
+    expect 2 "5:3: error: PLANE SPATIAL changes the working frame" translate --from dmu-80p --to sajo-12000p ;;
+  siemens/impeller_traori.mpf)
+    expect 2 "9:5: error: unknown word '_F_CUT'" translate --from sajo-12000p --to dmu-80p --work-offset-map G54=1 ;;
+  siemens/cover_inch_g700.mpf)
+    expect 2 "5:5: error: G55: a work offset of siemens" translate --from sajo-12000p --to dmu-80p
+    expect 0 - translate --from sajo-12000p --to dmu-80p --work-offset-map G55=2
+    has '^0 BEGIN PGM COVER_INCH INCH$' 'Q339=\+2' ;;
+  siemens/basic_system_refused.mpf)
+    expect 2 "11:13: error: F under G70 is in the control's basic unit system" translate --from sajo-12000p --to dmu-80p ;;
+  siemens/mcall_refused.mpf)
+    expect 2 "10:5: error: MCALL CYCLE81: a modal cycle call is not supported" translate --from sajo-12000p --to dmu-80p ;;
+  iso/manifold_g43_4.nc)
+    expect 2 "7:5: error: G54: a work offset of iso" translate --from ac-trunnion --from-dialect iso --to dmu-80p
+    expect 2 "41:1: error: a move in machine coordinates" \
+      translate --from ac-trunnion --from-dialect iso --to dmu-80p --work-offset-map G54=1 ;;
+  iso/blade_inch_g93.nc)
+    expect 2 "5:5: error: G54.1 P3: a work offset of iso" translate --from ac-trunnion --from-dialect iso --to dmu-80p
+    expect 0 - translate --from ac-trunnion --from-dialect iso --to sajo-12000p --to-dialect iso
+    has 'G20$' '^N20 G54\.1 P3$' '^N90 G93$' ;;
+  iso/haas_g234.nc)
+    expect 2 "9:5: error: unknown word 'G234'" translate --from dmu-50v --from-dialect iso --to dmu-80p ;;
+  iso/integers_refused.nc)
+    expect 2 "8:4: error: X10 without a decimal point" \
+      translate --from ac-trunnion --from-dialect iso --to dmu-80p --work-offset-map G54=1 ;;
+  linuxcnc/boss_chamfer.ngc)
+    expect 0 - translate --from xyzac-trt --to dmu-80p --work-offset-map G54=1
+    has 'Q339=\+1' ' TOOL CALL 8 Z$' ' M128' ;;
+  linuxcnc/trunnion_m428.ngc)
+    expect 2 "14:1: error: cutter radius compensation between linuxcnc and siemens" \
+      translate --from xyzac-trt --to sajo-12000p --work-offset-map G54=G54 ;;
+  linuxcnc/g12_1_tcp.ngc)
+    expect 0 - translate --from xyzac-trt --to dmu-80p --work-offset-map G55=2
+    has ' TOOL CALL 3 Z$' ' M128' ;;
+  linuxcnc/constants.ngc)
+    expect 2 "3:1: error: expressions and parameters are not supported" translate --from xyzac-trt --to dmu-80p ;;
+  linuxcnc/oword_refused.ngc)
+    expect 2 "11:1: error: o-word control flow (o100 while) is not supported" translate --from xyzac-trt --to dmu-80p ;;
+  linuxcnc/zero_feed_refused.ngc)
+    expect 2 "12:1: error: inverse-time move without F" translate --from xyzac-trt --to dmu-80p --work-offset-map G54=1 ;;
+  apt/blade_multax.cls)
+    expect 2 "22:1: error: CUTCOM/LEFT: cutter radius compensation is not supported in CL data" post --machine dmu-80p ;;
+  apt/hub_inch_inverse.cls)
+    expect 2 "6:1: error: M7: an M function of apt" post --machine dmu-80p
+    expect 0 - post --machine sajo-12000p
+    has '^G700$' '^G93 F' ;;
+  apt/drill_cycle_refused.cls)
+    expect 2 "9:1: error: CYCLE/DRILL: fixed cycles are not supported" post --machine dmu-80p ;;
+  apt/loadtool_creo.cls)
+    expect 0 - post --machine dmu-80p
+    has ' TOOL CALL 12 Z$' ;;
+  *)
+    report "no row for $name in check.sh: say what kin5 must do with it"
+    ;;
+esac
+exit $fail
