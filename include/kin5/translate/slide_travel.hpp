@@ -17,7 +17,7 @@
 #include "../core/vec.hpp"
 #include "../kinematics/forward.hpp"
 #include "../kinematics/inverse.hpp"
-#include "source_walk.hpp"
+#include "diagnostic_text.hpp"
 
 namespace kin5::translate_detail {
 
