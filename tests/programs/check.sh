@@ -4,35 +4,35 @@
 # its first error at the line and column given and nothing written. A program refused today for
 # a construct not yet translated is a row here too, so that no change lets it through unnoticed.
 #
-#   check.sh KIN5_EXE NAME        (NAME: dialect/file, run from tests/programs)
+#   check.sh KIN5_EXE PROGRAMS_DIR NAME        (NAME: dialect/file under PROGRAMS_DIR)
+#
+# Built on the CLI tests' harness (../cli_program/harness.sh: exe, name, a fresh directory,
+# report, show, run).
 set -u
-exe=$1 name=$2
-tmp=$(mktemp -d) || exit 2
-trap 'rm -rf "$tmp"' EXIT
-fail=0
-report() { echo "FAIL [$name]: $*" >&2; fail=1; }
+# shellcheck source=../cli_program/harness.sh
+. "$(dirname "$0")/../cli_program/harness.sh"
+program=$examples/$name
 
-# expect CODE WHERE ARGS...: run kin5 ARGS on the program, writing $tmp/out; CODE is the exit
-# code; with CODE 2, WHERE is LINE:COL and the first error's words after it (a grep -F pattern).
+# expect CODE WHERE ARGS...: `run` kin5 ARGS on the program, writing written.out; with CODE 2,
+# WHERE is LINE:COL and the first error's words after it, and nothing may be written.
 expect() {
   code=$1 where=$2
   shift 2
-  "$exe" "$@" -o "$tmp/out" "$name" >"$tmp/stdout" 2>"$tmp/err"
-  got=$?
-  [ "$got" = "$code" ] || { report "exit $got, expected $code: kin5 $*"; cat "$tmp/err" >&2; }
+  rm -f written.out
+  run "$code" "$@" -o written.out "$program"
   if [ "$code" = 2 ]; then
-    first=$(grep -m 1 ': error: ' "$tmp/err")
+    first=$(grep -m 1 ': error: ' err)
     case $first in
-      "$name:$where"*) ;;
+      "$program:$where"*) ;;
       *) report "first error is not $name:$where: $first" ;;
     esac
-    [ -e "$tmp/out" ] && report "an output was written"
+    [ -e written.out ] && report "an output was written"
   fi
   return 0
 }
 # has PATTERN...: each (grep -E) is a line of the output.
 has() {
-  for p in "$@"; do grep -Eq -- "$p" "$tmp/out" 2>/dev/null || report "no line matching '$p'"; done
+  for p in "$@"; do grep -Eq -- "$p" written.out 2>/dev/null || report "no line matching '$p'"; done
 }
 
 case $name in
@@ -102,4 +102,4 @@ case $name in
     report "no row for $name in check.sh: say what kin5 must do with it"
     ;;
 esac
-exit $fail
+exit "$fail"
