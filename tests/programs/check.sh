@@ -50,7 +50,12 @@ case $name in
   heidenhain/tilted_plane_refused.h)
     expect 2 "5:3: error: PLANE SPATIAL changes the working frame" translate --from dmu-80p --to sajo-12000p ;;
   siemens/impeller_traori.mpf)
-    expect 2 "9:5: error: unknown word '_F_CUT'" translate --from sajo-12000p --to dmu-80p --work-offset-map G54=1 ;;
+    expect 2 "13:1: error: T=\"BALL_D8_L90\": a tool named in T= of siemens is not translated into heidenhain" \
+      translate --from sajo-12000p --to dmu-80p --work-offset-map G54=1
+    # Between the same machine and dialect the constants are substituted.
+    expect 0 - translate --from sajo-12000p --to sajo-12000p
+    has '^N110 G0 X-25.5 Y14.2 Z120 A-20 B35$' '^N130 G1 .* Z2.0245 .* F400$' '^N140 G1 .* F1850.5$' \
+      '^N180 G0 .* Z120 ' '^N280 G41 G1 X-50 Y-40 ' ;;
   siemens/cover_inch_g700.mpf)
     expect 2 "5:5: error: G55: a work offset of siemens" translate --from sajo-12000p --to dmu-80p
     expect 0 - translate --from sajo-12000p --to dmu-80p --work-offset-map G55=2
@@ -82,7 +87,10 @@ case $name in
     expect 0 - translate --from xyzac-trt --to dmu-80p --work-offset-map G55=2
     has ' TOOL CALL 3 Z$' ' M128' ;;
   linuxcnc/constants.ngc)
-    expect 2 "3:1: error: expressions and parameters are not supported" translate --from xyzac-trt --to dmu-80p ;;
+    expect 2 "7:1: error: G54: a work offset of linuxcnc" translate --from xyzac-trt --to dmu-80p
+    expect 0 - translate --from xyzac-trt --to dmu-80p --work-offset-map G54=1
+    has '^12 L X\+0 Y\+0 Z\+45 B\+0 C-105.004 FMAX$' '^13 L .* Z\+2 .* F300$' '^14 L X\+12 Y\+6 Z\+2 .* F1250$' \
+      '^15 L X\+12 Y\+6 Z\+45 ' ;;
   linuxcnc/oword_refused.ngc)
     expect 2 "11:1: error: o-word control flow (o100 while) is not supported" translate --from xyzac-trt --to dmu-80p ;;
   linuxcnc/zero_feed_refused.ngc)

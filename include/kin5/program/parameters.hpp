@@ -1,6 +1,8 @@
 /// @file program/parameters.hpp
 /// Parameters used as constants, one table for every reader that reads them (Heidenhain
-/// `Q1 = 5000`, Siemens `R1=5000`, ISO and LinuxCNC `#1=5000`): an assignment of a number
+/// `Q1 = 5000`, Siemens `R1=5000` and `_F_CUT=5000`, ISO and LinuxCNC `#1=5000`, LinuxCNC
+/// `#<feed> = 5000`): numbered parameters by number, named ones by the name the dialect
+/// reads them as (`#<feed>`, `_F_CUT`). An assignment of a number
 /// records the number as written; a later word whose value is the parameter (`FQ1`, `X=R1`,
 /// `X#1`) reads as that number. The use is refused, with the reason, when the parameter was
 /// never assigned in the file (its value is the machine's), was assigned anything but a number
@@ -18,9 +20,11 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -58,6 +62,7 @@ struct parameter_table {
   std::string prefix;  ///< how a parameter is named: "Q" (Q1), "R" (R1), "#" (#1)
   std::vector<reserved_parameters> reserved;
   std::map<long, assignment> assigned;
+  std::map<std::string, assignment, std::less<>> named;  ///< by name as the dialect reads it
   std::string control_flow;  ///< the first control-flow statement of the file ("CALL LBL"), if any
   std::size_t control_flow_line = 0;
 
@@ -75,27 +80,53 @@ struct parameter_table {
   /// Records at `line` that an assignment to parameter `n` was refused (an error names it).
   void refuse(long n, std::size_t line) { assigned[n] = {std::nullopt, line, true}; }
 
+  /// The named parameter `name` (as the dialect reads it: `#<feed>`, `_F_CUT`): as `assign`.
+  void assign(const std::string& name, std::optional<parameter_literal> literal, std::size_t line) {
+    named[name] = {std::move(literal), line};
+  }
+
+  /// The named parameter `name`: as `refuse`.
+  void refuse(const std::string& name, std::size_t line) { named[name] = {std::nullopt, line, true}; }
+
   /// The number parameter `n` holds for a word that uses it, or null with the reason in `why`
   /// (empty when the assignment was refused).
   const parameter_literal* value(long n, std::string& why) const {
     const std::string p = "parameter " + name(n);
     why.clear();
-    if (control_flow_line != 0) {
-      why = p + " in a program with control flow (" + control_flow + " at line " +
-            std::to_string(control_flow_line) + "): its value depends on the path";
-      return nullptr;
-    }
+    if (depends_on_path(p, why)) return nullptr;
     for (const reserved_parameters& r : reserved)
       if (n >= r.first && n <= r.last) {
         why = p + " is " + r.why;
         return nullptr;
       }
     const auto it = assigned.find(n);
-    if (it == assigned.end()) why = p + " is not assigned earlier in this file: its value is the machine's";
-    else if (it->second.refused) return nullptr;
-    else if (!it->second.literal)
-      why = p + " is computed at line " + std::to_string(it->second.line) + "; only a parameter assigned a number is read";
-    else return &*it->second.literal;
+    return held(it == assigned.end() ? nullptr : &it->second, p, why);
+  }
+
+  /// The number the named parameter `name` holds: as `value(n, why)`, calling it `noun`.
+  const parameter_literal* value(std::string_view name, std::string& why, std::string_view noun = "parameter") const {
+    const std::string p = std::string(noun) + " " + std::string(name);
+    why.clear();
+    if (depends_on_path(p, why)) return nullptr;
+    const auto it = named.find(name);
+    return held(it == named.end() ? nullptr : &it->second, p, why);
+  }
+
+ private:
+  bool depends_on_path(const std::string& p, std::string& why) const {
+    if (control_flow_line == 0) return false;
+    why = p + " in a program with control flow (" + control_flow + " at line " + std::to_string(control_flow_line) +
+          "): its value depends on the path";
+    return true;
+  }
+
+  /// What assignment `a` (null: none) leaves parameter `p` holding.
+  static const parameter_literal* held(const assignment* a, const std::string& p, std::string& why) {
+    if (!a) why = p + " is not assigned earlier in this file: its value is the machine's";
+    else if (a->refused) return nullptr;
+    else if (!a->literal)
+      why = p + " is computed at line " + std::to_string(a->line) + "; only a parameter assigned a number is read";
+    else return &*a->literal;
     return nullptr;
   }
 };

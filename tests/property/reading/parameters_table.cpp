@@ -1,12 +1,18 @@
-// Parameters assigned a number and used as word values, one row per spelling and dialect: the
-// text with the parameter reads as the same blocks, and writes as the same text, as the text
-// with the number written in its place. (Heidenhain's Q parameters: heidenhain_table.cpp; the
-// refusals, with their messages: each dialect's errors.txt and tests/bad.)
+// Parameters and variables assigned a number and used as word values, one row per spelling and
+// dialect, then the same over drawn names and numbers: the text with the parameter reads as the
+// same blocks, and writes as the same text, as the text with the number written in its place.
+// (Heidenhain's Q parameters: heidenhain_table.cpp; the refusals, with their messages: each
+// dialect's errors.txt and tests/bad.)
+#include <cctype>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
+#include <rapidcheck.h>
+
+#include <kin5/program/lexing.hpp>
+#include <kin5/program/number.hpp>
 
 #include <kin5/program/iso/dialect.hpp>
 #include <kin5/program/linuxcnc/dialect.hpp>
@@ -57,6 +63,10 @@ TEST_CASE("linuxcnc: a numbered parameter assigned a number reads as the number 
       {"#31 = 800 (FEED)\nG1 X10 F#31\n", "#31 = 800 (FEED)\nG1 X10 F800\n"},
       {"#1=2.5\nG0 X#1 Y-#1 Z25\n", "#1=2.5\nG0 X2.5 Y-2.5 Z25\n"},
       {"#5000=45\nG1 X#5000 F100\n", "#5000=45\nG1 X45 F100\n"},
+      {"#<feed> = 800\nG1 X10 F#<feed>\n", "#<feed> = 800\nG1 X10 F800\n"},
+      {"#<Z Safe>=2.5\nG0 X#<zsafe> Y-#<ZSAFE> Z25\n", "#<Z Safe>=2.5\nG0 X2.5 Y-2.5 Z25\n"},
+      {"#<_clear> = 45\n#<_CLEAR> = 50\nG1 Z#<_clear> F100\n", "#<_clear> = 45\n#<_CLEAR> = 50\nG1 Z50 F100\n"},
+      {"#1 = 5\n#<1> = 6\nG1 X#1 Y#<1>\n", "#1 = 5\n#<1> = 6\nG1 X5 Y6\n"},  // a name is not a number
   };
   same_reading(
       rows, [](const std::string& t) { return linuxcnc::read(t, "t.ngc"); },
@@ -71,8 +81,76 @@ TEST_CASE("siemens: an R parameter assigned a number reads as the number in the 
       {"R4=12000\nS=R4 M3\n", "R4=12000\nS12000 M3\n"},
       {"R5=5\nG0 X0 Y0 Z0\nG2 X10 Y0 CR=R5 F100\n", "R5=5\nG0 X0 Y0 Z0\nG2 X10 Y0 CR=5 F100\n"},
       {"R1=5\nG1 X=R1\nR1=6\nG1 X=R1\n", "R1=5\nG1 X5\nR1=6\nG1 X6\n"},
+      {"N10 DEF REAL _F_CUT=1850.5, _Z\nN20 G1 Z=_Z F=_F_CUT\n", "N10 DEF REAL _F_CUT=1850.5, _Z\nN20 G1 Z0 F1850.5\n"},
+      {"DEF INT _N=3\nDEF REAL Depth=-2.5\nG1 X=DEPTH Y=-depth A=_n\n",
+       "DEF INT _N=3\nDEF REAL Depth=-2.5\nG1 X-2.5 Y2.5 A3\n"},
+      {"N20 _X_HOME=-365. _Y_HOME=224. R1=3 ; homes\nG1 X=_X_HOME Y=_y_home Z=R1 F=_Y_HOME\n",
+       "N20 _X_HOME=-365. _Y_HOME=224. R1=3 ; homes\nG1 X-365. Y224. Z3 F224.\n"},
   };
   same_reading(
       rows, [](const std::string& t) { return siemens::read(t, "t.mpf"); },
       [](const program& p) { return siemens::write(p); });
+}
+
+namespace {
+/// A drawn name: a letter then letters, digits and underscores (3 to 12 characters).
+std::string draw_name() {
+  const std::string first = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ";
+  const std::string rest = first + "0123456789_";
+  std::string name(1, first[*rc::gen::inRange<std::size_t>(0, first.size())]);
+  const int n = *rc::gen::inRange(2, 12);
+  for (int k = 0; k < n; ++k) name += rest[*rc::gen::inRange<std::size_t>(0, rest.size())];
+  return name;
+}
+
+/// A drawn number on the 0.0001 grid, written with its decimals ("-12.5", "3").
+std::string draw_number() {
+  const long long units = *rc::gen::inRange(-9999999LL, 10000000LL);
+  return format_number(static_cast<double>(units) / 1e4, 4);
+}
+
+/// The text `with` and `without` read the same and write the same (`same_reading`'s check).
+void reads_alike(const std::string& with, const std::string& without,
+                 const std::function<read_result(const std::string&)>& read,
+                 const std::function<std::string(const program&)>& write) {
+  const read_result a = read(with), b = read(without);
+  RC_ASSERT(a.errors.empty());
+  RC_ASSERT(b.errors.empty());
+  std::vector<block> x = a.parsed.blocks, y = b.parsed.blocks;
+  RC_ASSERT(x.size() == y.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    x[i].text = y[i].text = "";
+    RC_ASSERT(x[i] == y[i]);
+  }
+  RC_ASSERT(write(a.parsed) == write(b.parsed));
+}
+}  // namespace
+
+TEST_CASE("linuxcnc: a drawn named parameter, in any case and with blanks, reads as its number") {
+  REQUIRE(rc::check([] {
+    const std::string name = draw_name(), value = draw_number();
+    // The use spells the name in another case, with a blank inserted: LinuxCNC reads one name.
+    std::string use;
+    for (char c : name) use += static_cast<char>(std::isupper(static_cast<unsigned char>(c)) ? std::tolower(c) : std::toupper(c));
+    use.insert(*rc::gen::inRange<std::size_t>(0, use.size() + 1), " ");
+    const std::string set = "#<" + name + "> = " + value + "\n";
+    const std::string minus = value[0] == '-' ? value.substr(1) : "-" + value;
+    reads_alike(set + "G1 X#<" + use + "> Y-#<" + use + "> F100\n", set + "G1 X" + value + " Y" + minus + " F100\n",
+                [](const std::string& t) { return linuxcnc::read(t, "t.ngc"); },
+                [](const program& p) { return linuxcnc::write(p); });
+  }));
+}
+
+TEST_CASE("siemens: a drawn user variable, assigned or declared, reads as its number") {
+  REQUIRE(rc::check([] {
+    const std::string name = "_" + draw_name(), value = draw_number();
+    const bool declared = *rc::gen::arbitrary<bool>();
+    const std::string set = declared ? "DEF REAL " + name + "=" + value + "\n" : "N10 " + name + "=" + value + "\n";
+    const std::string minus = value[0] == '-' ? value.substr(1) : "-" + value;
+    std::string use = lexing::upper(name);
+    if (*rc::gen::arbitrary<bool>()) use = name;
+    reads_alike(set + "G1 X=" + use + " Y=-" + use + " F100\n", set + "G1 X" + value + " Y" + minus + " F100\n",
+                [](const std::string& t) { return siemens::read(t, "t.mpf"); },
+                [](const program& p) { return siemens::write(p); });
+  }));
 }

@@ -2,9 +2,10 @@
 /// The first stage of the ISO / Fanuc reader: one line split into address words (`X-450.`,
 /// `G43.4`, `x 10`: a letter, optional blanks, a number, or a parameter `X#1`, `X-#1` whose value
 /// the reader supplies) and comments (`( … )` and `;` to the end of the line); a parameter
-/// assignment `#1 = 5000` (`lex_assignment`). The first problem stops the line: an expression
-/// (`[`, `#1+2`, `##1`), a number without a letter, a malformed number, a stray byte. What a word
-/// means is the reader's.
+/// assignment `#1 = 5000` (`lex_assignment`). Where the dialect has named parameters (LinuxCNC:
+/// `named` true), `#<feed>` stands where `#1` may. The first problem stops the line: an
+/// expression (`[`, `#1+2`, `##1`), a number without a letter, a malformed number, a stray byte.
+/// What a word means is the reader's.
 #pragma once
 
 #include <cstddef>
@@ -28,6 +29,7 @@ struct word {
   std::string_view digits;   ///< the number as written
   std::size_t column = 0;    ///< 1-based
   std::optional<long> parameter;   ///< `X#1`: the parameter standing for the number (the reader's to resolve)
+  std::string_view parameter_name; ///< `X#<feed>`: the named one, as written between `<` and `>`
   bool parameter_negated = false;  ///< `X-#1`
   bool substituted = false;        ///< the number is a parameter's value (`X#1`), not written here
 };
@@ -35,6 +37,7 @@ struct word {
 /// A line that assigns a parameter, `#1 = 5000` (after an optional block number).
 struct parameter_assignment {
   long number = 0;
+  std::string name;                          ///< a named parameter's name as read (`#<feed>`); empty for `#n`
   std::size_t column = 0;                    ///< of the `#`, 1-based
   std::optional<parameter_literal> literal;  ///< the number assigned; none when a problem stops the line
 };
@@ -68,29 +71,50 @@ inline std::size_t parameter_number(std::string_view s, std::size_t k, std::size
   return e > k + 1 ? e : 0;
 }
 
+/// The named parameter `#<name>` at `k` (`name` as written between `<` and `>`, holding
+/// something besides blanks) and the position after it; 0 if none.
+inline std::size_t parameter_name(std::string_view s, std::size_t k, std::size_t end, std::string_view& name) {
+  if (k + 1 >= end || s[k] != '#' || s[k + 1] != '<') return 0;
+  const std::size_t close = s.find('>', k + 2);
+  if (close == std::string_view::npos || close >= end) return 0;
+  name = s.substr(k + 2, close - k - 2);
+  return lexing::trim(name).empty() ? 0 : close + 1;
+}
+
+/// `#n` or, where `named`, `#<name>` at `k` into `n` or `name`; the position after it, 0 if none.
+inline std::size_t parameter_at(std::string_view s, std::size_t k, std::size_t end, bool named, long& n,
+                                std::string_view& name) {
+  if (named)
+    if (const std::size_t e = parameter_name(s, k, end, name)) return e;
+  return parameter_number(s, k, end, n);
+}
+
 /// `X#1`, `X-#1`: a parameter standing for the word's number, from `k`; its end, or 0 if the
 /// value is not a lone parameter (an expression).
-inline std::size_t parameter_value(std::string_view s, std::size_t i, std::size_t k, std::size_t end, word& w) {
+inline std::size_t parameter_value(std::string_view s, std::size_t i, std::size_t k, std::size_t end, bool named,
+                                   word& w) {
   const bool negated = k < end && s[k] == '-';
   const std::size_t p = k < end && (s[k] == '-' || s[k] == '+') ? k + 1 : k;
   long n = 0;
-  const std::size_t e = parameter_number(s, p, end, n);
+  std::string_view name;
+  const std::size_t e = parameter_at(s, p, end, named, n, name);
   if (e == 0 || !word_ends(s, e, end)) return 0;
-  w.parameter = n;
+  if (name.empty()) w.parameter = n;
+  w.parameter_name = name;
   w.parameter_negated = negated;
   w.text = s.substr(i, e - i);
   return e;
 }
 
 /// An address word at `i` (a letter); its end, or the problem that stops the line.
-inline std::size_t address_word(std::string_view s, std::size_t i, std::size_t end, word& w,
+inline std::size_t address_word(std::string_view s, std::size_t i, std::size_t end, bool named, word& w,
                                 std::optional<lex_problem>& problem) {
   w.letter = to_upper(s[i]);
   w.column = i + 1;
   const std::size_t k = lexing::skip_blanks(s.substr(0, end), i + 1);
   const bool signed_parameter = k + 1 < end && (s[k] == '-' || s[k] == '+') && s[k + 1] == '#';
   if (k < end && (s[k] == '#' || s[k] == '[' || signed_parameter)) {
-    if (const std::size_t e = parameter_value(s, i, k, end, w)) return e;
+    if (const std::size_t e = parameter_value(s, i, k, end, named, w)) return e;
     const bool axis = std::string_view("XYZABCIJKR").find(w.letter) != std::string_view::npos;
     problem = {w.column, axis ? "expressions and parameters in axis words are not supported"
                               : "expressions and parameters are not supported"};
@@ -125,9 +149,20 @@ inline lex_problem stray(std::string_view s, std::size_t i, bool first_word) {
 
 }  // namespace detail
 
+/// A named parameter's name as LinuxCNC reads it: lower case, blanks and tabs removed, between
+/// `#<` and `>` (`#<Feed Cut>` is `#<feedcut>`: LinuxCNC User Manual, "G-code Overview", "Named
+/// Parameters").
+inline std::string named_parameter(std::string_view written) {
+  std::string name = "#<";
+  for (char c : written)
+    if (!is_space(c)) name += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  return name + ">";
+}
+
 /// Splits `s` from `i` to `end` into `words`, comments into `comment`; the first problem stops it.
+/// `named`: the dialect has named parameters (`#<feed>`).
 inline std::optional<lex_problem> lex_line(std::string_view s, std::size_t i, std::size_t end, std::vector<word>& words,
-                                           std::optional<std::string>& comment) {
+                                           std::optional<std::string>& comment, bool named = false) {
   std::optional<lex_problem> problem;
   while (i < end && !problem) {
     const char c = s[i];
@@ -143,7 +178,7 @@ inline std::optional<lex_problem> lex_line(std::string_view s, std::size_t i, st
       i = end;
     } else if (is_letter(c)) {
       word w;
-      i = detail::address_word(s, i, end, w, problem);
+      i = detail::address_word(s, i, end, named, w, problem);
       if (problem) break;
       words.push_back(w);
       if (w.letter == 'O' && words.size() == 1) {  // LinuxCNC `o100 sub`: control flow
@@ -158,12 +193,12 @@ inline std::optional<lex_problem> lex_line(std::string_view s, std::size_t i, st
   return problem;
 }
 
-/// The parameter assignment the line from `i` to `end` is (`#1 = 5000`, `N10 #1=-2.5 (Z SAFE)`),
-/// or nothing when it starts otherwise. Only a number may be assigned, and nothing but a comment
-/// may follow it: an expression (`#2 = #1*2`, `#1 = [5]`) or another word is the problem that
-/// stops the line.
+/// The parameter assignment the line from `i` to `end` is (`#1 = 5000`, `N10 #1=-2.5 (Z SAFE)`,
+/// where `named` `#<feed> = 1250` too), or nothing when it starts otherwise. Only a number may be
+/// assigned, and nothing but a comment may follow it: an expression (`#2 = #1*2`, `#1 = [5]`) or
+/// another word is the problem that stops the line.
 inline std::optional<parameter_assignment> lex_assignment(std::string_view s, std::size_t i, std::size_t end,
-                                                          std::optional<lex_problem>& problem) {
+                                                          std::optional<lex_problem>& problem, bool named = false) {
   i = lexing::skip_blanks(s.substr(0, end), i);
   if (i < end && to_upper(s[i]) == 'N') {  // the block number
     std::size_t k = i + 1;
@@ -171,12 +206,14 @@ inline std::optional<parameter_assignment> lex_assignment(std::string_view s, st
     if (k > i + 1) i = lexing::skip_blanks(s.substr(0, end), k);
   }
   parameter_assignment a;
-  std::size_t k = detail::parameter_number(s, i, end, a.number);
+  std::string_view named_as;
+  std::size_t k = detail::parameter_at(s, i, end, named, a.number, named_as);
   if (k == 0) return std::nullopt;
   k = lexing::skip_blanks(s.substr(0, end), k);
   if (k >= end || s[k] != '=') return std::nullopt;
   a.column = i + 1;
-  const std::string name = "#" + std::to_string(a.number);
+  if (!named_as.empty()) a.name = named_parameter(named_as);
+  const std::string name = a.name.empty() ? "#" + std::to_string(a.number) : a.name;
   const std::size_t v = lexing::skip_blanks(s.substr(0, end), k + 1);
   const parsed_number n = read_number(s.substr(v, end - v));
   const std::size_t after = v + n.length;
@@ -191,7 +228,7 @@ inline std::optional<parameter_assignment> lex_assignment(std::string_view s, st
   }
   std::optional<std::string> comment;
   std::vector<word> others;
-  if (auto p = lex_line(s, after, end, others, comment)) problem = p;
+  if (auto p = lex_line(s, after, end, others, comment, named)) problem = p;
   else if (!others.empty()) problem = lex_problem{others.front().column, "a word after the parameter assignment "
                                                                            "on one line is not supported"};
   if (!problem) a.literal = parameter_literal{n.value, std::string(s.substr(v, n.length))};

@@ -95,14 +95,14 @@ class basic_reader {
     substituted_.clear();
     auto problem = own_.line(s, first, end);
     if (!problem) {
-      if (const auto a = lex_assignment(s, first, end, problem)) {
+      if (const auto a = lex_assignment(s, first, end, problem, Own::named_parameters)) {
         if (!problem) assign(*a, b);
-        if (problem) error(problem->column, problem->message), parameters_.refuse(a->number, line_);
+        if (problem) error(problem->column, problem->message), refuse(*a);
         on_block_(std::move(b));
         return;
       }
     }
-    if (!problem) problem = lex_line(s, first, end, words_, b.comment);
+    if (!problem) problem = lex_line(s, first, end, words_, b.comment, Own::named_parameters);
     if (!problem) problem = substitute();
     if (problem && problem->message.empty()) failed_ = true;  // a parameter whose assignment was refused
     else if (problem) error(problem->column, problem->message);
@@ -113,14 +113,21 @@ class basic_reader {
     on_block_(std::move(b));
   }
 
-  /// `#n = number`: recorded, and the line passed through (it moves nothing).
+  /// `#n = number`, `#<name> = number`: recorded, and the line passed through (it moves nothing).
   void assign(const parameter_assignment& a, block& b) {
-    if (const std::string why = own_.unassignable(a.number); !why.empty()) {
-      parameters_.refuse(a.number, line_);
+    const std::string why = a.name.empty() ? own_.unassignable(a.number) : own_.unassignable(a.name);
+    if (!why.empty()) {
+      refuse(a);
       return error(a.column, why);
     }
-    parameters_.assign(a.number, a.literal, line_);
+    if (a.name.empty()) parameters_.assign(a.number, a.literal, line_);
+    else parameters_.assign(a.name, a.literal, line_);
     b.passthrough = b.assignment = true;
+  }
+
+  void refuse(const parameter_assignment& a) {
+    if (a.name.empty()) parameters_.refuse(a.number, line_);
+    else parameters_.refuse(a.name, line_);
   }
 
   /// Each word that uses a parameter takes its number, as if written there; the first parameter
@@ -128,9 +135,10 @@ class basic_reader {
   /// refused: that error stands for both).
   std::optional<lex_problem> substitute() {
     for (word& w : words_) {
-      if (!w.parameter) continue;
+      if (!w.parameter && w.parameter_name.empty()) continue;
       std::string why;
-      const parameter_literal* v = parameters_.value(*w.parameter, why);
+      const parameter_literal* v = w.parameter ? parameters_.value(*w.parameter, why)
+                                               : parameters_.value(named_parameter(w.parameter_name), why);
       if (!v) return lex_problem{w.column, why};
       parameter_literal n = w.parameter_negated ? v->negated() : *v;
       if (Own::whole_address(w.letter) && std::floor(n.value) != n.value) {  // the control rounds it
@@ -143,6 +151,7 @@ class basic_reader {
       w.digits = w.text.substr(1);
       w.substituted = true;
       w.parameter.reset();
+      w.parameter_name = {};
     }
     return std::nullopt;
   }

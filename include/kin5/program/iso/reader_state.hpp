@@ -66,7 +66,10 @@ struct reader_state {
 /// no words; its program may set the local and common variables #1–#33, #100–#199 and
 /// #500–#999 (FANUC Custom Macro B; #1000 and up are the control's system variables).
 struct no_own_words {
+  /// Whether `#<name>` names a parameter (LinuxCNC); in ISO it is an expression, refused.
+  static constexpr bool named_parameters = false;
   std::optional<lex_problem> line(std::string_view, std::size_t, std::size_t) { return std::nullopt; }
+  static std::string unassignable(const std::string&) { return ""; }
   static std::string unassignable(long n) {
     if ((n >= 1 && n <= 33) || (n >= 100 && n <= 199) || (n >= 500 && n <= 999)) return "";
     return "setting parameter #" + std::to_string(n) + " is not supported: only #1-#33, #100-#199 and #500-#999 "

@@ -11,8 +11,9 @@
 /// | `G41`/`G42` (the loaded tool's radius), `G41 D n`/`G42 D n` (tool n's), `G40` | `state.radius_compensation`, `radius_register` |
 /// | `G54` … `G59`, `G59.1` … `G59.3` | `state.work_offset` 1 … 9 |
 /// | `G64 P… Q…`, `G91.1` | kept words (path blending tolerance, incremental arc centres: the default) |
-/// A numbered parameter assigned a number (`#1 = 5000`) stands for it, as in ISO (iso/reader.hpp);
-/// named parameters (`#<feed>`) and expressions are refused.
+/// A parameter assigned a number stands for it, as in ISO (iso/reader.hpp): numbered (`#1 = 5000`)
+/// or named (`#<feed> = 5000`, `F#<feed>`; the name read in lower case without blanks). Setting a
+/// read-only predefined one (`#<_x>`) and expressions are refused.
 /// Refused at the word: `M430`, `G12.1` with another type, a kinematics switch on a line with
 /// motion or M6, `G43.1`/`G43.2`, ISO codes LinuxCNC does not have (`G43.4`, `G43.5`, `G54.1`,
 /// `G50`), splines `G5`–`G5.3`, `G90.1`, `M61`, `H` without G43, `D` without G41/G42, `G41.1`/`G42.1`, `G4`
@@ -74,6 +75,29 @@ class own_words {
     if (n >= 1 && n <= 5000) return "";
     return "setting parameter #" + std::to_string(n) + " is not supported: only #1-#5000 hold the program's own "
            "values (the others are the control's: probe results, homes, offsets)";
+  }
+
+  /// Named parameters `#<feed>` are read (User Manual, "G-code Overview", "Named Parameters").
+  static constexpr bool named_parameters = true;
+
+  /// Why the program may not set named parameter `name` (`#<_x>`): the predefined ones, and
+  /// `#<_ini[…]…>` and `#<_hal[…]>`, are read-only (User Manual, "Predefined Named Parameters",
+  /// "HAL pins and INI values").
+  static std::string unassignable(const std::string& name) {
+    static constexpr std::string_view predefined[] = {
+        "_vmajor", "_vminor", "_line", "_motion_mode", "_plane", "_ccomp", "_metric", "_imperial", "_absolute",
+        "_incremental", "_inverse_time", "_units_per_minute", "_units_per_rev", "_coord_system", "_tool_offset",
+        "_retract_r_plane", "_retract_old_z", "_spindle_rpm_mode", "_spindle_css_mode", "_ijk_absolute_mode",
+        "_lathe_diameter_mode", "_lathe_radius_mode", "_spindle_on", "_spindle_cw", "_mist", "_flood",
+        "_speed_override", "_feed_override", "_adaptive_feed", "_feed_hold", "_feed", "_rpm", "_x", "_y", "_z",
+        "_a", "_b", "_c", "_u", "_v", "_w", "_abs_x", "_abs_y", "_abs_z", "_abs_a", "_abs_b", "_abs_c", "_abs_u",
+        "_abs_v", "_abs_w", "_current_tool", "_current_pocket", "_selected_tool", "_selected_pocket", "_value",
+        "_value_returned", "_task", "_call_level", "_remap_level"};
+    const std::string_view inner = std::string_view(name).substr(2, name.size() - 3);
+    bool read_only = inner.find('[') != std::string_view::npos;
+    for (std::string_view p : predefined) read_only = read_only || inner == p;
+    if (!read_only) return "";
+    return "setting parameter " + name + " is not supported: LinuxCNC sets it (a read-only predefined parameter)";
   }
 
   /// No letter is ISO's whole address here: LinuxCNC rounds no parameter. A fraction in T, H, D

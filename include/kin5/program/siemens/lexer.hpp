@@ -26,7 +26,7 @@ enum class word_kind : unsigned char {
   comment,       ///< `; …` to the end of the line, or `( … )` (`closed` false when `)` is missing)
   address,       ///< one letter and its value: `X-34.983`, `X = 10`, `A3=0.5` (extension `3`), `T="name"`
   keyword,       ///< a name: `TRAORI`, `CR=5` (`assigned`), `MSG("…")` (a call)
-  system,        ///< a system variable or name: `$P_UIFR`, `_NAME` (`assigned` when `=` or `[` follows)
+  system,        ///< a system variable or name: `$P_UIFR`, `_NAME` (`assigned` when `=` or `[` follows; `_NAME=` takes a value)
   stray_number,  ///< a number with no address letter
   bad_byte,      ///< a byte not allowed outside comments and strings
   block_skip,    ///< `/` at the start of the block
@@ -164,6 +164,8 @@ class line_lexer {
     add(word_kind::stray_number, start).text = s_.substr(start, n);
   }
 
+  /// `$P_UIFR[1]=…`, `_NAME`: a user variable `_NAME=…` takes its value as an address does
+  /// (`assigned_value`); the rest is skipped to the run's end.
   void system_word() {
     word& w = add(word_kind::system, i_);
     const std::size_t start = i_++;
@@ -171,6 +173,10 @@ class line_lexer {
     w.name = lexing::upper(s_.substr(start, i_ - start));
     const std::size_t k = lexing::skip_blanks(s_, i_);
     w.assigned = peek(k) == '=' || peek(k) == '[';
+    if (s_[start] == '_' && peek(k) == '=') {
+      i_ = k + 1;
+      return assigned_value(w);
+    }
     consume_run();
   }
 

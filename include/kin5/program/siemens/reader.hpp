@@ -51,7 +51,7 @@ inline void frame_words(line_parse& p) {
 /// (`changes_nothing`), or a lone MSG. A line not understood that may change something is refused.
 inline bool is_passthrough(const line_parse& p) {
   const bool only_msg = p.has_msg && !p.has_content && !p.has_geometry && p.unknown.empty() && !p.b.moves();
-  return (!p.unknown.empty() && !p.has_geometry && changes_nothing(p.b.text)) || only_msg;
+  return (!p.unknown.empty() && !p.has_geometry && (p.only_assignments || changes_nothing(p.b.text))) || only_msg;
 }
 
 /// The tool-axis vector from A3= B3= C3=.
@@ -355,7 +355,7 @@ class line_reader {
   modal_state state_;
   line_lexer lexer_;
   std::vector<word> words_;  // reused from line to line
-  r_parameters parameters_;
+  constants parameters_;
 };
 
 }  // namespace kin5::program::siemens::detail

@@ -50,6 +50,7 @@ struct line_parse {
   std::string motion_word, feed_word, tcp_word;     ///< as written, for "conflicting words"
   std::optional<std::pair<std::string, std::size_t>> radius_word;  ///< G40, G41 or G42 (column)
   std::optional<long long> edge;                    ///< D n: the cutting edge selected
+  bool only_assignments = false;  ///< the line assigns numbers (`_X=1 _Y=2`) and does nothing else
 };
 
 inline const std::string expression_in_axis = "expressions and parameters in axis words are not supported";
