@@ -222,42 +222,95 @@ constexpr std::size_t parameter_at(std::string_view line, std::size_t i, std::pa
 
 }  // namespace detail
 
+namespace detail {
+
+constexpr bool name_char(char c) { return is_letter(c) || is_digit(c) || c == '_'; }
+
+/// The named parameter or variable at `i` in `line`, as its reader names it: `#<Feed Rate>` is
+/// `#<feedrate>` (LinuxCNC: lower case, blanks removed), `_F_CUT` or `Depth` is `_F_CUT` or
+/// `DEPTH` (Siemens: upper case; a name of two characters or more); into `name`, with the
+/// position after it; 0 if there is none.
+inline std::size_t named_at(std::string_view line, std::size_t i, std::string& name) {
+  name.clear();
+  if (i + 1 < line.size() && line[i] == '#' && line[i + 1] == '<') {
+    const std::size_t close = line.find('>', i + 2);
+    if (close == std::string_view::npos) return 0;
+    name = "#<";
+    for (std::size_t k = i + 2; k < close; ++k)
+      if (!is_space(line[k])) name += static_cast<char>(line[k] >= 'A' && line[k] <= 'Z' ? line[k] - 'A' + 'a' : line[k]);
+    name += '>';
+    return close + 1;
+  }
+  if (i >= line.size() || !(is_letter(line[i]) || line[i] == '_')) return 0;
+  std::size_t j = i;
+  while (j < line.size() && name_char(line[j])) name += to_upper(line[j++]);
+  return name.size() >= 2 ? j : 0;
+}
+
+/// Where the text of a line `s` stops being read for parameters: its first `;` or `(`.
+constexpr std::size_t code_end(std::string_view s) {
+  std::size_t k = 0;
+  while (k < s.size() && s[k] != ';' && s[k] != '(') ++k;
+  return k;
+}
+
+}  // namespace detail
+
 /// Adds to `r` the decimals of the parameters that words use: an assignment of a number,
-/// `#1 = 10.1234`, `R1=10.1234` or `Q1 = +10.1234`, records 4 decimals for that parameter, and
-/// a later word that uses it, `X#1`, `X-#1`, `X=R1`, `F=-R1`, `X+Q1`, `FQ1` or `F Q1`, counts them for
-/// its letter as the literal `X10.1234` would: a number written only in a parameter keeps its
-/// decimals in the output. An assignment of anything else forgets the parameter. Which of
-/// these spellings a dialect has is its reader's to say (a word it does not read is refused
+/// `#1 = 10.1234`, `R1=10.1234`, `Q1 = +10.1234`, `#<z> = 10.1234`, `_Z=10.1234` or a Siemens
+/// declaration `DEF REAL Z=10.1234`, records 4 decimals for that parameter, and a later word
+/// that uses it, `X#1`, `X-#1`, `X=R1`, `F=-R1`, `X+Q1`, `FQ1`, `F Q1`, `X#<z>` or `X=_Z`, counts
+/// them for its letter as the literal `X10.1234` would: a number written only in a parameter
+/// keeps its decimals in the output. An assignment of anything else forgets the parameter. Which
+/// of these spellings a dialect has is its reader's to say (a word it does not read is refused
 /// there); text after `;` or `(` is not read.
 inline void count_parameter_words(std::string_view text, number_resolution& r) {
-  std::map<std::pair<char, long>, int> decimals;  // per parameter assigned a number
+  std::map<std::pair<char, long>, int> decimals;  // per numbered parameter assigned a number
+  std::map<std::string, int, std::less<>> named;  // per named one, by its reader's name
+  std::string word_name;
   for_each_line(text, [&](const text_line& line) {
-    const std::string_view s = line.text.substr(0, line.text.find_first_of(";("));
-    if (decimals.empty() && s.find('=') == std::string_view::npos) return;  // nothing assigned, nothing to use
+    const std::string_view s = line.text.substr(0, detail::code_end(line.text));
+    if (decimals.empty() && named.empty() && s.find('=') == std::string_view::npos) return;  // nothing assigned, nothing to use
     std::pair<char, long> name;
     for (std::size_t k = 0; k < s.size(); ++k) {
       const bool boundary = k == 0 || detail::word_boundary(s[k - 1]) || s[k] == '#';
       if (!boundary) continue;
-      if (const std::size_t end = detail::parameter_at(s, k, name); end != 0) {  // `#1 = 5.25`
+      // An assignment, `#1 = 5.25`, `#<z> = 5.25`, `_Z=5.25`: the number's decimals, or forgotten.
+      std::size_t end = detail::parameter_at(s, k, name);
+      const bool numbered = end != 0;
+      if (!numbered) end = detail::named_at(s, k, word_name);
+      if (end != 0) {
         const std::size_t eq = lexing::skip_blanks(s, end);
-        if (eq < s.size() && s[eq] == '=') {
+        if (eq < s.size() && s[eq] == '=' && (eq + 1 == s.size() || s[eq + 1] != '=')) {
           int d = 0;
           const std::size_t v = lexing::skip_blanks(s, eq + 1);
           const std::size_t after = detail::scan_number(s, v, d);
-          if (after != 0 && (after == s.size() || !detail::parameter_prefix(s[after]))) decimals[name] = d;
-          else decimals.erase(name);
+          const bool number = after != 0 && (after == s.size() || !detail::parameter_prefix(s[after]));
+          if (numbered) {
+            if (number) decimals[name] = d;
+            else decimals.erase(name);
+          } else if (number) {
+            named[word_name] = d;
+          } else if (const auto it = named.find(word_name); it != named.end()) {
+            named.erase(it);
+          }
           k = eq;
           continue;
         }
+        if (!numbered && !is_letter(s[k])) continue;
       }
       if (!is_letter(s[k])) continue;
-      std::size_t j = lexing::skip_blanks(s, k + 1);  // `X#1`, `X-#1`, `X=R1`, `F=-R1`, `X+Q1`, `FQ1`, `F Q1`
+      std::size_t j = lexing::skip_blanks(s, k + 1);  // `X#1`, `X-#1`, `X=R1`, `F=-R1`, `X+Q1`, `FQ1`, `F Q1`, `X=_Z`
       if (j < s.size() && s[j] == '=') ++j;
       if (j < s.size() && (s[j] == '-' || s[j] == '+')) ++j;
-      const std::size_t end = detail::parameter_at(s, j, name);
-      if (end == 0 || (end < s.size() && s[end] == '=')) continue;
-      if (const auto it = decimals.find(name); it != decimals.end()) detail::count_word(r, to_upper(s[k]), it->second);
-      k = end - 1;
+      if (const std::size_t e = detail::parameter_at(s, j, name); e != 0) {
+        if (e < s.size() && s[e] == '=') continue;
+        if (const auto it = decimals.find(name); it != decimals.end()) detail::count_word(r, to_upper(s[k]), it->second);
+        k = e - 1;
+      } else if (const std::size_t e2 = named.empty() ? 0 : detail::named_at(s, j, word_name); e2 != 0) {
+        if (const auto it = named.find(word_name); it != named.end()) detail::count_word(r, to_upper(s[k]), it->second);
+        k = e2 - 1;
+      }
     }
   });
 }

@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <kin5/program/address_words.hpp>
 #include <kin5/program/io.hpp>
 #include <kin5/program/linuxcnc/dialect.hpp>
 
@@ -138,4 +139,14 @@ TEST_CASE("linuxcnc: what LinuxCNC cannot say is refused, naming the block") {
 TEST_CASE("linuxcnc: markers: M428 names LinuxCNC, the ISO G43.4 does not") {
   CHECK(guess_dialect("G43\nM428\n") == id_of<linuxcnc::dialect>());
   CHECK(guess_dialect("G43.4 H1\n") == id_of<iso::dialect>());
+}
+
+TEST_CASE("linuxcnc: a number written only in a named parameter counts for the program's resolution") {
+  // `X#<z>` with `#<z> = 10.1234` is the literal X10.1234, whatever case and blanks spell the name.
+  const dialect id = id_of<linuxcnc::dialect>();
+  const auto r = scan_resolution("#<Z Safe> = 10.1234\n#<_b>=-0.12345\nG1 X1.5 Y2 F100\nG1 X#<zsafe> B-#<_B>\n", id);
+  CHECK(r.linear_decimals == 4);
+  CHECK(r.angle_decimals == 5);
+  const auto computed = scan_resolution("#<z> = 10.1234\n#<z> = [#1 * 2]\nG1 X#<z> Y1.5\n", id);
+  CHECK(computed.linear_decimals == 1);
 }

@@ -280,4 +280,13 @@ TEST_CASE("siemens: a number written only in an R parameter counts for the progr
   CHECK(r.feed_decimals == 1);
   const auto computed = scan_resolution("R1=10.1234\nR1=R2*2\nG1 X=R1 Y1.5\n", id);
   CHECK(computed.linear_decimals == 1);
+  // User variables likewise: assigned, declared with a value (`,` between names), used by name
+  // in any case.
+  const auto variables =
+      scan_resolution("N10 DEF REAL _A=1.5,Depth=-2.12345\nN20 _F=250.25 _Z=10.1234\nN30 G1 X=_z Y=-depth B=_A F=_F\n", id);
+  CHECK(variables.linear_decimals == 5);
+  CHECK(variables.angle_decimals == 1);
+  CHECK(variables.feed_decimals == 2);
+  const auto forgotten = scan_resolution("_Z=10.1234\n_Z=R1*2\nG1 X=_Z Y1.5\n", id);
+  CHECK(forgotten.linear_decimals == 1);
 }
