@@ -99,6 +99,8 @@ class block_store {
     passthrough = 1u << 28, has_state = 1u << 29, framing = 1u << 30,
     assignment = 1u << 31,
   };
+  // The byte after the flags' `has_tool`: which of the tool's fields follow.
+  enum tool_fields : unsigned char { tool_number = 1u << 0, tool_named = 1u << 1 };
 
   std::string file_;
   std::vector<std::unique_ptr<unsigned char[]>> chunks_;
@@ -173,7 +175,7 @@ class block_store {
     set(b.feed_mode.has_value(), has_feed_mode);
     set(b.metric.has_value(), has_metric);
     set(b.metric.value_or(false), metric_on);
-    set(b.tool.has_value(), has_tool);
+    set(b.tool || b.tool_name, has_tool);  // then a byte says which: tool_number, tool_name
     set(b.spindle_rpm.has_value(), has_rpm);
     set(!b.m_codes.empty(), has_m);
     set(b.motion.has_value(), has_motion);
@@ -198,11 +200,11 @@ class block_store {
     // An upper bound of the record's size: the fixed part, then the strings and lists (a
     // LEB128 size takes at most 10 bytes).
     constexpr std::size_t leb = 10;
-    std::size_t size = sizeof flags + 2 * leb + sizeof(long long) + sizeof(feed_unit) + sizeof(long long) +
+    std::size_t size = sizeof flags + 2 * leb + sizeof(long long) + sizeof(feed_unit) + 1 + sizeof(long long) +
                        sizeof(double) + sizeof(motion_kind) + 6 * sizeof(double) + sizeof(vec3) + sizeof(arc_plane) +
                        sizeof(vec3) + sizeof(double) + sizeof(double) + leb + sizeof(state_words);
     if (flags & has_text) size += leb + b.text.size();
-    for (const auto* s : {&b.program_begin, &b.program_end, &b.comment})
+    for (const auto* s : {&b.program_begin, &b.program_end, &b.comment, &b.tool_name})
       if (*s) size += leb + (*s)->size();
     size += leb + sizeof(int) * b.m_codes.size();
     for (const auto& w : b.kept_words) size += leb + w.size();
@@ -217,7 +219,11 @@ class block_store {
     if (flags & has_end) put_string(*b.program_end);
     if (flags & has_comment) put_string(*b.comment);
     if (flags & has_feed_mode) put(*b.feed_mode);
-    if (flags & has_tool) put(*b.tool);
+    if (flags & has_tool) {
+      put(static_cast<unsigned char>((b.tool ? tool_number : 0) | (b.tool_name ? tool_named : 0)));
+      if (b.tool) put(*b.tool);
+      if (b.tool_name) put_string(*b.tool_name);
+    }
     if (flags & has_rpm) put(*b.spindle_rpm);
     if (flags & has_m) {
       put_size(b.m_codes.size());
@@ -253,6 +259,7 @@ class block_store {
     b.feed_mode.reset();
     b.metric.reset();
     b.tool.reset();
+    b.tool_name.reset();
     b.spindle_rpm.reset();
     b.m_codes.clear();
     b.motion.reset();
@@ -276,7 +283,12 @@ class block_store {
     if (flags & has_tcp) b.tcp = (flags & tcp_on) != 0;
     p = get_optional(p, flags, has_feed_mode, b.feed_mode);
     if (flags & has_metric) b.metric = (flags & metric_on) != 0;
-    p = get_optional(p, flags, has_tool, b.tool);
+    if (flags & has_tool) {
+      unsigned char which = 0;
+      p = get(p, which);
+      p = get_optional(p, which & tool_number ? flags : 0, has_tool, b.tool);
+      if (which & tool_named) p = get_string(p, b.tool_name.emplace());
+    }
     p = get_optional(p, flags, has_rpm, b.spindle_rpm);
     if (flags & has_m) {
       p = get_size(p, v);

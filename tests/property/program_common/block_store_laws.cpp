@@ -48,6 +48,7 @@ block any_block(const std::string& file) {
   b.feed_mode = maybe(rc::gen::element(feed_unit::per_minute, feed_unit::inverse_time));
   b.metric = maybe(rc::gen::arbitrary<bool>());
   b.tool = maybe(rc::gen::arbitrary<long long>());
+  b.tool_name = maybe(any_string());
   b.spindle_rpm = maybe(any_double());
   b.m_codes = *rc::gen::container<std::vector<int>>(*rc::gen::inRange(0, 4), rc::gen::arbitrary<int>());
   b.motion = maybe(rc::gen::element(motion_kind::rapid, motion_kind::linear, motion_kind::arc_cw, motion_kind::arc_ccw));
@@ -71,6 +72,7 @@ block any_block(const std::string& file) {
   b.kept_words = *rc::gen::container<std::vector<std::string>>(*rc::gen::inRange(0, 4), any_string());
   b.passthrough = *rc::gen::arbitrary<bool>();
   b.framing = *rc::gen::arbitrary<bool>();
+  b.assignment = *rc::gen::arbitrary<bool>();
   if (*rc::gen::inRange(0, 2)) {  // the state words, kept as bytes
     b.state.tool_change = *rc::gen::arbitrary<bool>();
     if (*rc::gen::inRange(0, 2))
