@@ -59,7 +59,10 @@ struct line_words {
 
 /// The G name of a G code times ten: 430 → "G43", 591 → "G59.1".
 inline std::string g_name(int g) {
-  return "G" + std::to_string(g / 10) + (g % 10 ? "." + std::to_string(g % 10) : "");
+  std::string name(1, 'G');  // appended to, not `"G" + …`: GCC 12 warns falsely (-Wrestrict) on that
+  name += std::to_string(g / 10);
+  if (g % 10) name += '.', name += std::to_string(g % 10);
+  return name;
 }
 
 /// The words LinuxCNC reads otherwise than ISO (see the file comment), and the modal record the
