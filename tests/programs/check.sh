@@ -47,15 +47,23 @@ case $name in
     has '^N0 G700$' '^N3 G57' 'TRAORI' ;;
   heidenhain/drill_cycle_refused.h)
     expect 2 "7:3: error: CYCL DEF 200 is not supported" translate --from dmu-80p --to sajo-12000p ;;
+  heidenhain/named_tools.h)
+    expect 0 - translate --from dmu-80p --to sajo-12000p
+    has '^N5 F1200 S8000 T="MILL_D10" M6 ' '^N15 S14000 T="BALL-R3" M6 ' '^N14 TRAFOOF$' '^D1$' '^N17 TRAORI$'
+    expect 2 '6:1: error: a tool called by name ("MILL_D10") in heidenhain has no number in iso; --tool-map MILL_D10=N' \
+      translate --from dmu-80p --to sajo-12000p --to-dialect iso
+    expect 0 - translate --from dmu-80p --to sajo-12000p --to-dialect iso --tool-map MILL_D10=1 --tool-map BALL-R3=2
+    has '^N5 F1200. S8000 T1 M6 ' '^N7 G43.4 H1$' '^N15 S14000 T2 M6 ' '^N17 G43.4 H2$' ;;
   heidenhain/tilted_plane_refused.h)
     expect 2 "5:3: error: PLANE SPATIAL changes the working frame" translate --from dmu-80p --to sajo-12000p ;;
   siemens/impeller_traori.mpf)
-    expect 2 "13:1: error: T=\"BALL_D8_L90\": a tool named in T= of siemens is not translated into heidenhain" \
+    # The named tools go into Heidenhain as TOOL CALL "…": compensation under the paper's setup stops it.
+    expect 2 "35:1: error: cutter radius compensation: the setup between the machines turns the XY plane" \
       translate --from sajo-12000p --to dmu-80p --work-offset-map G54=1
     # Between the same machine and dialect the constants are substituted.
     expect 0 - translate --from sajo-12000p --to sajo-12000p
     has '^N110 G0 X-25.5 Y14.2 Z120 A-20 B35$' '^N130 G1 .* Z2.0245 .* F400$' '^N140 G1 .* F1850.5$' \
-      '^N180 G0 .* Z120 ' '^N280 G41 G1 X-50 Y-40 ' ;;
+      '^N180 G0 .* Z120 ' '^N280 G41 G1 X-50 Y-40 ' '^N60 T="BALL_D8_L90" M6$' ;;
   siemens/cover_inch_g700.mpf)
     expect 2 "5:5: error: G55: a work offset of siemens" translate --from sajo-12000p --to dmu-80p
     expect 0 - translate --from sajo-12000p --to dmu-80p --work-offset-map G55=2

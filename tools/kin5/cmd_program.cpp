@@ -437,6 +437,7 @@ struct common_arguments {
   std::string source_tool_length, source_work_offset;  ///< translate and reverse: the source's
   std::optional<double> tolerance_mm;
   std::vector<std::string> work_offset_map;
+  std::vector<std::string> tool_map;  ///< --tool-map NAME=N, one per option
   std::string report;  ///< --report FILE.json
   std::string output_mode;  ///< tcp | machine; empty: the output dialect's
   std::string tool_table;   ///< --tool-table FILE
@@ -546,6 +547,12 @@ std::optional<common_options> parse_common(std::string_view command, const commo
     return std::nullopt;
   }
   c.digits = a.digits;
+  for (const auto& entry : a.tool_map)
+    if (!c.tool_numbers.add(entry)) {
+      std::cerr << "kin5 " << command << ": --tool-map: '" << entry
+                << "' is not NAME=N (N a whole number of at most 8 digits), or maps a tool twice\n";
+      return std::nullopt;
+    }
   for (const auto& entry : a.m_map)
     if (!c.m_codes.add(entry)) {
       std::cerr << "kin5 " << command << ": --m-map: '" << entry << "' is neither N=M (rename) nor N= (drop)\n";
@@ -634,6 +641,10 @@ void add_common_options(CLI::App* sub, common_arguments& a) {
                   "Write work offset FROM as TO (G54=1: G54 selects Heidenhain preset 1; G505=G54.1P5; G54= "
                   "drops it); a work offset with no certain equivalent in the output dialect is refused")
       ->allow_extra_args(false);
+  sub->add_option("--tool-map", a.tool_map,
+                  "Call tool NAME (T=\"NAME\", TOOL CALL \"NAME\") as tool number N (NAME=N), in every dialect and "
+                  "the tool table; a tool called by name is refused where the output dialect takes only numbers")
+      ->allow_extra_args(false);  // one entry per option: a name may hold a comma
   sub->add_option("--output-mode", a.output_mode,
                   "tcp: motion as the tool tip under tool-tip tracking; machine: as the target's axis values, without "
                   "it (needs --work-offset; pieces within --tolerance). Default: tcp where the output dialect switches "

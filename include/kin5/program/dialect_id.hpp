@@ -55,6 +55,7 @@ struct capabilities {
   bool tool_axis_vectors = false;  ///< a tool-axis vector in a motion block (A3=, TX, G43.5 I J K, GOTO/…,i,j,k)
   bool arcs = false;               ///< circular moves
   bool arc_centre_block = false;   ///< an arc's centre is a modal block of its own (Heidenhain CC)
+  bool tool_names = false;         ///< a tool called by name (T="MILL_D10", TOOL CALL "MILL_D10")
   /// The work offsets its writer selects, each range in the dialect's own form (G54, G54.1 P n,
   /// G505, CYCL DEF 247 Q339=n); a selection in none of them is refused (docs/dialects/*.md).
   std::array<work_offset_names, 3> work_offsets{};

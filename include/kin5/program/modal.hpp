@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <string>
 
 #include "block.hpp"
 
@@ -55,6 +56,8 @@ struct modal_state {
 
   std::optional<long long> selected_tool;     ///< last T / TOOL CALL number (ISO: the next tool)
   std::optional<long long> active_tool;       ///< tool in the spindle after the last change
+  std::optional<std::string> selected_tool_name;  ///< last tool selected by name (then no `selected_tool`)
+  std::optional<std::string> active_tool_name;    ///< tool in the spindle, when called by name
   std::optional<spindle_axis> tool_spindle_axis;
   std::optional<bool> length_compensation;    ///< G43 … on, G49 off
   std::optional<long long> length_register;   ///< H in effect; empty: the active tool's own
@@ -140,8 +143,9 @@ struct modal_state {
   /// mist are independent (M9 writes both off). Everything else: the last value given.
   void apply_state(const block& b) {
     const state_words& s = b.state;
-    if (b.tool) selected_tool = *b.tool;
-    if (changes_tool(b)) active_tool = selected_tool;
+    if (b.tool) selected_tool = *b.tool, selected_tool_name.reset();
+    if (b.tool_name) selected_tool_name = *b.tool_name, selected_tool.reset();
+    if (changes_tool(b)) active_tool = selected_tool, active_tool_name = selected_tool_name;
     take_word(s.tool_spindle_axis, tool_spindle_axis);
     if (s.length_compensation == true && !s.length_register) length_register.reset();
     take_word(s.length_compensation, length_compensation);

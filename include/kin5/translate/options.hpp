@@ -32,6 +32,7 @@
 #include "feed.hpp"
 #include "machine_output.hpp"
 #include "m_codes.hpp"
+#include "tool_map.hpp"
 #include "work_offset_map.hpp"
 
 namespace kin5 {
@@ -56,6 +57,8 @@ struct common_options {
   std::optional<run_inputs> placement;
   /// Work offsets mapped into another dialect's (work_offset_map.hpp).
   work_offset_map work_offsets;
+  /// Tool numbers for tools the source calls by name (tool_map.hpp, `--tool-map`).
+  tool_map tool_numbers;
   /// Where the part sat on the source and its tool length: given, motion without tool-tip
   /// tracking is read as machine coordinates and written as TCP (translate/untracked.hpp);
   /// not given, it is refused.

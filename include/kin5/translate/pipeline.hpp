@@ -114,7 +114,9 @@ class two_pass_translator final : public block_translator {
     if (refusal) result_.errors.push_back(file_error(file, std::move(*refusal)));
   }
 
-  void plan(const program::block& b) override {
+  void plan(const program::block& source_block) override {
+    std::optional<program::block> numbered;  // the user's tool numbers for tool names, when they apply
+    const program::block& b = numbered_tools(source_block, common_.tool_numbers, numbered);
     ++result_.blocks_read;
     if (refused_) return;
     if (result_.blocks_read == 1) configure();
@@ -126,8 +128,10 @@ class two_pass_translator final : public block_translator {
     target_.plan(s);
   }
 
-  void write(const program::block& b, const program::block_sink& emit) override {
+  void write(const program::block& source_block, const program::block_sink& emit) override {
     if (refused_) return;
+    std::optional<program::block> numbered;
+    const program::block& b = numbered_tools(source_block, common_.tool_numbers, numbered);
     if (!precise_) configure_precision();
     if (!planned_) target_.finish_plan(), planned_ = true;
     source_step s = second_.next(b, nullptr, !Target::plans_with_tool_axis);

@@ -6,7 +6,9 @@
 ///    B and C) is an error at the word: the reader has no machine and keeps it, and the
 ///    kinematics would drop it — silently, were it not checked;
 ///  - a word the reader kept without interpreting it whose effect another dialect would lose as
-///    a comment (`check_kept_words`: an ISO `G43` without tracking, Siemens `T="NAME"`, …) is an error;
+///    a comment (`check_kept_words`: an ISO `G43` without tracking, Siemens `D0`, …) is an error;
+///  - a tool called by name where the output dialect takes only numbers and the user maps none
+///    (`check_tool_name`, tool_map.hpp) is an error at the block;
 ///  - a spindle speed with a fraction where the output controller reads S as a whole number
 ///    (`check_spindle_speed`) is an error at the word;
 ///  - a dwell the output controller cannot take (`check_dwell`: too long, or finer than its
@@ -41,6 +43,7 @@
 #include "angle_tolerance.hpp"
 #include "m_codes.hpp"
 #include "options.hpp"
+#include "tool_map.hpp"
 #include "work_offset_map.hpp"
 
 namespace kin5::translate_detail {
@@ -233,6 +236,16 @@ inline bool check_work_offset(const program::block& b, const source_context& ctx
     ctx.out->errors.push_back({located ? located->where : b.where, t.refusal, program::spelling(w),
                                "--work-offset-map " + map_key(w) + "="});
   }
+  return false;
+}
+
+/// Checks the tool block `b` calls by name against the output dialect (tool_map.hpp): refused
+/// at the block when the target takes only numbers (a name the user maps is a number by now).
+/// False on an error, reported to `ctx.out` when given.
+inline bool check_tool_name(const program::block& b, const source_context& ctx) {
+  const std::string why = tool_name_refusal(*b.tool_name, ctx.language, ctx.output);
+  if (why.empty()) return true;
+  if (ctx.out) ctx.out->errors.push_back({b.where, why, "tool name", "--tool-map " + *b.tool_name + "="});
   return false;
 }
 

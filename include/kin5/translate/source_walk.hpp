@@ -225,8 +225,9 @@ class source_walker {
     const bool offset_ok = !b.state.work_offset || check_work_offset(b, ctx);
     const bool speed_ok = !b.spindle_rpm || check_spindle_speed(b, ctx);
     const bool dwell_ok = !b.state.dwell_s || check_dwell(b, ctx);
+    const bool tool_ok = !b.tool_name || check_tool_name(b, ctx);
     s.compensated = modal_.radius_compensation && *modal_.radius_compensation != program::cutter_side::off;
-    if (!compensation_ok(b, s.compensated, to) || !kept_ok || !offset_ok || !speed_ok || !dwell_ok ||
+    if (!compensation_ok(b, s.compensated, to) || !kept_ok || !offset_ok || !speed_ok || !dwell_ok || !tool_ok ||
         (!b.m_codes.empty() && !check_m_codes(b, ctx)) ||
         (b.moves() && !source_.check(b, ctx))) {
       s.what = source_step::kind::failed;

@@ -29,10 +29,16 @@ struct tool_lengths {
   std::optional<double> single_mm;
 };
 
+/// The entry `length_entry` gives for a tool called by name: the table is by number, so it has
+/// none (tool_map.hpp: `--tool-map` gives the name a number first).
+inline constexpr long long named_tool_entry = -1;
+
 /// The entry whose length is in effect in state `m`: the length register, else the active
-/// tool; empty before either is known (the tool loaded before the program).
+/// tool (`named_tool_entry` for one called by name); empty before either is known (the tool
+/// loaded before the program).
 inline std::optional<long long> length_entry(const program::modal_state& m) {
-  return m.length_register ? m.length_register : m.active_tool;
+  if (m.length_register) return m.length_register;
+  return m.active_tool_name ? std::optional<long long>(named_tool_entry) : m.active_tool;
 }
 
 /// Answers, block after block, the tool length of the entry in effect.
@@ -45,6 +51,10 @@ class tool_length_tracker {
 
   /// The length (mm) of entry `entry`; empty, with the reason in `why`, when it is not known.
   std::optional<double> length_mm(std::optional<long long> entry, std::string& why) {
+    if (entry == named_tool_entry) {
+      why = "the tool in effect is called by name, and tool lengths are by number; --tool-map NAME=N gives it one";
+      return std::nullopt;
+    }
     if (entry && lengths_.table)
       if (const tool_entry* t = lengths_.table->find(*entry)) return t->length_mm;
     if (lengths_.single_mm && (!single_for_ || *single_for_ == entry)) {

@@ -177,4 +177,20 @@ struct cl_data {
 };
 const bool law_7 = for_every_dialect<cl_data>("capability: cutter-location data", "[dialects][capabilities]");
 
+template <class D>
+struct tool_names {
+  static void check() {
+    block change;
+    change.where = {"in.nc", 2, 1};
+    change.tool_name = "MILL_D10";
+    change.m_codes = {6};
+    // A dialect that calls tools by name writes the name and reads it back; one that takes only
+    // numbers refuses it (a number made up for it would call another tool).
+    const auto back = written_and_read<D>(of({change, move(1, 2, 3, 4)}));
+    CHECK(back.has_value() == D::can.tool_names);
+    CHECK(any_block(back, [](const block& r) { return r.tool_name == "MILL_D10" && !r.tool; }) == D::can.tool_names);
+  }
+};
+const bool law_8 = for_every_dialect<tool_names>("capability: tools called by name", "[dialects][capabilities]");
+
 }  // namespace

@@ -1,9 +1,11 @@
 // Tool changes between every ordered pair of dialects. A generated program of tool changes
-// (`T n M6`, `T n` … `M6`, `TOOL CALL n`, `LOADTL/n`), tool-tip tracking switched on and off,
-// and moves is written by the target's writer and read back by the target's own reader; the two
-// programs must agree, move by move, on the tool in the spindle and on tool-tip tracking, and the
-// target must never change a tool while tracking is on (every control switches it off for the
-// change: Heidenhain M129 / FUNCTION RESET TCPM, Siemens TRAFOOF, ISO G49).
+// (`T n M6`, `T n` … `M6`, `TOOL CALL n`, `LOADTL/n`, and by name where the source calls tools
+// by name: `T="MILL_D10"`, `TOOL CALL "MILL_D10"`), tool-tip tracking switched on and off, and
+// moves is written by the target's writer and read back by the target's own reader; the two
+// programs must agree, move by move, on the tool in the spindle (number or name) and on
+// tool-tip tracking, and the target must never change a tool while tracking is on (every
+// control switches it off for the change: Heidenhain M129 / FUNCTION RESET TCPM, Siemens
+// TRAFOOF, ISO G49). A target that takes only numbers refuses a name, naming it.
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +25,7 @@ namespace {
 /// What a program says at one move: the tool in the spindle and whether tracking is on.
 struct at_move {
   std::optional<long long> tool;
+  std::optional<std::string> name;
   bool tcp = false;
   friend bool operator==(const at_move&, const at_move&) = default;
 };
@@ -43,15 +46,17 @@ bool has_m(const block& b, int m) {
 trace trace_of(const std::vector<block>& blocks) {
   trace t;
   std::optional<long long> selected, active;
+  std::optional<std::string> selected_name, active_name;
   bool tcp = false;
   for (const block& b : blocks) {
-    if (b.tool) selected = b.tool;
+    if (b.tool) selected = b.tool, selected_name.reset();
+    if (b.tool_name) selected_name = b.tool_name, selected.reset();
     if (has_m(b, 6)) {
       if (tcp && !(b.tcp && !*b.tcp)) t.change_under_tcp = true;
-      active = selected;
+      active = selected, active_name = selected_name;
     }
     if (b.tcp) tcp = *b.tcp;
-    if (b.moves()) t.moves.push_back({active, tcp});
+    if (b.moves()) t.moves.push_back({active, active_name, tcp});
   }
   return t;
 }
@@ -70,23 +75,38 @@ bool reads_a_selection(dialect d) {
   return false;
 }
 
+/// The tool of a change or selection: a number, or where `names` (the source calls tools by
+/// name) sometimes a name both Siemens and a TNC take.
+void draw_tool(block& b, bool names) {
+  if (names && *rc::gen::inRange(0, 3) == 0) b.tool_name = *rc::gen::element<std::string>("MILL_D10", "BALL-R3.5", "T#1");
+  else b.tool = *rc::gen::inRange<long long>(1, 100);
+}
+
+/// Whether block list `blocks` calls a tool by name.
+bool names_a_tool(const std::vector<block>& blocks) {
+  for (const block& b : blocks)
+    if (b.tool_name) return true;
+  return false;
+}
+
 /// A program as the reader of `from` gives it: changes, selections, tracking, moves.
 std::vector<block> draw_program(dialect from) {
   std::vector<block> out;
   const bool tracking = capabilities_of(from).tcp_switch;  // CL data has no TCP word
   const bool selects = reads_a_selection(from);           // T alone, M6 later
+  const bool names = capabilities_of(from).tool_names;
   const int n = *rc::gen::inRange(1, 25);
   double x = 0;
   for (int k = 0; k < n; ++k) {
     block b;
     switch (*rc::gen::inRange(0, 6)) {
-      case 0:  // a change naming its tool: T5 M6, TOOL CALL 5, LOADTL/5
-        b.tool = *rc::gen::inRange<long long>(1, 100);
+      case 0:  // a change naming its tool: T5 M6, TOOL CALL 5, LOADTL/5, TOOL CALL "MILL_D10"
+        draw_tool(b, names);
         b.m_codes = {6};
         break;
       case 1:  // T5 … M6
         if (!selects) continue;
-        b.tool = *rc::gen::inRange<long long>(1, 100);
+        draw_tool(b, names);
         out.push_back(b);
         b = block{};
         b.m_codes = {6};
@@ -116,18 +136,23 @@ TEST_CASE("tool changes: every ordered pair of dialects keeps the tool and track
     try {
       text = write(to, p);
     } catch (const std::invalid_argument& e) {
-      // only a change with no tool number, or ISO tracking with no tool for its H, may be refused
+      // only a change with no tool number, ISO tracking with no tool for its H, or a name where
+      // the target takes numbers may be refused
       const std::string why = e.what();
-      RC_ASSERT((why.find("tool change (M6) without a tool number") != std::string::npos ||
+      const bool name_refused = why.find("a tool by name (\"") != std::string::npos;
+      RC_ASSERT(!name_refused || (names_a_tool(p.blocks) && !capabilities_of(to).tool_names));
+      RC_ASSERT((name_refused || why.find("tool change (M6) without a tool number") != std::string::npos ||
                  why.find("tracking switched on before any tool change") != std::string::npos));
       return;
     }
+    RC_ASSERT(!names_a_tool(p.blocks) || capabilities_of(to).tool_names);
     const read_result back = read(to, text, "back");
     RC_ASSERT(back.ok());
     const trace want = trace_of(p.blocks), got = trace_of(back.parsed.blocks);
     RC_ASSERT(got.moves.size() == want.moves.size());
     for (std::size_t k = 0; k < want.moves.size(); ++k) {
       RC_ASSERT(got.moves[k].tool == want.moves[k].tool);
+      RC_ASSERT(got.moves[k].name == want.moves[k].name);
       if (capabilities_of(to).tcp_switch) RC_ASSERT(got.moves[k].tcp == want.moves[k].tcp);
     }
     RC_ASSERT(!got.change_under_tcp);

@@ -434,9 +434,7 @@ TEST_CASE("across dialects, a kept word whose effect a comment would lose is ref
       {iso, "G4 P1500\n", ""},  // a dwell is no kept word: state.dwell_s, translated (check_dwell)
       {iso, "G04 X1.5\n", ""},  // X of a G4 is its time, not a position
       {iso, "G43 H1\n", ""},  // read into the model: the writers translate or refuse it
-      {siemens, "T=\"BALL\"\n",
-       "t:1:1: error: T=\"BALL\": a tool named in T= of siemens is not translated into heidenhain yet (it would "
-       "become a comment)"},
+      {siemens, "T=\"BALL\"\n", ""},  // read into the model (check_tool_name)
       {siemens, "D0\n",
        "t:1:1: error: D0: tool length compensation off (D0) of siemens is not translated into heidenhain yet (it "
        "would become a comment)"},
@@ -474,6 +472,62 @@ TEST_CASE("across dialects, a kept word whose effect a comment would lose is ref
   ctx.language = id_of<program::heidenhain::dialect>();
   ctx.output = iso;
   CHECK_FALSE(check_kept_words(h.parsed.blocks.at(0), ctx));
+}
+
+TEST_CASE("across dialects, a tool called by name is refused where the target takes only numbers, unless mapped") {
+  using program::id_of;
+  using translate_detail::check_tool_name;
+  using translate_detail::source_context;
+  const dialect siemens = id_of<program::siemens::dialect>(), heidenhain = id_of<program::heidenhain::dialect>();
+  const std::vector<dialect> numbers_only{id_of<program::iso::dialect>(), id_of<program::linuxcnc::dialect>(),
+                                          id_of<program::apt::dialect>()};
+  const std::vector<std::pair<dialect, std::string>> sources{{siemens, "N10 T=\"BALL_D8\" M6\n"},
+                                                             {heidenhain, "TOOL CALL \"BALL_D8\" Z S8000\n"}};
+  tool_map map;
+  REQUIRE(map.add("BALL_D8=7"));
+  for (const auto& [from, text] : sources) {
+    INFO(text);
+    const program::read_result r = program::read(from, text, "t");
+    REQUIRE(r.ok());
+    const program::block& b = r.parsed.blocks.at(0);
+    REQUIRE(b.tool_name == "BALL_D8");
+    for (dialect to : {siemens, heidenhain}) {  // names go in as themselves
+      source_context ctx;
+      ctx.language = from, ctx.output = to;
+      CHECK(check_tool_name(b, ctx));
+    }
+    for (dialect to : numbers_only) {
+      translation out;
+      source_context ctx;
+      ctx.language = from, ctx.output = to, ctx.out = &out;
+      CHECK_FALSE(check_tool_name(b, ctx));
+      REQUIRE(out.errors.size() == 1);
+      CHECK(out.errors[0].to_string() == "t:1:1: error: a tool called by name (\"BALL_D8\") in " +
+                                             std::string(program::name(from)) + " has no number in " +
+                                             std::string(program::name(to)) + "; --tool-map BALL_D8=N gives its number there");
+      // Mapped, it is tool 7 from the source on: nothing left to refuse.
+      std::optional<program::block> storage;
+      const program::block& numbered = numbered_tools(b, map, storage);
+      CHECK(numbered.tool == 7);
+      CHECK_FALSE(numbered.tool_name);
+    }
+  }
+  // A name the map does not give, or no map: the block as it is.
+  std::optional<program::block> storage;
+  program::block other;
+  other.tool_name = "EM_D10";
+  CHECK(&numbered_tools(other, map, storage) == &other);
+  CHECK(&numbered_tools(other, tool_map{}, storage) == &other);
+  // Entries: NAME=N, N whole, each name once; a name may hold a comma.
+  tool_map bad;
+  CHECK_FALSE(bad.add("BALL"));
+  CHECK_FALSE(bad.add("=5"));
+  CHECK_FALSE(bad.add("BALL=-1"));
+  CHECK_FALSE(bad.add("BALL=1.5"));
+  CHECK_FALSE(bad.add("BALL=123456789"));
+  CHECK(bad.add("D10,ROUGH=12"));
+  CHECK(bad.number_of("D10,ROUGH") == 12);
+  CHECK_FALSE(bad.add("D10,ROUGH=13"));
 }
 
 TEST_CASE("across dialects, a dwell the target controller cannot take is refused at its block") {

@@ -77,7 +77,9 @@ class writer {
       return;
     }
     if (b.state.dwell_s) return dwell(out, b);
-    if (b.tool_name) fail(b, "a tool by name (" + one_line(b, *b.tool_name) + ") has no APT form (LOADTL takes a number)");
+    if (b.tool_name)
+      fail(b, "a tool by name (\"" + one_line(b, *b.tool_name) +
+                  "\") has no APT form (LOADTL takes a number; --tool-map NAME=n gives one)");
     // CL data are in the part's frame: APT has no statement that selects a work offset.
     if (b.state.work_offset) fail(b, "work offset " + spelling(*b.state.work_offset) + " has no APT form");
     // GOTO points are absolute tip positions and arcs are not written, so absolute mode, the

@@ -31,7 +31,7 @@ inline read_result read(std::string_view text, std::string file_name) {
 struct dialect {
   static constexpr std::string_view name = "heidenhain";
   static constexpr capabilities can{.tcp_switch = true, .rotary_axis_words = true, .tool_axis_vectors = true,
-                                    .arcs = true, .arc_centre_block = true,
+                                    .arcs = true, .arc_centre_block = true, .tool_names = true,
                                     .work_offsets = {{{work_offset_family::preset, 0, 65535}}}};
   static constexpr std::array<marker, 3> markers{{{"BEGIN PGM", marker::place::block_start},
                                                   {"M128", marker::place::anywhere},

@@ -182,14 +182,25 @@ class block_reader : public word_checks {
     only_comment_after(ue);
   }
 
-  /// `TOOL CALL 5 Z S6000 F… DL… DR…`; any other form is refused at `i`.
+  /// `TOOL CALL 5 Z S6000 F… DL… DR…`, `TOOL CALL "MILL_D10" Z …` (a tool by name: TNC 640
+  /// User's Manual 1/2015 §5.2 "Tool number, tool name"); any other form is refused at `i`.
   void tool_call(std::size_t i, std::size_t after) {
+    bool understood = true;
+    std::optional<std::string> name;
+    const std::size_t q = scan_.skip_spaces(after);
+    if (q < s_.size() && s_[q] == '"') {
+      const std::size_t close = s_.find('"', q + 1);
+      if (close == std::string::npos || close == q + 1) understood = false;
+      else name = s_.substr(q + 1, close - q - 1);
+      after = close == std::string::npos ? s_.size() : close + 1;
+    }
     std::vector<word> ws = scan_.words(after, b_.comment, stray_);
-    bool understood = !ws.empty();
+    understood = understood && (!ws.empty() || name);
     const word* oversize = nullptr;  // DL, DR, DR2 other than 0
     block t = b_;
+    if (name) t.tool_name = std::move(name), t.m_codes.push_back(6);  // TOOL CALL "NAME" changes the tool
     for (word& w : ws) {
-      if (w.key.empty() && w.value && !t.tool && !t.spindle_rpm && t.kept_words.empty()) {
+      if (w.key.empty() && w.value && !t.tool && !t.tool_name && !t.spindle_rpm && t.kept_words.empty()) {
         long long n = 0;
         if (!integer_word(w, n)) understood = false;
         t.tool = n;
@@ -208,10 +219,10 @@ class block_reader : public word_checks {
         understood = false;
       }
     }
-    if (!understood || !(t.tool || t.spindle_rpm)) {
+    if (!understood || !(t.tool || t.tool_name || t.spindle_rpm)) {
       b_.comment.reset();
       b_.passthrough = true;
-      error(i, "TOOL CALL: only TOOL CALL n with an axis, S, F, DL and DR is read (a tool called by name or "
+      error(i, "TOOL CALL: only TOOL CALL n or \"name\" with an axis, S, F, DL and DR is read (a tool called "
                "with other words is not supported)");
       return;
     }

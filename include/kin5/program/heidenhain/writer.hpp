@@ -89,8 +89,9 @@ class writer {
     const bool change = !same_ && has_m(b, 6);
     if (change) tool_change(b, moves, bi);
     else if (b.tool && !same_) add("TOOL DEF " + std::to_string(*b.tool));  // selected, not changed
-    if (!change && ((b.tool && same_) || b.spindle_rpm)) tool_call(b, moves, kept, bi, same_);
-    if (b.tool) selected_tool_ = *b.tool;
+    if (!change && (((b.tool || b.tool_name) && same_) || b.spindle_rpm)) tool_call(b, moves, kept, bi, same_);
+    if (b.tool) selected_tool_ = *b.tool, selected_name_.reset();
+    if (b.tool_name) selected_name_ = *b.tool_name, selected_tool_.reset();
     const std::string m_words = m_functions(b) + end_word(b);
     if (b.tcp && options_.tcp) {
       // A chosen form replaces a read FUNCTION TCPM's options, which mean what M128 means.
@@ -152,6 +153,7 @@ class writer {
   source_end source_end_;                  // where another dialect's program stops running
   std::optional<bool> inch_;  // the unit BEGIN PGM said (INCH: true)
   std::optional<long long> selected_tool_;  // the last tool number written or selected
+  std::optional<std::string> selected_name_;  // the last tool name selected (then no number)
   modal_state source_;                      // the source program's state after the block (another dialect's)
   std::optional<cutter_side> pending_radius_;  // RL/RR/R0 for the next move's L block
   cutter_side radius_written_ = cutter_side::off;  // the compensation the written text leaves in effect
@@ -293,7 +295,7 @@ class writer {
   /// A block that moves: coordinates, or an arc, with a motion word, a rapid or a feed.
   static bool is_move(const block& b) {
     const bool coordless = b.axes.empty() && !b.arc;
-    return !coordless && (b.motion || !b.axes.empty() || b.feed_rapid || (b.feed && !(b.tool || b.spindle_rpm)));
+    return !coordless && (b.motion || !b.axes.empty() || b.feed_rapid || (b.feed && !(b.tool || b.tool_name || b.spindle_rpm)));
   }
 
   /// An L needs end-point coordinates: a feed-only or rapid-only block (APT `FEDRAT/…`, `RAPID`;
@@ -302,11 +304,11 @@ class writer {
   bool carry_feed(const block& b) {
     const bool coordless = b.axes.empty() && !b.arc;
     if (!coordless) return false;
-    if (b.feed && !(b.tool || b.spindle_rpm)) pending_feed_ = b.feed;
+    if (b.feed && !(b.tool || b.tool_name || b.spindle_rpm)) pending_feed_ = b.feed;
     if (b.motion) modal_rapid_ = *b.motion == motion_kind::rapid;
     if (b.motion == motion_kind::rapid || b.feed_rapid) pending_rapid_ = true;
     else if (b.motion || b.feed) pending_rapid_ = false;
-    return b.motion || b.feed_rapid || (b.feed && !(b.tool || b.spindle_rpm));
+    return b.motion || b.feed_rapid || (b.feed && !(b.tool || b.tool_name || b.spindle_rpm));
   }
 
   static bool has_m(const block& b, int m) { return std::find(b.m_codes.begin(), b.m_codes.end(), m) != b.m_codes.end(); }
@@ -316,11 +318,12 @@ class writer {
   /// again after it when TCP is on (the TNC refuses a TOOL CALL under M128: TNC 640 User's
   /// Manual, M128 / FUNCTION TCPM). n is the block's T or the tool selected before (`T5` … `M6`).
   void tool_change(const block& b, bool moves, std::size_t bi) {
-    const std::optional<long long> tool = b.tool ? b.tool : selected_tool_;
-    if (!tool) fail(b, bi, "tool change (M6) without a tool number");
-    if (*tool < 0) fail(b, bi, "tool number " + std::to_string(*tool) + " cannot be written");
+    const std::optional<long long> tool = b.tool ? b.tool : b.tool_name ? std::nullopt : selected_tool_;
+    const std::optional<std::string> name = b.tool_name ? b.tool_name : b.tool ? std::nullopt : selected_name_;
+    if (!tool && !name) fail(b, bi, "tool change (M6) without a tool number");
+    if (tool && *tool < 0) fail(b, bi, "tool number " + std::to_string(*tool) + " cannot be written");
     if (tcp_on_) add(function_tcpm() ? reset_tcpm : "M129");
-    std::string l = "TOOL CALL " + std::to_string(*tool) + " Z";
+    std::string l = "TOOL CALL " + (tool ? std::to_string(*tool) : quoted_tool_name(b, *name, bi)) + " Z";
     plane_ = arc_plane::xy;
     if (b.spindle_rpm) l += " S" + format_number(*b.spindle_rpm, rate(*b.spindle_rpm, "spindle speed"));
     if (b.feed && !moves) l += " F" + format_number(*b.feed, rate(*b.feed));
@@ -416,6 +419,7 @@ class writer {
       if (*b.tool < 0) fail(b, bi, "tool number " + std::to_string(*b.tool) + " cannot be written");
       l += " " + std::to_string(*b.tool);
     }
+    if (b.tool_name && with_tool) l += " " + quoted_tool_name(b, *b.tool_name, bi);
     if (!moves) {
       for (const std::string& w : kept) {
         l += " " + w;
@@ -430,6 +434,20 @@ class writer {
     add(l);
   }
 
+  /// `"MILL_D10"`: a tool name as TOOL CALL takes it, up to 32 of the characters A–Z 0–9
+  /// `# $ % & , - _ .` (TNC 640 User's Manual 1/2015 §5.2 "Tool number, tool name"); else the
+  /// block of another dialect fails (a name read from a TNC program is written back as read).
+  std::string quoted_tool_name(const block& b, const std::string& name, std::size_t bi) const {
+    const bool fits = same_ || (!name.empty() && name.size() <= 32 && std::all_of(name.begin(), name.end(), [](char c) {
+      return (c >= 'A' && c <= 'Z') || is_digit(c) || std::string_view("#$%&,-_.").find(c) != std::string_view::npos;
+    }));
+    if (!fits)
+      fail(b, bi, "tool name '" + (std::all_of(name.begin(), name.end(), [](char c) { return c >= 0x20 && c < 0x7f; })
+                                       ? name : std::string("…")) +
+                      "' cannot be written in TOOL CALL: a TNC tool name is up to 32 of A-Z 0-9 # $ % & , - _ .");
+    return '"' + name + '"';
+  }
+
   static constexpr const char* tcpm = "FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS";
   static constexpr const char* reset_tcpm = "FUNCTION RESET TCPM";
   static_assert(std::string_view(tcpm).substr(14) == tcpm_options_text, "FUNCTION TCPM and its options");
@@ -440,7 +458,7 @@ class writer {
   std::string m_functions(const block& b) const {
     std::string m_words;
     for (int m : b.m_codes)
-      if (!(m == 6 && (b.tool || !same_))) m_words += " M" + std::to_string(m);  // TOOL CALL is the change: no M6
+      if (!(m == 6 && (b.tool || b.tool_name || !same_))) m_words += " M" + std::to_string(m);  // TOOL CALL is the change: no M6
     if (b.machine_coordinates &&
         std::find_if(b.m_codes.begin(), b.m_codes.end(), [](int m) { return m == 91 || m == 92; }) == b.m_codes.end())
       m_words += " M91";

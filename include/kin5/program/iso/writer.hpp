@@ -139,6 +139,8 @@ class writer {
     if (inch_) mm_to_inches(in_unit, !inverse_time_);
     const bool loads = std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
     const bool change = !same_ && loads;
+    if (b.tool_name)  // ISO's T takes a number: a name is not written as something else
+      fail(b, "a tool by name (\"" + *b.tool_name + "\") has no ISO form (T takes a number; --tool-map NAME=n gives one)");
     if (b.tool) selected_tool_ = *b.tool;
     if (loads) active_tool_ = selected_tool_;
     if (change) {

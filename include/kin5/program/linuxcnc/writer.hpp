@@ -70,6 +70,8 @@ class writer {
     if (b.axes.tool_axis) fail(b, "a tool-axis vector (LinuxCNC has no G43.5; its trt kinematics take A, B, C words)");
     std::vector<std::string> own, length;
     std::string before, after;
+    if (b.tool_name)  // LinuxCNC's T takes a number: a name is not written as something else
+      fail(b, "a tool by name (\"" + *b.tool_name + "\") has no LinuxCNC form (T takes a number; --tool-map NAME=n gives one)");
     if (b.tool) selected_ = *b.tool;
     if (!same_) source_.apply(b);
     tool_change(b, before, after);  // M6 runs before G43 of the same line (its order of execution)

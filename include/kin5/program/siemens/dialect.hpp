@@ -30,7 +30,7 @@ inline read_result read(std::string_view text, std::string file_name) {
 struct dialect {
   static constexpr std::string_view name = "siemens";
   static constexpr capabilities can{.inverse_time_feed = true, .tcp_switch = true, .rotary_axis_words = true,
-                                    .tool_axis_vectors = true, .arcs = true,
+                                    .tool_axis_vectors = true, .arcs = true, .tool_names = true,
                                     .work_offsets = {{{work_offset_family::g54, 1, 4},
                                                       {work_offset_family::siemens, 505, 599},
                                                       {work_offset_family::siemens, 0, 0}}}};
@@ -43,10 +43,9 @@ struct dialect {
   /// Catalog machines whose controller reads it (Tian 2010's SAJO 12000P; the usual one for the rest).
   static constexpr std::array<std::string_view, 4> default_for{"sajo-12000p", "ac-trunnion", "ac-head",
                                                                "b-head-a-tilted-table"};
-  /// Kept words a comment would lose: a tool named in T="…", compensation off with D0.
-  static constexpr std::array<kept_word_effect, 3> lost_as_comment{
-      {{"T=", kept_word_effect::match::prefix, "a tool named in T="},
-       {"D0", kept_word_effect::match::whole, "tool length compensation off (D0)"},
+  /// Kept words a comment would lose: compensation off with D0, another edge than D1.
+  static constexpr std::array<kept_word_effect, 2> lost_as_comment{
+      {{"D0", kept_word_effect::match::whole, "tool length compensation off (D0)"},
        {"D1", kept_word_effect::match::other_code,
         "another cutting edge's length and radius than the first's (D1, the tool's own)"}}};
   using write_options = siemens::write_options;

@@ -68,10 +68,10 @@ inline bool is_frame_keyword(std::string_view w) {
          w == "TOFRAMEY" || w == "TOFRAMEZ";
 }
 
-/// Kept words written after T rather than before the motion word: `D1`, `H2`, `T="name"`.
+/// Kept words written after T rather than before the motion word: `D1`, `H2`.
 /// The reader stores kept words in that order too (the others first), so writing keeps them.
 inline bool is_late_kept(std::string_view w) {
-  return (w.size() > 1 && (w[0] == 'D' || w[0] == 'H') && is_digit(w[1])) || w.rfind("T=", 0) == 0;
+  return w.size() > 1 && (w[0] == 'D' || w[0] == 'H') && is_digit(w[1]);
 }
 
 /// Splits a call's arguments at top-level commas.

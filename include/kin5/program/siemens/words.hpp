@@ -44,7 +44,6 @@ struct line_parse {
   std::vector<diagnostic> unknown;  ///< errors if the block has geometry, else it is passthrough
   std::vector<diagnostic> errors, warnings;  ///< the first `max_kept_diagnostics` of each
   std::size_t errors_not_kept = 0, warnings_not_kept = 0, unknown_not_kept = 0;  ///< found after them
-  bool named_tool = false;                          ///< T="name" seen
   std::optional<std::size_t> dwell_column;          ///< G4 seen: its F is the dwell, in seconds
   std::optional<std::pair<double, std::size_t>> dwell_f;  ///< that F (value, column)
   std::string motion_word, feed_word, tcp_word;     ///< as written, for "conflicting words"
@@ -173,9 +172,10 @@ class word_reader {
     const std::size_t start = w.column;
     if (w.value == value_kind::string) {
       if (!w.closed) return error(w.open_column, "string is not closed");
-      if (duplicate(out_.b.tool.has_value() || out_.named_tool, start, "T")) return;
-      out_.named_tool = true;
-      out_.b.kept_words.push_back("T=" + std::string(w.text));
+      if (duplicate(out_.b.tool.has_value() || out_.b.tool_name.has_value(), start, "T")) return;
+      const std::string_view name = w.text.substr(1, w.text.size() >= 2 ? w.text.size() - 2 : 0);  // inside the quotes
+      if (name.empty()) return error(start, "T=\"\": a tool name is empty");
+      out_.b.tool_name = std::string(name);
       out_.has_content = true;
       return;
     }
@@ -238,7 +238,7 @@ class word_reader {
         return feed_or_speed(letter, v, start);
       case 'T':
         out_.has_content = true;
-        if (whole(letter, v, start) && !duplicate(b.tool.has_value() || out_.named_tool, start, "T"))
+        if (whole(letter, v, start) && !duplicate(b.tool.has_value() || b.tool_name.has_value(), start, "T"))
           b.tool = static_cast<long long>(v);
         return;
       case 'M':

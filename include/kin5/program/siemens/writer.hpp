@@ -166,8 +166,9 @@ class writer {
     }
     const bool change = !same_ && std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
     source_.apply(b);
-    if (b.tool) selected_tool_ = *b.tool;
-    if (change && !selected_tool_) fail(b, file, "tool change (M6) without a tool number");
+    if (b.tool) selected_tool_ = *b.tool, selected_name_.reset();
+    if (b.tool_name) selected_name_ = *b.tool_name, selected_tool_.reset();
+    if (change && !selected_tool_ && !selected_name_) fail(b, file, "tool change (M6) without a tool number");
     if (change && tcp_on_ && !(b.tcp && !*b.tcp)) out += "TRAFOOF\n";  // the transformation off for the change
     std::string line;
     settings(line, b, file);
@@ -203,6 +204,7 @@ class writer {
   bool ended_ = false;                       // the last block written had an M2 / M30 M function
   bool tcp_on_ = false;                      // TRAORI in effect after the last block
   std::optional<long long> selected_tool_;   // the last T written
+  std::optional<std::string> selected_name_;  // the last T="…" written
   bool inch_ = false;                        // G700 written: lengths and per-minute F in inches
   bool inverse_time_ = false;                // G93 written: F is not a length
   modal_state source_;                       // the source program's state after the block (another dialect's)
@@ -405,7 +407,19 @@ class writer {
     }
   }
 
-  /// F S T, D H T="name" (same dialect), M codes, the program end, the comment.
+  /// The name of the tool block `b` selects by name, as `T="…"` holds it: 1 to 32 characters,
+  /// none a quote or a control character (840D sl tool management: a tool name of up to 32
+  /// characters); else the block fails.
+  static std::string tool_name(const block& b, const std::string& file) {
+    const std::string& n = *b.tool_name;
+    const bool bad = std::any_of(n.begin(), n.end(), [](char c) { return c == '"' || static_cast<unsigned char>(c) < 0x20; });
+    if (n.empty() || n.size() > 32 || bad)
+      fail(b, file, (bad ? std::string("a tool name with a quote or a control character") : "tool name '" + n + "'") +
+                        " cannot be written in T=\"…\" (1 to 32 characters, no quote)");
+    return n;
+  }
+
+  /// F S T or T="name", D H (same dialect), M codes, the program end, the comment.
   void tail(std::string& line, const block& b, const std::string& file) {
     if (b.feed) {
       const int inch = inch_ && !inverse_time_ ? 1 : 0;  // in/min: one decimal more
@@ -416,6 +430,7 @@ class writer {
       number(line, "S", *b.spindle_rpm,
              rate_decimals(*b.spindle_rpm, options_.feed_decimals, options_.finest_feed_decimals, "spindle speed"));
     if (b.tool) detail::append_code(line, 'T', *b.tool);
+    if (b.tool_name) detail::append_word(line, "T=\"" + tool_name(b, file) + "\"");
     length_word(line, b, file);
     if (same_) {
       for (const auto& w : b.kept_words)

@@ -132,7 +132,7 @@ TEST_CASE("apt: what another dialect says that has no APT form is refused, never
   block named;
   named.where = {"in.nc", 2, 1};
   named.tool_name = "BALL_D8";
-  CHECK(written({start, named}) == why + "a tool by name (BALL_D8) has no APT form (LOADTL takes a number)");
+  CHECK(written({start, named}) == why + "a tool by name (\"BALL_D8\") has no APT form (LOADTL takes a number; --tool-map NAME=n gives one)");
   // G93 F2, then G94 and a feed move without F: FEDRAT/INVERS,2 would still be in effect
   block inverse = goto_block("in.nc", 2, 20, 0, 5);
   inverse.feed_mode = feed_unit::inverse_time, inverse.feed = 2;
@@ -149,9 +149,9 @@ TEST_CASE("apt: what another dialect says that has no APT form is refused, never
 TEST_CASE("apt: a kept word whose effect a comment would lose is refused; a harmless one is a $$ comment") {
   block lost;
   lost.where = {"in.mpf", 2, 1};
-  lost.kept_words = {"T=\"BALL\""};
+  lost.kept_words = {"D0"};
   const std::string text = written({lost}, id_of<siemens::dialect>());
-  CHECK(text.rfind("in.mpf:2: block cannot be written in APT: T=\"BALL\" (", 0) == 0);
+  CHECK(text.rfind("in.mpf:2: block cannot be written in APT: D0 (", 0) == 0);
   CHECK(text.find("a $$ comment would lose it") != std::string::npos);
   block plane;
   plane.where = {"in.nc", 2, 1};

@@ -224,8 +224,14 @@ item draw_item(modal& m) {
     }
     case 8: {  // TOOL CALL
       t = draw_case("TOOL") + gap() + draw_case("CALL");
-      const bool tool = *rc::gen::inRange(0, 4) != 0;
-      if (tool) b.tool = *rc::gen::inRange(0, 1000), t += gap() + std::to_string(*b.tool), b.m_codes = {6};  // a change
+      const int tool_kind = *rc::gen::inRange(0, 8);  // 0: no tool (S alone), 1: by name, else by number
+      const bool tool = tool_kind != 0;
+      if (tool_kind == 1) {  // a name of the characters a TNC takes (TNC 640 User's Manual §5.2)
+        b.tool_name = *rc::gen::element<std::string>("MILL_D10", "BALL-R3.5", "T#1", "DRILL$6&,%");
+        t += gap() + "\"" + *b.tool_name + "\"", b.m_codes = {6};
+      } else if (tool) {
+        b.tool = *rc::gen::inRange(0, 1000), t += gap() + std::to_string(*b.tool), b.m_codes = {6};  // a change
+      }
       const std::string axis = *rc::gen::element<std::string>("", "X", "Y", "Z", "Z");
       if (!axis.empty()) {
         t += gap() + draw_case(axis);

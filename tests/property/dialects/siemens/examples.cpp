@@ -68,7 +68,8 @@ TEST_CASE("siemens: a whole program with header, set-up, TRAORI and end", "[siem
   CHECK((bl[2].state.working_plane == arc_plane::xy && bl[2].state.distance == distance_mode::absolute));
   CHECK(bl[2].metric == true);
   CHECK(bl[2].feed_mode == feed_unit::per_minute);
-  CHECK(bl[3].kept_words == std::vector<std::string>{"T=\"MILL_6\"", "D1"});
+  CHECK(bl[3].kept_words == std::vector<std::string>{"D1"});
+  CHECK(bl[3].tool_name == "MILL_6");
   CHECK_FALSE(bl[3].tool);
   CHECK(bl[3].m_codes == std::vector<int>{6});
   CHECK(bl[4].spindle_rpm == 4000);

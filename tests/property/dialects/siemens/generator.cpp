@@ -219,7 +219,7 @@ line draw_line(state& s) {
       }
       if (coin()) add_kept(l, s, *rc::gen::elementOf(kept_pool));
       if (coin()) b.tool = *rc::gen::inRange(0, 1000), l.words.push_back(spell_address("T", static_cast<double>(*b.tool), 0));
-      else if (coin()) b.kept_words.push_back("T=\"Mill 10\""), l.words.push_back(draw_case("T") + "=\"Mill 10\"");
+      else if (coin()) b.tool_name = "Mill 10", l.words.push_back(draw_case("T") + "=\"Mill 10\"");
       if (coin()) b.spindle_rpm = draw_decimal(0, 240'000, 1), l.words.push_back(spell_address("S", *b.spindle_rpm, 1));
       if (coin()) b.m_codes.push_back(6), l.words.push_back(spell_code('M', 6));
       if (l.words.empty()) b.m_codes.push_back(5), l.words.push_back(spell_code('M', 5));
@@ -323,11 +323,9 @@ drawn_program draw_program() {
   std::string ending;
   for (int i = 0; i < n; ++i) {
     line l = draw_line(s);
-    // D, H and T="name" are read after the other kept words (the order the writer uses).
+    // D and H are read after the other kept words (the order the writer uses).
     auto& kept = l.expected.kept_words;
-    std::stable_partition(kept.begin(), kept.end(), [](const std::string& w) {
-      return !(w[0] == 'D' || w[0] == 'H' || w.rfind("T=", 0) == 0);
-    });
+    std::stable_partition(kept.begin(), kept.end(), [](const std::string& w) { return !(w[0] == 'D' || w[0] == 'H'); });
     const std::string text = l.verbatim ? *l.verbatim : join(l.words);
     if (ending != "\r" && *rc::gen::inRange(0, 8) == 0) d.text += "\n", ++line_number;  // an empty line, skipped
     ++line_number;
