@@ -72,6 +72,21 @@ run 0 refixtured54 translate --from sajo-12000p --to dmu-80p --work-offset-map G
 run 1 badmap match --from sajo-12000p --to dmu-80p --work-offset-map G54 --program "$out/flank54.mpf"
 grep -q "7 direct, 0 other-branch, 0 unreachable" "$out/refixtured.err" || report "refixtured: not every block direct"
 
+# The same program calling its tool by name, into LinuxCNC (numbers only): refused without
+# --tool-map; with it, the setup search's translations take the number, the printed command
+# repeats the map and translates the program.
+sed 's/^N10 G90 G17$/N10 G90 G17\nN11 T="MILL_D10" M6/' "$dir/flank.mpf" >"$out/flank_named.mpf"
+run 3 named match --from sajo-12000p --to xyzac-trt --program "$out/flank_named.mpf"
+has named "1 other errors stop a translation"
+run 3 named_mapped match --from sajo-12000p --to xyzac-trt --tool-map MILL_D10=3 --program "$out/flank_named.mpf"
+grep -q "other errors stop" "$out/named_mapped" && report "named_mapped: the mapped tool still stops it"
+rotation_named=$(sed -n 's/^kin5 translate .*--setup-rotation \([^ ]*\) --tool-map MILL_D10=3 .*/\1/p' "$out/named_mapped")
+[ -n "$rotation_named" ] || report "named_mapped: no command with --tool-map printed"
+run 0 named_translated translate --from sajo-12000p --to xyzac-trt --setup-rotation "$rotation_named" --tool-map MILL_D10=3 \
+  -o "$out/flank_named.ngc" "$out/flank_named.mpf"
+grep -q '^N11 T3 M6$' "$out/flank_named.ngc" || report "named_translated: no T3 M6"
+run 1 badtoolmap match --from sajo-12000p --to xyzac-trt --tool-map MILL_D10 --program "$out/flank_named.mpf"
+
 # The slides (G7) against the DMU 80P's linear travel: a workpiece frame 2 m above the machine's
 # origin puts Z beyond its [-600, 0] mm, and the setup search moves the part down.
 run 3 flank_placed match --from sajo-12000p --to dmu-80p --program "$dir/flank.mpf" --tool-length 100 --work-offset 0,0,-300

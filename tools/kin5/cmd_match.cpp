@@ -49,6 +49,7 @@ struct match_arguments {
   double tool_length_mm = 0.0;
   std::vector<double> work_offset_mm;  ///< X, Y, Z of the workpiece frame on the target, or empty
   std::vector<std::string> work_offset_map;  ///< --work-offset-map entries, as `translate` takes them
+  std::vector<std::string> tool_map;         ///< --tool-map entries, as `translate` takes them
 };
 
 run_inputs target_inputs(const match_arguments& a) {
@@ -105,17 +106,26 @@ int with_program(const machine_model& from, const machine_model& to, const match
     }
     map_text += (map_text.empty() ? "" : ",") + entries;
   }
+  tool_map tool_numbers;
+  for (const auto& entry : a.tool_map)
+    if (!tool_numbers.add(entry)) {
+      std::fprintf(stderr, "kin5 match: --tool-map: '%s' is not NAME=N (N a whole number of at most 8 digits), or maps a "
+                           "tool twice\n", entry.c_str());
+      return exit_codes::usage;
+    }
   const rigid_transform setup = default_setup(from.geometry.id, to.geometry.id);
-  auto report = reach::make_program_report(from, to, in.parsed, setup, true, target_inputs(a), placed(a), work_offsets);
+  auto report = reach::make_program_report(from, to, in.parsed, setup, true, target_inputs(a), placed(a), work_offsets,
+                                           tool_numbers);
   report.work_offset_map_option = map_text;
+  report.tool_map_options = a.tool_map;
   std::optional<reach::setup_search_result> search;
   std::optional<reach::chosen_setup> chosen;
   const bool runs = report.unreachable.empty() && !(placed(a) && report.linear_exceeded());
   if (!runs) {
     search = reach::search_setup(from, to, report.source_axes, setup.rotation);
     chosen = reach::choose_setup(from, to, in.parsed, *search, setup.translation_mm, target_inputs(a), placed(a),
-                                 work_offsets);
-    if (chosen) chosen->report.work_offset_map_option = map_text;
+                                 work_offsets, tool_numbers);
+    if (chosen) chosen->report.work_offset_map_option = map_text, chosen->report.tool_map_options = a.tool_map;
   }
   if (a.format == "svg") {
     const auto t = reach::make_pair_table(from, to, setup, true, false);
@@ -167,6 +177,9 @@ void add_match_command(CLI::App& app, int& exit_code) {
   sub->add_option("--work-offset-map", a->work_offset_map,
                   "Work offset selections of the program mapped to the target's, as translate takes them "
                   "(FROM=TO[,FROM=TO…])")
+      ->allow_extra_args(false);
+  sub->add_option("--tool-map", a->tool_map,
+                  "A tool the program calls by name as tool number N (NAME=N, once per tool), as translate takes it")
       ->allow_extra_args(false);
   sub->footer("Exit codes: 0 every block reachable (or no program), 1 bad arguments, 2 the program cannot be read,\n"
               "3 blocks unreachable under the pair's default setup, or with --work-offset a slide past its travel\n"

@@ -80,6 +80,7 @@ struct program_report {
   run_inputs target_inputs;                 ///< tool length and work offset on the target
   bool placed = false;                      ///< the work offset was given (else the machine's origin)
   std::string work_offset_map_option;       ///< `--work-offset-map` text repeated in a printed command, or empty
+  std::vector<std::string> tool_map_options;  ///< each `--tool-map` entry, repeated in a printed command
   std::vector<block_on_target> blocks;      ///< the motion blocks, as `source_axes`
   std::vector<slide_span> linear;           ///< X, Y, Z over the reachable blocks (none reachable: empty)
   /// Whether some slide leaves its travel.
@@ -161,7 +162,8 @@ inline void place_slides(const machine_model& to, program_report& out, const rot
 inline program_report make_program_report(const machine_model& from, const machine_model& to,
                                           const program::program& nc, const rigid_transform& setup,
                                           bool is_default_setup, const run_inputs& target_inputs = {},
-                                          bool placed = false, const work_offset_map& work_offsets = {}) {
+                                          bool placed = false, const work_offset_map& work_offsets = {},
+                                          const tool_map& tool_numbers = {}) {
   program_report out;
   out.target_inputs = target_inputs;
   out.placed = placed;
@@ -171,6 +173,7 @@ inline program_report make_program_report(const machine_model& from, const machi
   translate_options options;
   options.setup = setup;
   options.common.work_offsets = work_offsets;
+  options.common.tool_numbers = tool_numbers;
   const translation t = translate(from, to, nc, options);
   out.per_class = t.per_class;
   out.unreachable = detail::runs_of(t.reports);
@@ -234,10 +237,12 @@ inline std::optional<vec3> shift_into_travel(const machine_model& to, const prog
 inline std::optional<chosen_setup> choose_setup(const machine_model& from, const machine_model& to,
                                                 const program::program& nc, const setup_search_result& search,
                                                 const vec3& offset_mm, const run_inputs& target_inputs = {},
-                                                bool placed = false, const work_offset_map& work_offsets = {}) {
+                                                bool placed = false, const work_offset_map& work_offsets = {},
+                                                const tool_map& tool_numbers = {}) {
   chosen_setup out;
   auto report_with = [&](const mat3& rotation, const vec3& offset) {
-    return make_program_report(from, to, nc, {rotation, offset}, false, target_inputs, placed, work_offsets);
+    return make_program_report(from, to, nc, {rotation, offset}, false, target_inputs, placed, work_offsets,
+                               tool_numbers);
   };
   for (const auto& c : search.ranked) {
     vec3 offset = offset_mm;

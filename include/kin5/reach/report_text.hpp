@@ -71,6 +71,7 @@ inline std::string translate_command(const program_report& r, const mat3& rotati
     o += " --work-offset " + triple(r.target_inputs.work_offset.translation_mm);
   }
   if (!r.work_offset_map_option.empty()) o += " --work-offset-map " + r.work_offset_map_option;
+  for (const std::string& entry : r.tool_map_options) o += " --tool-map " + entry;
   return o + " " + (r.file.empty() ? "-" : r.file);
 }
 
