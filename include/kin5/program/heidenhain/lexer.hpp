@@ -68,6 +68,13 @@ inline std::size_t end_without_continuation(std::string_view text, std::size_t b
   }
 }
 
+/// `text` as the end of a line after `;`: without the `~`s it ends in (and the blanks around
+/// them), which would read as a continuation of the block onto the next line.
+inline std::string without_continuation(std::string text) {
+  text.resize(end_without_continuation(text));
+  return text;
+}
+
 namespace detail {
 
 /// The most decimals of a feed or spindle speed (F, S) the TNC reads (TNC 640 User's Manual

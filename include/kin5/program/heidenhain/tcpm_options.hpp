@@ -31,4 +31,9 @@ constexpr bool is_tcpm_option(std::string_view w) {
 static_assert(is_tcpm_option("AXIS POS") && !is_tcpm_option("AXIS SPAT"));
 static_assert(tcpm_options_text == "F TCP AXIS POS PATHCTRL AXIS", "the options in the order of tcpm_options");
 
+/// The whole switches as the writer spells them (`--tcp-word function-tcpm`).
+inline constexpr const char* tcpm = "FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS";
+inline constexpr const char* reset_tcpm = "FUNCTION RESET TCPM";
+static_assert(std::string_view(tcpm).substr(14) == tcpm_options_text, "FUNCTION TCPM and its options");
+
 }  // namespace kin5::program::heidenhain

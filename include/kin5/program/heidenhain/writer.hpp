@@ -37,6 +37,7 @@
 #include "../work_offsets.hpp"
 #include "lexer.hpp"
 #include "tcpm_options.hpp"
+#include "tool_name.hpp"
 #include "write_options.hpp"
 
 namespace kin5::program::heidenhain {
@@ -247,13 +248,6 @@ class writer {
     append_number(l, v, decimals, true);
   }
 
-  /// `text` as the end of a line after `;`: without the `~`s it ends in (and the blanks around
-  /// them), which would read as a continuation of the block onto the next line.
-  static std::string without_continuation(std::string text) {
-    text.resize(end_without_continuation(text));
-    return text;
-  }
-
   /// A passthrough block: its text (same dialect, without its block number) or a comment.
   void passthrough(std::string& out, const block& b) {
     std::string body = b.text;
@@ -434,23 +428,16 @@ class writer {
     add(l);
   }
 
-  /// `"MILL_D10"`: a tool name as TOOL CALL takes it, up to 32 of the characters A–Z 0–9
-  /// `# $ % & , - _ .` (TNC 640 User's Manual 1/2015 §5.2 "Tool number, tool name"); else the
-  /// block of another dialect fails (a name read from a TNC program is written back as read).
+  /// `"MILL_D10"`: a tool name as TOOL CALL takes it (tool_name.hpp); else the block of another
+  /// dialect fails (a name read from a TNC program is written back as read).
   std::string quoted_tool_name(const block& b, const std::string& name, std::size_t bi) const {
-    const bool fits = same_ || (!name.empty() && name.size() <= 32 && std::all_of(name.begin(), name.end(), [](char c) {
-      return (c >= 'A' && c <= 'Z') || is_digit(c) || std::string_view("#$%&,-_.").find(c) != std::string_view::npos;
-    }));
-    if (!fits)
+    if (!same_ && !is_tnc_tool_name(name))
       fail(b, bi, "tool name '" + (std::all_of(name.begin(), name.end(), [](char c) { return c >= 0x20 && c < 0x7f; })
                                        ? name : std::string("…")) +
                       "' cannot be written in TOOL CALL: a TNC tool name is up to 32 of A-Z 0-9 # $ % & , - _ .");
     return '"' + name + '"';
   }
 
-  static constexpr const char* tcpm = "FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS";
-  static constexpr const char* reset_tcpm = "FUNCTION RESET TCPM";
-  static_assert(std::string_view(tcpm).substr(14) == tcpm_options_text, "FUNCTION TCPM and its options");
   bool function_tcpm() const { return options_.tcp == tcp_word::function_tcpm; }
 
   /// ` M3 M8 M91 M128`: the block's M functions, M91 for machine coordinates, M128/M129 for TCP
