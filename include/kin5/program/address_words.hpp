@@ -29,6 +29,7 @@
 #include "block.hpp"
 #include "dialect.hpp"
 #include "lexing.hpp"
+#include "parameters.hpp"
 #include "resolution.hpp"
 #include "text.hpp"
 
@@ -235,10 +236,7 @@ inline std::size_t named_at(std::string_view line, std::size_t i, std::string& n
   if (i + 1 < line.size() && line[i] == '#' && line[i + 1] == '<') {
     const std::size_t close = line.find('>', i + 2);
     if (close == std::string_view::npos) return 0;
-    name = "#<";
-    for (std::size_t k = i + 2; k < close; ++k)
-      if (!is_space(line[k])) name += static_cast<char>(line[k] >= 'A' && line[k] <= 'Z' ? line[k] - 'A' + 'a' : line[k]);
-    name += '>';
+    name = named_parameter(line.substr(i + 2, close - i - 2));
     return close + 1;
   }
   if (i >= line.size() || !(is_letter(line[i]) || line[i] == '_')) return 0;

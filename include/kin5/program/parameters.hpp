@@ -28,7 +28,19 @@
 #include <utility>
 #include <vector>
 
+#include "text.hpp"
+
 namespace kin5::program {
+
+/// A named parameter's name as LinuxCNC reads it: lower case, blanks removed, between
+/// `#<` and `>` (`#<Feed Cut>` is `#<feedcut>`: LinuxCNC User Manual, "G-code Overview", "Named
+/// Parameters"); `written` is what stands between them.
+inline std::string named_parameter(std::string_view written) {
+  std::string name = "#<";
+  for (char c : written)
+    if (!is_space(c)) name += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  return name + ">";
+}
 
 /// A number assigned to a parameter: its value and its text as written (`+5000.50`).
 struct parameter_literal {

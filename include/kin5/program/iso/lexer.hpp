@@ -149,16 +149,6 @@ inline lex_problem stray(std::string_view s, std::size_t i, bool first_word) {
 
 }  // namespace detail
 
-/// A named parameter's name as LinuxCNC reads it: lower case, blanks and tabs removed, between
-/// `#<` and `>` (`#<Feed Cut>` is `#<feedcut>`: LinuxCNC User Manual, "G-code Overview", "Named
-/// Parameters").
-inline std::string named_parameter(std::string_view written) {
-  std::string name = "#<";
-  for (char c : written)
-    if (!is_space(c)) name += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-  return name + ">";
-}
-
 /// Splits `s` from `i` to `end` into `words`, comments into `comment`; the first problem stops it.
 /// `named`: the dialect has named parameters (`#<feed>`).
 inline std::optional<lex_problem> lex_line(std::string_view s, std::size_t i, std::size_t end, std::vector<word>& words,
