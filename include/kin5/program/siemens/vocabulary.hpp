@@ -110,8 +110,8 @@ inline bool is_cycle800_reset(std::string_view args) {
 
 /// Whether a line kin5 does not read is known to change nothing, so that it may pass through (a
 /// comment in another dialect): `%` lines, `DEF` declarations, `MSG(…)`, `WORKPIECE(…)` (the
-/// simulation's blank), `STOPRE`, a label `NAME:`, one assignment of a number to an R parameter
-/// or a `_` variable (`R1=5`, `_Z_HOME=610.`: a word that uses it is refused where it is used).
+/// simulation's blank), `STOPRE`, a label `NAME:`. A line of assignments of numbers (`R1=5`,
+/// `_Z_HOME=610.`) passes too, said by parameters.hpp, which reads them (`only_assignments`).
 /// Any other line kin5 does not read is refused.
 inline bool changes_nothing(std::string_view line) {
   std::size_t k = lexing::skip_blanks(line, 0);
@@ -131,14 +131,7 @@ inline bool changes_nothing(std::string_view line) {
   if (t.empty() || t == "STOPRE" || t.rfind("DEF ", 0) == 0 || one_call("MSG(") || one_call("WORKPIECE(")) return true;
   std::size_t e = 0;
   while (e < t.size() && is_ident_char(t[e])) ++e;
-  if (e > 0 && e + 1 == t.size() && t[e] == ':' && !is_digit(t[0])) return true;  // a label
-  const bool r_parameter = e > 1 && t[0] == 'R' && t.substr(1, e - 1).find_first_not_of("0123456789") == std::string_view::npos;
-  if (!(r_parameter || (e > 1 && t[0] == '_'))) return false;
-  std::string_view value = lexing::trim(t.substr(e));
-  if (value.empty() || value[0] != '=') return false;
-  value = lexing::trim(value.substr(1));
-  const parsed_number n = read_number(value);
-  return n.error == number_error::none && n.length > 0 && n.length == value.size();
+  return e > 0 && e + 1 == t.size() && t[e] == ':' && !is_digit(t[0]);  // a label
 }
 
 }  // namespace kin5::program::siemens::detail
