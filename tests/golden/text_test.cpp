@@ -76,7 +76,7 @@ TEST_CASE("motion without TCP is an error naming the line, with the rotary messa
   CHECK(t.blocks_written == t.blocks_read - 2);  // accounted for: written or an error
 }
 
-TEST_CASE("machine-coordinate moves are refused at their block; the rest is still checked") {
+TEST_CASE("machine-coordinate moves are refused at their block, the rest is still checked") {
   // SUPA Z0 is the SAJO's own Z axis position: it means nothing on the DMU 80P.
   const auto in = siemens::read(
       "; start\nG0 SUPA Z0\nTRAORI\nG0 X0 Y0 Z50 A-45 B30\nM8\nG1 Z10 F200\nSUPA Z0\nM30\n", "mc.mpf");

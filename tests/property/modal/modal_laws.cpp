@@ -198,7 +198,7 @@ TEST_CASE("compensation switched on without a register uses the active tool's ow
   CHECK(run({g41_d3, g40}).radius_compensation == cutter_side::off);
 }
 
-TEST_CASE("flood and mist coolant are independent; M9 switches both off", "[modal]") {
+TEST_CASE("flood and mist coolant are independent, M9 switches both off", "[modal]") {
   const auto m7 = with([](block& b) { b.state.coolant_mist = true; });
   const auto m8 = with([](block& b) { b.state.coolant_flood = true; });
   const auto m9 = with([](block& b) { b.state.coolant_flood = false, b.state.coolant_mist = false; });

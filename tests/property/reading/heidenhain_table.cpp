@@ -77,7 +77,7 @@ TEST_CASE("heidenhain: `~` lines before a passthrough's text stay when no number
   CHECK(written.find("1 ~\n~\nBLK FORM 0.1 Z X+0 Y+0 Z-40\n") != std::string::npos);  // after BEGIN PGM
 }
 
-TEST_CASE("heidenhain: cycle parameters after `;comment~` stay in their cycle's block") {
+TEST_CASE("heidenhain: cycle parameters after `,comment~` stay in their cycle's block") {
   // The cycle itself is refused (tests/property/dialects/heidenhain/errors.txt), once, at its
   // first line: its parameter lines are part of its block, not blocks of their own.
   const std::string text =

@@ -63,7 +63,7 @@ constexpr dialect nc_dialects[] = {program::id_of<program::siemens::dialect>(), 
 
 }  // namespace
 
-TEST_CASE("the output keeps the source's decimals; finer than the output controller reads is refused") {
+TEST_CASE("the output keeps the source's decimals, finer than the output controller reads is refused") {
   rc::prop("X Y Z with 0 to 7 decimals, sajo-12000p to itself, every NC dialect", [] {
     const int decimals = *rc::gen::inRange(0, 8);
     const dialect out = *rc::gen::elementOf(std::vector<dialect>(std::begin(nc_dialects), std::end(nc_dialects)));

@@ -20,7 +20,7 @@ TEST_CASE("apt: reading goes on after an error and keeps every statement") {
   CHECK(r.parsed.blocks[1].axes.x_mm == 0.0);
 }
 
-TEST_CASE("apt: LOAD/TOOL and LOADTL are a tool change, SELECT/TOOL a selection; what only describes passes through") {
+TEST_CASE("apt: LOAD/TOOL and LOADTL are a tool change, SELECT/TOOL a selection, what only describes passes through") {
   const read_result r = apt::read("LOAD/TOOL,12\nloadtl / 3\nSELECT/TOOL,6\nCUTTER/6,0,3\nmultax/ on\n", "t.cls");
   REQUIRE(r.ok());
   const auto& b = r.parsed.blocks;
@@ -146,7 +146,7 @@ TEST_CASE("apt: what another dialect says that has no APT form is refused, never
         "GOTO/10,0,5\nFEDRAT/INVERS,2\nGOTO/20,0,5\nFEDRAT/MMPM,300\nGOTO/30,0,5\n");
 }
 
-TEST_CASE("apt: a kept word whose effect a comment would lose is refused; a harmless one is a $$ comment") {
+TEST_CASE("apt: a kept word whose effect a comment would lose is refused, a harmless one is a $$ comment") {
   block lost;
   lost.where = {"in.mpf", 2, 1};
   lost.kept_words = {"D0"};

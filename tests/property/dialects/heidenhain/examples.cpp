@@ -90,12 +90,12 @@ TEST_CASE("heidenhain: a program in NX and hand-edit style") {
   CHECK((b[24].program_end == "100" && b[24].metric == true));
 }
 
-TEST_CASE("heidenhain: a tool call by name is read; TOOL CALL's axis sets the plane") {
+TEST_CASE("heidenhain: a tool call by name is read, TOOL CALL's axis sets the plane") {
   const read_result r = heidenhain::read(
       "TOOL CALL \"MILL_D10\" Z S5000 DL+0.1\nTOOL CALL 5 Y\nCR X+1 Z+0 R+5 DR+\nTOOL CALL \"\" Z\n", "n.h");
   REQUIRE(r.errors.size() == 2);
   CHECK(r.errors[0].to_string() ==
-        "n.h:1:26: error: DL+0.1: a tool oversize in TOOL CALL is not supported yet (the path would move by it)");
+        "n.h:1:30: error: DL+0.1: a tool oversize in TOOL CALL is not supported yet (the path would move by it)");
   CHECK(r.errors[1].to_string() ==
         "n.h:4:1: error: TOOL CALL: only TOOL CALL n or \"name\" with an axis, S, F, DL and DR is read (a tool called "
         "with other words is not supported)");
@@ -191,7 +191,7 @@ TEST_CASE("heidenhain: blocks from another dialect are written, and what has no 
         "8 END PGM O1234_BRACKET MM\n");
 }
 
-TEST_CASE("heidenhain: an L without coordinates is not written; its F goes to the next move") {
+TEST_CASE("heidenhain: an L without coordinates is not written, its F goes to the next move") {
   const auto r = heidenhain::read("0 L X+1 Y+2 Z+3 FMAX\n1 L F800 M3\n2 L X+4\n3 L X+5\n4 L FMAX\n5 L Z+6\n", "t.h");
   REQUIRE(r.ok());
   CHECK(heidenhain::write(r.parsed) ==

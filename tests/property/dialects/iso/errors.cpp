@@ -28,7 +28,7 @@ TEST_CASE("iso: harmless words and resets are not errors") {
   CHECK(!r.parsed.blocks[0].moves());
 }
 
-TEST_CASE("iso: G4 X1.5 dwells; its X is no position") {
+TEST_CASE("iso: G4 X1.5 dwells, its X is no position") {
   // Fanuc: G04 dwell, the time in X (seconds, with a decimal point) or P (milliseconds).
   const read_result dwell = iso::read("G4 X1.5\nN7 G04 P250 (wait)\nG4 X0\n", "t.nc");
   REQUIRE(dwell.ok());

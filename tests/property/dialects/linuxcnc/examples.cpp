@@ -62,7 +62,7 @@ TEST_CASE("linuxcnc: a trt program: M428/M429, G43 without H, G59.1, G93, G4 P i
   CHECK(b[17].program_end == "M2");
 }
 
-TEST_CASE("linuxcnc: G43 H n holds the loaded tool n; M6 in a line runs before its G43") {
+TEST_CASE("linuxcnc: G43 H n holds the loaded tool n, M6 in a line runs before its G43") {
   const read_result ok = linuxcnc::read("T3 M6 G43 H3\nM428\nG1 X1 A2 F100\n", "l.ngc");
   CHECK(ok.errors.empty());
   CHECK(ok.parsed.blocks[0].state.length_register == 3);
