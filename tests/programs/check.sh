@@ -79,9 +79,22 @@ case $name in
   iso/blade_inch_g93.nc)
     expect 2 "5:5: error: G54.1 P3: a work offset of iso" translate --from ac-trunnion --from-dialect iso --to dmu-80p
     expect 0 - translate --from ac-trunnion --from-dialect iso --to sajo-12000p --to-dialect iso
-    has 'G20$' '^N20 G54\.1 P3$' '^N90 G93$' ;;
-  iso/haas_g234.nc)
-    expect 2 "9:5: error: unknown word 'G234'" translate --from dmu-50v --from-dialect iso --to dmu-80p ;;
+    has 'G20$' '^N20 G54\.1 P3$' '^N90 G93$'
+    # Into Haas: G154 P3 (the same additional offset), TCPC G234 H9, still inch.
+    expect 0 - translate --from ac-trunnion --from-dialect iso --to ac-trunnion --to-dialect haas
+    has '^N10 G90 G17 G40 G49 G94 G20$' '^N20 G154 P3$' '^N60 G234 H9$' '^N90 G93$' ;;
+  haas/umc_inch_g234.nc)
+    # Read as Haas by its G234 (not as ISO, where G234 is an unknown word).
+    expect 2 "9:5: error: unknown word 'G234'" translate --from bc-trunnion --from-dialect iso --to dmu-80p
+    expect 2 "5:5: error: G55: a work offset of haas" translate --from bc-trunnion --to dmu-80p
+    expect 2 "18:1: error: a move in machine coordinates" translate --from bc-trunnion --to dmu-80p --work-offset-map G55=2 ;;
+  haas/hub_g154.nc)
+    expect 2 "7:5: error: G154 P5: a work offset of haas" translate --from bc-trunnion --to dmu-80p
+    expect 0 - translate --from bc-trunnion --to dmu-80p --work-offset-map G154P5=5
+    has 'Q339=\+5' '^6 TOOL CALL 3 Z$' ' FMAX M128$' '^13 L X\+22.5 .* F315.2$' 'CYCL DEF 9.1 DWELL 0.5$'
+    # Into ISO the same selection is G54.1 P5, TCPC G43.4 H3, the dwell G4 X seconds.
+    expect 0 - translate --from bc-trunnion --to bc-trunnion --to-dialect iso
+    has '^N30 G54.1 P5$' '^N70 G0 G43.4 H3 X20\. ' '^N100 G93 .* F120\.$' '^N140 G4 X0.5$' '^N160 G49$' ;;
   iso/integers_refused.nc)
     expect 2 "8:4: error: X10 without a decimal point" \
       translate --from ac-trunnion --from-dialect iso --to dmu-80p --work-offset-map G54=1 ;;

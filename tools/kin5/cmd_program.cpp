@@ -593,12 +593,16 @@ bool parse_tcp_word(std::string_view command, const std::string& word, job& j) {
 }
 
 /// The `O` number of --program-number into `j.writer_choices`; false, with the reason printed,
-/// when the output dialect is not ISO (the only one numbering its programs).
+/// when the output dialect is not ISO or Haas (the ones numbering their programs).
 bool parse_program_number(std::string_view command, std::optional<long long> number, job& j) {
   if (!number) return true;
+  if (j.output_dialect == prog::id_of<prog::haas::dialect>()) {
+    j.writer_choices.of<prog::haas::dialect>().program_number = *number;
+    return true;
+  }
   if (j.output_dialect != prog::id_of<prog::iso::dialect>()) {
-    std::cerr << "kin5 " << command << ": --program-number numbers an ISO program (its O line); the output dialect is "
-              << prog::name(j.output_dialect) << '\n';
+    std::cerr << "kin5 " << command << ": --program-number numbers an ISO or Haas program (its O line); the output "
+              << "dialect is " << prog::name(j.output_dialect) << '\n';
     return false;
   }
   j.writer_choices.of<prog::iso::dialect>().program_number = *number;

@@ -35,6 +35,7 @@
 #include "apt/dialect.hpp"
 #include "block.hpp"
 #include "dialect_id.hpp"
+#include "haas/dialect.hpp"
 #include "heidenhain/dialect.hpp"
 #include "iso/dialect.hpp"
 #include "linuxcnc/dialect.hpp"
@@ -61,7 +62,8 @@ concept nc_dialect = requires(std::string_view text, const std::string& file, re
 };
 
 /// Every dialect, in the order `kin5 --help` lists them.
-using dialects = std::tuple<siemens::dialect, heidenhain::dialect, iso::dialect, linuxcnc::dialect, apt::dialect>;
+using dialects = std::tuple<siemens::dialect, heidenhain::dialect, iso::dialect, linuxcnc::dialect, haas::dialect,
+                            apt::dialect>;
 
 /// How many dialects there are.
 inline constexpr std::size_t dialect_count = std::tuple_size_v<dialects>;

@@ -15,6 +15,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 #include "dwell.hpp"
@@ -65,6 +66,13 @@ struct capabilities {
     for (const work_offset_names& r : work_offsets)
       if (r.holds(w)) return true;
     return false;
+  }
+
+  /// Work offset `w` as this dialect spells it ("G154 P7" for Haas), else as `spelling` does.
+  std::string spelled(const work_offset& w) const {
+    for (const work_offset_names& r : work_offsets)
+      if (r.holds(w) && !r.code.empty()) return std::string(r.code) + std::to_string(w.number);
+    return spelling(w);
   }
 };
 

@@ -22,11 +22,13 @@
 namespace kin5::program {
 
 /// Work offsets a dialect selects by name: the numbers `first` … `last` of one family (an empty
-/// range by default).
+/// range by default), and the dialect's own code for them when it is not the one `spelling`
+/// gives (`code` "G154 P": Haas writes the extended offset 7 `G154 P7`, not `G54.1 P7`).
 struct work_offset_names {
   work_offset_family family = work_offset_family::g54;
   int first = 1;
   int last = 0;
+  std::string_view code{};  ///< written before the number; empty: `spelling`'s
   constexpr bool holds(const work_offset& w) const { return w.family == family && w.number >= first && w.number <= last; }
 };
 
@@ -46,7 +48,7 @@ inline std::string spelling(const work_offset& w) {
 }
 
 /// The work offset `text` names, as `--work-offset-map` takes it (upper or lower case, no
-/// blanks needed): `G54` … `G59`, `G59.1` … `G59.3`, `G54.1P7` (or `G54.1 P7`), `G500`,
+/// blanks needed): `G54` … `G59`, `G59.1` … `G59.3`, `G54.1P7` (or `G54.1 P7`, or Haas's `G154P7`), `G500`,
 /// `G505` … `G599`, or a bare number, a Heidenhain preset row. Empty when it names none.
 inline std::optional<work_offset> parse_work_offset(std::string_view text) {
   std::string s;
@@ -60,8 +62,8 @@ inline std::optional<work_offset> parse_work_offset(std::string_view text) {
     return v;
   };
   if (const auto n = whole(s)) return work_offset{work_offset_family::preset, *n};
-  if (s.rfind("G54.1P", 0) == 0) {
-    const auto n = whole(std::string_view(s).substr(6));
+  if (s.rfind("G54.1P", 0) == 0 || s.rfind("G154P", 0) == 0) {  // Fanuc's spelling, Haas's
+    const auto n = whole(std::string_view(s).substr(s[3] == '.' ? 6 : 5));
     if (n && *n >= 1) return work_offset{work_offset_family::extended, *n};
     return std::nullopt;
   }

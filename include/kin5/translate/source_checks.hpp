@@ -229,12 +229,13 @@ inline bool check_work_offset(const program::block& b, const source_context& ctx
   const work_offset_translation t = work_offset_into(w, ctx.language, ctx.output, ctx.work_offsets ? *ctx.work_offsets : none);
   if (t.refusal.empty()) return true;
   if (ctx.out) {
+    const std::string source_name = program::capabilities_of(ctx.language).spelled(w);  // "G154 P7", "G55"
     const double g = w.family == program::work_offset_family::g54        ? 53.0 + w.number
-                     : w.family == program::work_offset_family::extended ? 54.1
+                     : w.family == program::work_offset_family::extended ? std::strtod(source_name.c_str() + 1, nullptr)
                                                                          : (w.number == 0 ? 500.0 : w.number);
     const auto located = w.family == program::work_offset_family::preset ? std::nullopt : locate_word(b, 'G', ctx.language, g);
-    ctx.out->errors.push_back({located ? located->where : b.where, t.refusal, program::spelling(w),
-                               "--work-offset-map " + map_key(w) + "="});
+    ctx.out->errors.push_back({located ? located->where : b.where, t.refusal, source_name,
+                               "--work-offset-map " + map_key(w, ctx.language) + "="});
   }
   return false;
 }

@@ -71,23 +71,25 @@ struct work_offset_translation {
   std::string refusal;  ///< empty when it can be written
 };
 
-/// "G54 … G59, G54.1 P1 … G54.1 P300": the selections dialect `d` writes.
+/// "G54 … G59, G54.1 P1 … G54.1 P300": the selections dialect `d` writes, in its spelling.
 inline std::string work_offsets_written(program::dialect d) {
   std::string s;
-  for (const program::work_offset_names& r : program::capabilities_of(d).work_offsets) {
+  const program::capabilities can = program::capabilities_of(d);
+  for (const program::work_offset_names& r : can.work_offsets) {
     if (r.first > r.last) continue;
     s += s.empty() ? "" : ", ";
-    s += program::spelling({r.family, r.first});
-    if (r.last != r.first) s += " … " + program::spelling({r.family, r.last});
+    s += can.spelled({r.family, r.first});
+    if (r.last != r.first) s += " … " + can.spelled({r.family, r.last});
   }
   return s;
 }
 
-/// `w` as `--work-offset-map` takes it: "G54", "G54.1P7", "7" (a preset).
-inline std::string map_key(const program::work_offset& w) {
+/// `w` as `--work-offset-map` takes it: "G54", "G54.1P7", "7" (a preset); in the spelling of
+/// dialect `d` when given ("G154P7" for Haas).
+inline std::string map_key(const program::work_offset& w, std::optional<program::dialect> d = std::nullopt) {
   if (w.family == program::work_offset_family::preset) return std::to_string(w.number);
   std::string s;
-  for (char c : program::spelling(w))
+  for (char c : d ? program::capabilities_of(*d).spelled(w) : program::spelling(w))
     if (c != ' ') s.push_back(c);
   return s;
 }
@@ -97,10 +99,10 @@ inline std::string map_key(const program::work_offset& w) {
 inline work_offset_translation work_offset_into(const program::work_offset& w, program::dialect from,
                                                 program::dialect to, const work_offset_map& map) {
   const program::capabilities can = program::capabilities_of(to);
-  const std::string name = program::spelling(w);
+  const std::string name = program::capabilities_of(from).spelled(w);
   if (const auto mapped = map.target_of(w)) {
     if (!*mapped || can.writes(**mapped)) return {*mapped, {}};
-    return {std::nullopt, name + ": --work-offset-map gives " + program::spelling(**mapped) + ", which " +
+    return {std::nullopt, name + ": --work-offset-map gives " + can.spelled(**mapped) + ", which " +
                               std::string(program::name(to)) + " does not select"};
   }
   if (can.writes(w)) return {w, {}};
@@ -108,7 +110,7 @@ inline work_offset_translation work_offset_into(const program::work_offset& w, p
   return {std::nullopt,
           name + ": a work offset of " + std::string(program::name(from)) + " with no certain equivalent in " +
               std::string(program::name(to)) + (written.empty() ? " (it selects none)" : " (it selects " + written + ")") +
-              "; --work-offset-map " + map_key(w) + "=... names the target's, or drops it with nothing after ="};
+              "; --work-offset-map " + map_key(w, from) + "=... names the target's, or drops it with nothing after ="};
 }
 
 }  // namespace kin5

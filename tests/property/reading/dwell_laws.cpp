@@ -1,8 +1,9 @@
 // Dwells between every ordered pair of dialects. The table, written here independently of the
 // code (docs/dialects/*.md): every dialect reads and writes a dwell of seconds, in a block of its
-// own — ISO `G4 X…`/`G4 P…` (ms), LinuxCNC `G4 P…`, Siemens `G4 F…`, Heidenhain Cycle 9, APT
-// `DELAY/…` — and each controller takes only some durations: ISO whole ms up to 9999.999 s,
-// Heidenhain whole ms up to 3600 s, the others any to 6 decimals.
+// own — ISO `G4 X…`/`G4 P…` (ms), Haas `G4 P…` (seconds with a point, ms without), LinuxCNC
+// `G4 P…`, Siemens `G4 F…`, Heidenhain Cycle 9, APT `DELAY/…` — and each controller takes only
+// some durations: ISO and Haas whole ms up to 9999.999 s, Heidenhain whole ms up to 3600 s, the
+// others any to 6 decimals.
 //
 // 1. writers and readers: a program of moves and dwells of random durations, written in the
 //    source dialect and read back there, then written in the target dialect and read back by the
@@ -40,7 +41,7 @@ using kin5::test::pairs;
 
 /// The longest dwell and the decimals of a second each controller takes (the table above).
 dwell_input documented(dialect d) {
-  if (d == id_of<iso::dialect>()) return {3, 9999.999};
+  if (d == id_of<iso::dialect>() || d == id_of<haas::dialect>()) return {3, 9999.999};
   if (d == id_of<heidenhain::dialect>()) return {3, 3600.0};
   return {6, 1e9};
 }

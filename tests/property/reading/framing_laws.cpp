@@ -65,7 +65,7 @@ struct frame {
 
 frame frame_of(dialect d) {
   const std::string n(name(d));
-  if (n == "iso") return {"%", "O[0-9]{4}( \\(.*\\))?", "%", {{"%", 2}, {"O[0-9]+.*", 1}, {".*\\(%\\).*", 0}}};
+  if (n == "iso" || n == "haas") return {"%", "O[0-9]{4}( \\(.*\\))?", "%", {{"%", 2}, {"O[0-9]+.*", 1}, {".*\\(%\\).*", 0}}};
   if (n == "linuxcnc") return {"%", "", "%", {{"%", 2}, {".*\\(%\\).*", 0}}};
   if (n == "siemens")
     return {"%_N_[A-Za-z_][A-Za-z][A-Za-z0-9_]{0,22}_MPF", ";\\$PATH=/_N_MPF_DIR", "",
@@ -132,6 +132,8 @@ TEST_CASE("framing: a block with an effect after the source's end is refused by 
        "src:6: block after the program end (line 4): the source control never runs it"},
       {"heidenhain", "0 BEGIN PGM P MM\n1 L X+1 Y+2 Z+3 F100 M30\n2 ;done\n3 L Z+50 FMAX\n4 END PGM P MM\n",
        "src:4: block after the program end (line 2): the source control never runs it"},
+      {"haas", "%\nO01000\nG1 X1. Y2. Z3. F100.\nM30\nG0 Z50.\n%\n",
+       "src:5: block after the program end (line 4): the source control never runs it"},
       {"linuxcnc", "%\nG1 X1 Y2 Z3 F100\nM2\nG0 Z50\n%\n",
        "src:4: block after the program end (line 3): the source control never runs it"},
       {"apt", "PARTNO P\nFEDRAT/MMPM,100\nGOTO/1,2,3\nFINI\nGOTO/1,2,50\n",

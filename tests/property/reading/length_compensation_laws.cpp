@@ -38,9 +38,11 @@ using program_text = kin5::program::program;
 namespace {
 
 const dialect iso_d = id_of<iso::dialect>(), linuxcnc_d = id_of<linuxcnc::dialect>(), siemens_d = id_of<siemens::dialect>(),
-              heidenhain_d = id_of<heidenhain::dialect>(), apt_d = id_of<apt::dialect>();
+              heidenhain_d = id_of<heidenhain::dialect>(), apt_d = id_of<apt::dialect>(), haas_d = id_of<haas::dialect>();
+/// ISO and Haas, whose readers share the Fanuc grammar: G43 H n, G41 D n.
+bool iso_like(dialect d) { return d == iso_d || d == haas_d; }
 const std::vector<dialect> every_dialect = kin5::test::all_dialects();
-const std::vector<dialect> register_dialects = {iso_d, linuxcnc_d};  // their readers give G43 H
+const std::vector<dialect> register_dialects = {iso_d, linuxcnc_d, haas_d};  // their readers give G43 H
 
 /// Whether dialect `d` applies the loaded tool's length whatever the program says (the table).
 bool length_with_tool(dialect d) { return d == heidenhain_d || d == apt_d; }
@@ -106,16 +108,16 @@ block tool_change(long long tool) {
 block length_on(dialect from, long long tool, bool tracking) {
   block b;
   b.state.length_compensation = true;
-  if (from == iso_d || *rc::gen::inRange(0, 3) != 0)
+  if (iso_like(from) || *rc::gen::inRange(0, 3) != 0)
     b.state.length_register = *rc::gen::element(tool, tool, *rc::gen::inRange<long long>(1, 4));
-  if (tracking && from == iso_d) b.tcp = true;
+  if (tracking && iso_like(from)) b.tcp = true;
   return b;
 }
 
 block length_off(dialect from, bool tracking) {
   block b;
   b.state.length_compensation = false;
-  if (tracking && from == iso_d) b.tcp = false;
+  if (tracking && iso_like(from)) b.tcp = false;
   return b;
 }
 

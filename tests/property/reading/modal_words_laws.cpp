@@ -41,7 +41,8 @@ namespace {
 
 const std::vector<dialect> every_dialect = kin5::test::all_dialects();
 /// The dialects whose readers give these state words.
-const std::vector<dialect> reading_dialects = {id_of<iso::dialect>(), id_of<linuxcnc::dialect>(), id_of<siemens::dialect>()};
+const std::vector<dialect> reading_dialects = {id_of<iso::dialect>(), id_of<linuxcnc::dialect>(), id_of<siemens::dialect>(),
+                                              id_of<haas::dialect>()};
 
 /// Whether dialect `d` writes the working plane as a word (the documented table).
 bool writes_plane(dialect d) { return d != id_of<heidenhain::dialect>() && d != id_of<apt::dialect>(); }
@@ -208,6 +209,7 @@ TEST_CASE("modal words: each reader's spellings, and G91 left in effect refused 
       {iso, "G91 G28 Z0.\nG0 X1.\n", std::nullopt, std::nullopt, std::nullopt,
        "t:2:1: error: incremental positioning (G91 of line 1, not cancelled by G90) is not supported"},
       {iso, "G91 G0 X1.\n", std::nullopt, std::nullopt, std::nullopt, "t:1:1: error: incremental positioning (G91) is not supported"},
+      {id_of<haas::dialect>(), "G90 G18 G40\n", arc_plane::zx, distance_mode::absolute, cutter_side::off, ""},
       {lc, "G19 G90 G40\n", arc_plane::yz, distance_mode::absolute, cutter_side::off, ""},
       {lc, "G91 G28 Z0\nG1 X1 F100\n", std::nullopt, std::nullopt, std::nullopt,
        "t:2:1: error: incremental positioning (G91 of line 1, not cancelled by G90) is not supported"},

@@ -25,7 +25,7 @@ using program_text = kin5::program::program;
 namespace {
 
 const std::vector<dialect> nc_dialects = {id_of<iso::dialect>(), id_of<linuxcnc::dialect>(), id_of<siemens::dialect>(),
-                                          id_of<heidenhain::dialect>()};
+                                          id_of<heidenhain::dialect>(), id_of<haas::dialect>()};
 
 /// What the machine does during one move, and the stops just before it.
 struct at_move {

@@ -37,7 +37,7 @@ using family = work_offset_family;
 const std::vector<dialect> every_dialect = kin5::test::all_dialects();
 /// The dialects that select work offsets (CL data select none).
 const std::vector<dialect> writing_dialects = {id_of<siemens::dialect>(), id_of<heidenhain::dialect>(), id_of<iso::dialect>(),
-                                               id_of<linuxcnc::dialect>()};
+                                               id_of<linuxcnc::dialect>(), id_of<haas::dialect>()};
 
 /// What the reader of `d` gives and its writer writes (the documented table).
 bool selects(dialect d, const work_offset& w) {
@@ -49,6 +49,9 @@ bool selects(dialect d, const work_offset& w) {
            (w.family == family::siemens && (w.number == 0 || (w.number >= 505 && w.number <= 599)));
   if (d == id_of<heidenhain::dialect>()) return w.family == family::preset && w.number >= 0 && w.number <= 65535;
   if (d == id_of<linuxcnc::dialect>()) return w.family == family::g54 && w.number >= 1 && w.number <= 9;  // G54 … G59.3
+  if (d == id_of<haas::dialect>())  // G54 … G59, G154 P1 … P99
+    return (w.family == family::g54 && w.number >= 1 && w.number <= 6) ||
+           (w.family == family::extended && w.number >= 1 && w.number <= 99);
   return false;
 }
 
@@ -77,6 +80,10 @@ work_offset selection_of(dialect d) {
     }
   }
   if (d == id_of<linuxcnc::dialect>()) return {family::g54, *rc::gen::inRange(1, 10)};
+  if (d == id_of<haas::dialect>()) {
+    if (*rc::gen::inRange(0, 2)) return {family::extended, *rc::gen::inRange(1, 100)};
+    return {family::g54, *rc::gen::inRange(1, 7)};
+  }
   return {family::preset, *rc::gen::inRange(0, 65536)};
 }
 
@@ -110,15 +117,19 @@ std::vector<std::optional<work_offset>> trace_of(const std::vector<block>& block
   return t;
 }
 
-/// Whether `d` names its first settable zero offsets G54, G55, … (ISO, LinuxCNC, Siemens).
+/// Whether `d` names its first settable zero offsets G54, G55, … (ISO, LinuxCNC, Siemens, Haas).
 bool g_code_offsets(dialect d) {
-  return d == id_of<iso::dialect>() || d == id_of<siemens::dialect>() || d == id_of<linuxcnc::dialect>();
+  return d == id_of<iso::dialect>() || d == id_of<siemens::dialect>() || d == id_of<linuxcnc::dialect>() ||
+         d == id_of<haas::dialect>();
 }
 
 /// The same selection in `to` without a mapping: the same dialect, or G54 … in two G-code
-/// dialects where the target has that one (Siemens G54 … G57, ISO G54 … G59, LinuxCNC … G59.3).
+/// dialects where the target has that one (Siemens G54 … G57, ISO G54 … G59, LinuxCNC … G59.3),
+/// or additional offset n between ISO (G54.1 P n) and Haas (G154 P n) where the target has it.
 bool same_meaning(const work_offset& w, dialect from, dialect to) {
-  return from == to || (g_code_offsets(from) && g_code_offsets(to) && w.family == family::g54 && selects(to, w));
+  const bool additional = w.family == family::extended && (from == id_of<iso::dialect>() || from == id_of<haas::dialect>());
+  return from == to ||
+         (g_code_offsets(from) && g_code_offsets(to) && (w.family == family::g54 || additional) && selects(to, w));
 }
 
 }  // namespace
@@ -226,6 +237,12 @@ TEST_CASE("work offsets: each reader's spellings, and the refusals around them")
        "t:1:7: error: G54.1 P: the extended work offset's number must be a whole number from 1 to 300"},
       {id_of<iso::dialect>(), "G54 G55\n", std::nullopt, "t:1:5: error: two work offsets in one block"},
       {id_of<iso::dialect>(), "G54 G54.1 P2\n", std::nullopt, "t:1:1: error: two work offsets in one block"},
+      {id_of<haas::dialect>(), "G154 P99\n", work_offset{family::extended, 99}, ""},
+      {id_of<haas::dialect>(), "G110\n", work_offset{family::extended, 1}, ""},
+      {id_of<haas::dialect>(), "G129\n", work_offset{family::extended, 20}, ""},
+      {id_of<haas::dialect>(), "G59\n", work_offset{family::g54, 6}, ""},
+      {id_of<haas::dialect>(), "G54.1 P2\n", std::nullopt,
+       "t:1:1: error: G54.1 is not a Haas G code (its additional work offsets are G154 P1 … P99)"},
       {id_of<siemens::dialect>(), "N10 G54\n", work_offset{family::g54, 1}, ""},
       {id_of<siemens::dialect>(), "N10 G57\n", work_offset{family::g54, 4}, ""},
       {id_of<siemens::dialect>(), "N10 G505\n", work_offset{family::siemens, 505}, ""},

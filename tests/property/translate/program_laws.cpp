@@ -169,7 +169,7 @@ TEST_CASE("post: an understood APT statement is said in the NC dialect or not at
       "PARTNO/TEST\nUNITS/MM\nMULTAX/ON\nLOADTL/3\nSELECT/TOOL,4\nSPINDL/RPM,8000,CLW\nCOOLNT/FLOOD\n"
       "FEDRAT/MMPM,500\nRAPID\nGOTO/10,0,5,0,0,1\nPPRINT/CHECK\nGOTO/0,10,5,0,0,1\n$$ note\nFINI\n";
   const program::dialect apt = program::id_of<program::apt::dialect>();
-  for (const std::string_view name : {"iso", "siemens", "heidenhain", "linuxcnc"}) {
+  for (const std::string_view name : {"iso", "siemens", "heidenhain", "linuxcnc", "haas"}) {
     CAPTURE(name);
     const program::dialect d = *program::parse_dialect(name);
     const auto t = make_post<machines::ac_trunnion>(apt, d, "t.cls");
@@ -207,13 +207,14 @@ TEST_CASE("translate: a tape mark and a parameter's number are understood, not p
   const std::vector<row> rows = {
       {"iso", "%\nO1234\n#1=500.\nG90 G17 G21 G94\nT1 M6\nG43.4 H1\nG1 X10. Y0. Z5. B0. C0. F#1\nG49\nM30\n%\n", 1},
       {"linuxcnc", "%\n#1=500.\nG90 G17 G21 G94\nT1 M6\nG43 H1\nM428\nG1 X10 Y0 Z5 B0 C0 F#1\nM429\nM2\n%\n", 1},
+      {"haas", "%\nO01234\n#1=500.\nG90 G17 G21 G94\nT1 M6\nG234 H1\nG1 X10. Y0. Z5. B0. C0. F#1\nG49\nM30\n%\n", 1},
       {"siemens", "%_N_P_MPF\n;$PATH=/_N_MPF_DIR\nR1=500\nT1 M6\nD1\nTRAORI\nG1 X10 Y0 Z5 B0 C0 F=R1\nTRAFOOF\nM30\n", 1},
       {"heidenhain", "0 BEGIN PGM P MM\n1 Q1 = 500\n2 TOOL CALL 1 Z S1000\n3 M128\n4 L X+10 Y+0 Z+5 B+0 C+0 FQ1\n"
                      "5 M129\n6 END PGM P MM\n", 1},
   };
   for (const row& r : rows) {
     const program::dialect from = *program::parse_dialect(r.dialect);
-    for (const std::string_view to_name : {"iso", "siemens", "heidenhain", "linuxcnc"}) {
+    for (const std::string_view to_name : {"iso", "siemens", "heidenhain", "linuxcnc", "haas"}) {
       CAPTURE(r.dialect, to_name);
       const program::dialect to = *program::parse_dialect(to_name);
       translate_options options;

@@ -480,7 +480,7 @@ TEST_CASE("across dialects, a tool called by name is refused where the target ta
   using translate_detail::source_context;
   const dialect siemens = id_of<program::siemens::dialect>(), heidenhain = id_of<program::heidenhain::dialect>();
   const std::vector<dialect> numbers_only{id_of<program::iso::dialect>(), id_of<program::linuxcnc::dialect>(),
-                                          id_of<program::apt::dialect>()};
+                                          id_of<program::haas::dialect>(), id_of<program::apt::dialect>()};
   const std::vector<std::pair<dialect, std::string>> sources{{siemens, "N10 T=\"BALL_D8\" M6\n"},
                                                              {heidenhain, "TOOL CALL \"BALL_D8\" Z S8000\n"}};
   tool_map map;
@@ -549,6 +549,10 @@ TEST_CASE("across dialects, a dwell the target controller cannot take is refused
       {linuxcnc, heidenhain, "G4 P0.0015\n",
        "t:1:1: error: a dwell of 0.0015 s is not one the heidenhain controller takes (0 to 3600 s in steps of 0.001 s)"},
       {linuxcnc, siemens, "G4 P0.0015\n", ""},
+      {linuxcnc, id_of<program::haas::dialect>(), "G4 P0.0015\n",
+       "t:1:1: error: a dwell of 0.0015 s is not one the haas controller takes (0 to 9999.999 s in steps of 0.001 s)"},
+      {id_of<program::haas::dialect>(), heidenhain, "G04 P3600001\n",
+       "t:1:1: error: a dwell of 3600.001 s is not one the heidenhain controller takes (0 to 3600 s in steps of 0.001 s)"},
       {siemens, iso, "G4 F12000\n",
        "t:1:1: error: a dwell of 12000 s is not one the iso controller takes (0 to 9999.999 s in steps of 0.001 s)"},
   };

@@ -10,7 +10,9 @@
 /// written in inches with one decimal more. Every coordinate, angle, I J K, R and F has a decimal
 /// point (`X10.`, `write_options::decimal_point`). A block ISO cannot express (a tool-axis vector outside
 /// G43.5 or with an arc)
-/// throws `std::invalid_argument` naming the block's `file:line`.
+/// throws `std::invalid_argument` naming the block's `file:line`. A control built on Fanuc's G code
+/// spells TCP, the extended work offsets and the dwell its own way (`write_options::spell`: Haas
+/// writes `G234 H…`, `G154 P…`, `G4 P…`; program/haas/writer.hpp).
 #pragma once
 
 #include <algorithm>
@@ -37,6 +39,17 @@ namespace kin5::program::iso {
 
 struct dialect;  // this folder's entry of `program::dialects` (dialect.hpp)
 
+/// What a control built on ISO / Fanuc G code spells its own way (Haas: program/haas/writer.hpp).
+/// The defaults are Fanuc's.
+struct spelling {
+  std::string_view name = "ISO";         ///< the control, in messages
+  std::string_view tcp_on = "G43.4";     ///< tool-tip tracking on with rotary positions (Haas: G234)
+  bool vector_tcp = true;                ///< G43.5 H… I J K, tracking with tool-axis vectors, exists
+  std::string_view extended = "G54.1";   ///< the extended work offsets' code; P n follows (Haas: G154)
+  int extended_count = 300;              ///< extended offsets P1 … P n (Haas: 99)
+  char dwell_letter = 'X';               ///< G4 X seconds (Haas: G4 P seconds, with a decimal point)
+};
+
 /// Decimals written for each kind of number. Spindle speeds use `feed_decimals`.
 struct write_options {
   int linear_decimals = 3;   ///< X Y Z, arc I J K, R (mm)
@@ -62,6 +75,8 @@ struct write_options {
   /// The program's name when known ahead (`program_name`: the source's, or the output file's):
   /// its number when it is one, else a comment on the `O` line.
   std::optional<std::string> program_name;
+  /// The codes of the control written for (Fanuc's unless a dialect built on ISO says otherwise).
+  spelling spell{};
 };
 
 namespace detail {
@@ -140,7 +155,8 @@ class writer {
     const bool loads = std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
     const bool change = !same_ && loads;
     if (b.tool_name)  // ISO's T takes a number: a name is not written as something else
-      fail(b, "a tool by name (\"" + *b.tool_name + "\") has no ISO form (T takes a number; --tool-map NAME=n gives one)");
+      fail(b, "a tool by name (\"" + *b.tool_name + "\") has no " + std::string(options_.spell.name) +
+                  " form (T takes a number; --tool-map NAME=n gives one)");
     if (b.tool) selected_tool_ = *b.tool;
     if (loads) active_tool_ = selected_tool_;
     if (change) {
@@ -159,7 +175,8 @@ class writer {
     std::string line;
     for (const std::string& w : words_) line += (line.empty() ? "" : " ") + w;
     out += line + '\n';
-    if (change && tcp_on_ && !b.tcp) out += (vector_tcp_ ? "G43.5 H" : "G43.4 H") + std::to_string(*active_tool_) + "\n";
+    if (change && tcp_on_ && !b.tcp)
+      out += (vector_tcp_ ? std::string("G43.5") : std::string(options_.spell.tcp_on)) + " H" + std::to_string(*active_tool_) + "\n";
     if (b.tcp) tcp_on_ = *b.tcp;
   }
 
@@ -190,8 +207,9 @@ class writer {
   std::vector<std::string> tail_;   // non-G kept words
   std::string notes_;               // what another dialect said that ISO cannot: a comment
 
-  [[noreturn]] static void fail(const block& b, const std::string& why) {
-    throw std::invalid_argument(b.where.file + ":" + std::to_string(b.where.line) + ": block cannot be written in ISO: " + why);
+  [[noreturn]] void fail(const block& b, const std::string& why) const {
+    throw std::invalid_argument(b.where.file + ":" + std::to_string(b.where.line) + ": block cannot be written in " +
+                                std::string(options_.spell.name) + ": " + why);
   }
 
   /// Opens a program read in another dialect: `%`, then `O` and its number (FANUC Fast Data
@@ -233,7 +251,8 @@ class writer {
   void dwell(std::string& out, const block& b) {
     if (!b.only_dwell()) fail(b, "a dwell with other words (G4 takes a block of its own)");
     if (const std::string why = dwell_refusal(detail::dwell_steps, *b.state.dwell_s); !why.empty()) fail(b, why);
-    std::string line = b.number ? code('N', *b.number) + " G4 X" : std::string("G4 X");
+    std::string line = b.number ? code('N', *b.number) + " G4 " : std::string("G4 ");
+    line += options_.spell.dwell_letter;
     line += format_number(*b.state.dwell_s, detail::dwell_steps.decimals);
     if (line.find('.') == std::string::npos) line += '.';
     if (b.comment) line += " " + detail::as_comment(*b.comment);
@@ -291,11 +310,12 @@ class writer {
   void work_offset_words(const block& b, const work_offset& w) {
     if (w.family == work_offset_family::g54 && w.number >= 1 && w.number <= 6) {
       words_.push_back("G" + std::to_string(53 + w.number));
-    } else if (w.family == work_offset_family::extended && w.number >= 1 && w.number <= 300) {
-      words_.push_back("G54.1");
+    } else if (w.family == work_offset_family::extended && w.number >= 1 && w.number <= options_.spell.extended_count) {
+      words_.push_back(std::string(options_.spell.extended));
       words_.push_back(code('P', w.number));
     } else {
-      fail(b, "work offset " + spelling(w) + " has no ISO form (--work-offset-map names one)");
+      fail(b, "work offset " + kin5::program::spelling(w) + " has no " + std::string(options_.spell.name) +
+                  " form (--work-offset-map names one)");
     }
   }
 
@@ -319,8 +339,8 @@ class writer {
       words_.push_back(m == motion_kind::rapid ? "G0" : m == motion_kind::linear ? "G1" : m == motion_kind::arc_cw ? "G2" : "G3");
     }
     if (b.tcp) {
-      vector_tcp_ = *b.tcp && vector_tcp_ahead;
-      words_.push_back(!*b.tcp ? "G49" : vector_tcp_ ? "G43.5" : "G43.4");
+      vector_tcp_ = *b.tcp && vector_tcp_ahead && options_.spell.vector_tcp;
+      words_.push_back(!*b.tcp ? "G49" : vector_tcp_ ? "G43.5" : std::string(options_.spell.tcp_on));
       // H: the register the block names (ISO's own G43.4 H n, LinuxCNC's G43 H n), else, as
       // another dialect's TCP uses the active tool's own length, that tool's register (the
       // offset number equal to the tool number, as tool-change macros set it). With no tool
@@ -329,7 +349,7 @@ class writer {
       // written as it was given.
       const auto h = b.state.length_register ? b.state.length_register : active_tool_;
       if (*b.tcp && !same_ && !h)
-        fail(b, std::string(vector_tcp_ ? "G43.5" : "G43.4") +
+        fail(b, std::string(vector_tcp_ ? "G43.5" : options_.spell.tcp_on) +
                     ": tool-tip tracking switched on before any tool change: no tool gives its length offset H");
       if (*b.tcp && h) words_.push_back(code('H', *h));
     }
@@ -355,7 +375,9 @@ class writer {
     if (a.b_deg) put('B', *a.b_deg, options_.angle_decimals);
     if (a.c_deg) put('C', *a.c_deg, options_.angle_decimals);
     if (a.tool_axis) {
-      if (!vector_tcp_) fail(b, "a tool-axis vector needs G43.5");
+      if (!vector_tcp_)
+        fail(b, options_.spell.vector_tcp ? "a tool-axis vector needs G43.5"
+                                          : "a tool-axis vector (no G43.5 here: tracking takes rotary axis words)");
       if (b.arc) fail(b, "a tool-axis vector and an arc in one block");
       put('I', a.tool_axis->x, options_.vector_decimals);
       put('J', a.tool_axis->y, options_.vector_decimals);
