@@ -245,7 +245,7 @@ TEST_CASE("a program end is written once in every dialect") {
   const auto tc = siemens::read("T1 M6\nS6000 M3\n", "tool.mpf");
   REQUIRE(tc.ok());
   CHECK(heidenhain::write(tc.parsed) == "0 BEGIN PGM PGM MM\n1 TOOL CALL 1 Z\n2 TOOL CALL S6000\n3 M3\n4 END PGM PGM MM\n");
-  CHECK(apt::write(tc.parsed) == "LOADTL/1\nSPINDL/6000,CLW\n");
+  CHECK(apt::write(tc.parsed) == "LOADTL/1\nSPINDL/6000,CLW\nFINI\n");  // CL data end with FINI
   CHECK(iso::write(tc.parsed) == "%\nO0001\nT1 M6\nS6000 M3\nM30\n%\n");  // a FANUC program ends with M30, %
 
   const auto i = iso::read("O1234\nN5 M30\n", "end.nc");
@@ -293,7 +293,7 @@ TEST_CASE("APT feed-only, rapid-only and units blocks in the G-code and Heidenha
   kin5::program::block empty;
   empty.text = "UNITS/XYZ";
   p.blocks = {empty};
-  CHECK(siemens::write(p) == "%_N_PGM_MPF\n;$PATH=/_N_MPF_DIR\n; UNITS/XYZ\n");
+  CHECK(siemens::write(p) == "%_N_PGM_MPF\n;$PATH=/_N_MPF_DIR\n; UNITS/XYZ\nM30\n");  // no end given: M30
   CHECK(heidenhain::write(p) == "0 BEGIN PGM PGM MM\n1 ;UNITS/XYZ\n2 END PGM PGM MM\n");
 }
 
@@ -332,7 +332,7 @@ TEST_CASE("a dwell in every dialect, as its manual spells it, and through transl
   // Siemens G4 F (seconds), Heidenhain Cycle 9 (two blocks), APT DELAY.
   CHECK(iso::write(cl.parsed) == "%\nO0001\nG4 X1.5\nG4 X0.25 (wait)\nM30\n%\n");  // framed (iso.md)
   CHECK(linuxcnc::write(cl.parsed) == "%\nG4 P1.5\nG4 P0.25 (wait)\n%\n");
-  CHECK(siemens::write(cl.parsed) == "%_N_PGM_MPF\n;$PATH=/_N_MPF_DIR\nG4 F1.5\nG4 F0.25 ; wait\n");
+  CHECK(siemens::write(cl.parsed) == "%_N_PGM_MPF\n;$PATH=/_N_MPF_DIR\nG4 F1.5\nG4 F0.25 ; wait\nM30\n");
   CHECK(heidenhain::write(cl.parsed) ==
         "0 BEGIN PGM PGM MM\n"
         "1 CYCL DEF 9.0 DWELL TIME\n"
@@ -345,7 +345,7 @@ TEST_CASE("a dwell in every dialect, as its manual spells it, and through transl
   const auto i = iso::read("N10 G04 P2000\n", "d.nc");
   REQUIRE(i.ok());
   CHECK(iso::write(i.parsed) == "N10 G4 X2.\n");
-  CHECK(siemens::write(i.parsed) == "%_N_PGM_MPF\n;$PATH=/_N_MPF_DIR\nN10 G4 F2\n");
+  CHECK(siemens::write(i.parsed) == "%_N_PGM_MPF\n;$PATH=/_N_MPF_DIR\nN10 G4 F2\nM30\n");
   // A Heidenhain program's own Cycle 9 is written back once, its 9.0 as it was.
   const auto h = heidenhain::read("0 BEGIN PGM D MM\n1 CYCL DEF 9.0 DWELL TIME\n2 CYCL DEF 9.1 DWELL1.5\n3 END PGM D MM\n", "d.h");
   REQUIRE(h.ok());

@@ -6,7 +6,8 @@
 // END PGM), never with a copy of another's (`(%)`, `; %`), and, read back by the target's
 // reader, have no block with an effect after its end and one end only. A table then checks the
 // other half of the rule (program/program_end.hpp): a block with an effect after the source's
-// end is refused by every writer of another dialect, naming its line and the end's.
+// end is refused by every writer of another dialect, naming its line and the end's. A last table
+// gives each writer a program whose source gives no end: it is closed once, by the target's end.
 #include <cstddef>
 #include <regex>
 #include <stdexcept>
@@ -155,6 +156,42 @@ TEST_CASE("framing: a block with an effect after the source's end is refused by 
       } catch (const std::invalid_argument& e) {
         CHECK(std::string(e.what()) == r.refusal);
       }
+    }
+  }
+}
+
+TEST_CASE("framing: a source that gives no end is ended once, as each target ends a program") {
+  // ISO, Haas and LinuxCNC files may stop at their closing `%` without M2/M30 (the control ends
+  // there). Each other writer closes such a program with its own end, written by hand here: ISO
+  // and Haas `M30` then `%`, Siemens `M30`, Heidenhain `END PGM`, APT `FINI`, LinuxCNC the
+  // closing `%` (a LinuxCNC file ends at it).
+  const std::vector<std::pair<std::string, std::string>> sources{
+      {"iso", "%\nO1\nG90 G94 G21\nG1 X1. Y2.5 Z10. F500.\n(done)\n%\n"},
+      {"haas", "%\nO01000\nG90 G94 G21\nG1 X1. Y2.5 Z10. F500.\n(done)\n%\n"},
+      {"linuxcnc", "%\nG90 G94 G21\nG1 X1 Y2.5 Z10 F500\n(done)\n%\n"}};
+  const std::vector<std::pair<std::string, std::regex>> last_lines{
+      {"iso", std::regex("[\\s\\S]*\nM30\n%\n")},
+      {"haas", std::regex("[\\s\\S]*\nM30\n%\n")},
+      {"siemens", std::regex("[\\s\\S]*\nM30\n")},
+      {"heidenhain", std::regex("[\\s\\S]*\n[0-9]+ END PGM [^\n]+ MM\n")},
+      {"apt", std::regex("[\\s\\S]*\nFINI\n")},
+      {"linuxcnc", std::regex("[\\s\\S]*\n%\n")}};
+  for (const auto& [source, text] : sources) {
+    const dialect from = *parse_dialect(source);
+    const read_result in = read(from, text, "src");
+    INFO(source);
+    REQUIRE(in.ok());
+    for (const auto& [target, pattern] : last_lines) {
+      const dialect to = *parse_dialect(target);
+      if (to == from) continue;
+      INFO(target);
+      const std::string out = write(to, in.parsed);
+      CHECK(std::regex_match(out, pattern));
+      const read_result back = read(to, out, "back");
+      REQUIRE(back.ok());
+      std::size_t ends = 0;
+      for (const block& b : back.parsed.blocks) ends += ends_program(b) ? 1 : 0;
+      CHECK(ends == (to == id_of<linuxcnc::dialect>() ? 0u : 1u));  // LinuxCNC: its `%` ends the file
     }
   }
 }

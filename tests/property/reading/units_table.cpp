@@ -78,7 +78,7 @@ TEST_CASE("units: APT UNITS/INCHES and FEDRAT/IPM are read in millimetres and wr
 
 TEST_CASE("units: an inch ISO program written as APT stays in inches") {
   round_trip(id_of<iso::dialect>(), "G20\nG1 X1. Y2. Z3. F10.\n", id_of<apt::dialect>(),
-             "UNITS/INCHES\nFEDRAT/IPM,10\nGOTO/1,2,3\n");
+             "UNITS/INCHES\nFEDRAT/IPM,10\nGOTO/1,2,3\nFINI\n");
 }
 
 TEST_CASE("units: a unit change after motion is refused at the unit word") {
@@ -159,7 +159,7 @@ TEST_CASE("units: inch programs between dialects keep their inch values") {
   round_trip(id_of<heidenhain::dialect>(), "0 BEGIN PGM P INCH\n1 L X+1.2345 Y-0.5 Z+2 F98\n2 END PGM P INCH\n",
              id_of<iso::dialect>(), "%\nO0001 (P)\nN0 G20\nN1 G1 X1.2345 Y-0.5 Z2. F9.8\nN2 G20 M30\n%\n");
   round_trip(id_of<iso::dialect>(), "G20\nG1 X1.2345 Y2. Z3. F10.\n", id_of<siemens::dialect>(),
-             "%_N_PGM_MPF\n;$PATH=/_N_MPF_DIR\nG700\nG1 X1.2345 Y2 Z3 F10\n");
+             "%_N_PGM_MPF\n;$PATH=/_N_MPF_DIR\nG700\nG1 X1.2345 Y2 Z3 F10\nM30\n");
   // The unit Siemens states after its header is the BEGIN PGM's (program_unit).
   round_trip(id_of<siemens::dialect>(), "%_N_P_MPF\nG700\nG1 X1.2345 Y2 Z3 F10\nM30\n", id_of<heidenhain::dialect>(),
              "0 BEGIN PGM P INCH\n1 ;G700\n2 L X+1.2345 Y+2 Z+3 F100\n3 M30\n4 END PGM P INCH\n");

@@ -10,7 +10,8 @@
 /// would lose; only text that moves nothing becomes a `$$` comment (docs/dialects/apt.md,
 /// "Writing": comments, passthrough text, tracking switches, plane and mode words). Another
 /// dialect's frame (`%`, `;$PATH=`) is not copied, and a block of another dialect after its end
-/// is refused unless it is only a comment (program_end.hpp). A dwell is `DELAY/t`.
+/// is refused unless it is only a comment (program_end.hpp); one that gives no end gets `FINI`
+/// last (`finish`). A dwell is `DELAY/t`.
 #pragma once
 
 #include <cmath>
@@ -58,6 +59,14 @@ class writer {
         off_first_(controller_from<dialect>(source).spindle_off_before_motion),
         options_(chosen) {
     static_cast<void>(file);
+  }
+
+  /// Ends the CL data of another dialect's program that gave no end (an ISO or LinuxCNC file that
+  /// stops at its `%`) with `FINI`, the last statement of CL data (A1). Call once, after the last
+  /// `write`.
+  void finish(std::string& out) {
+    if (!same_ && !finished_ && !end_.ended()) out += "FINI\n";
+    finished_ = true;
   }
 
   /// Appends the statements of block `b` to `out`. Throws `std::invalid_argument` naming the
@@ -120,6 +129,7 @@ class writer {
   bool off_first_;  // the source's controller runs M5, M9 and M6 before a block's move (LinuxCNC)
   write_options options_;
   source_end end_;  // where another dialect's program stops running
+  bool finished_ = false;  // `finish` has run
   bool rapid_pending_ = false;
   std::optional<long long> selected_tool_;  // the last tool number written
   modal_state source_;                      // the source program's state after the block (another dialect's)
@@ -328,6 +338,7 @@ inline std::string write(const program& p, const write_options& options = {}) {
   writer w(p.language, p.file, options);
   std::string out;
   for (const block& b : p.blocks) w.write(out, b);
+  w.finish(out);
   return out;
 }
 

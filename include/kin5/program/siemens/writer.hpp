@@ -5,7 +5,8 @@
 /// passthrough text and kept words in a comment; such a program opens with the punch-tape header
 /// `%_N_NAME_MPF` and `;$PATH=/_N_MPF_DIR` (its name made legal, `legal_program_name`), never
 /// with the other dialect's frame (`%`), and a block after its end is refused unless it is only a
-/// comment (program_end.hpp). Their tool length compensation is the active
+/// comment (program_end.hpp); without an end of its own it gets `M30` (`finish`). Their tool
+/// length compensation is the active
 /// tool's `D1` (off: `D0`), and one that applies another register than the loaded tool's is
 /// refused, as is a plane G18/G19 while a length may be in effect (the 840D turns the length with
 /// the plane). Units are written `G710` (mm) or `G700` (inch),
@@ -141,6 +142,14 @@ class writer {
   /// go into comments); `file` names the program in messages.
   explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
       : same_(source == id_of<dialect>()), program_file_(std::move(file)), options_(chosen) {}
+
+  /// Ends a program read in another dialect whose source gave no end (an ISO or LinuxCNC file
+  /// that stops at its `%`) with `M30`: an 840D main program ends with M2, M30 or M17 (SF ch. 14).
+  /// Call once, after the last `write`.
+  void finish(std::string& out) {
+    if (opened_ && !end_.ended()) out += "M30\n";
+    opened_ = false;
+  }
 
   /// Appends the text of block `b` to `out` (nothing for a block with nothing to say). Throws
   /// `std::invalid_argument` ("file:line: reason") for a block Siemens cannot express.
@@ -465,6 +474,7 @@ inline std::string write(const program& p, const write_options& options = {}) {
   writer w(p.language, p.file, chosen);
   std::string out;
   for (const block& b : p.blocks) w.write(out, b);
+  w.finish(out);
   return out;
 }
 

@@ -87,16 +87,16 @@ std::string written(std::vector<block> blocks, dialect language = id_of<iso::dia
 TEST_CASE("apt: an arc is CIRCLE (centre at the start's height, vector by the right-hand rule) and its GOTO") {
   const block start = goto_block("arc.nc", 1, 10, 0, 5);
   CHECK(written({start, arc_block(2, 0, 10, 5, arc_plane::xy, {0, 0, 0}, false)}) ==
-        "GOTO/10,0,5\nCIRCLE/0,0,5,0,0,1,10\nGOTO/0,10,5\n");
+        "GOTO/10,0,5\nCIRCLE/0,0,5,0,0,1,10\nGOTO/0,10,5\nFINI\n");  // FINI: the source gave no end
   CHECK(written({start, arc_block(2, 0, -10, 5, arc_plane::xy, {0, 0, 5}, true)}) ==
-        "GOTO/10,0,5\nCIRCLE/0,0,5,0,0,-1,10\nGOTO/0,-10,5\n");
+        "GOTO/10,0,5\nCIRCLE/0,0,5,0,0,-1,10\nGOTO/0,-10,5\nFINI\n");
   // start and end 0.004 mm either side of the radius: r is their mean, and the text reads back
   const std::string off = written({goto_block("arc.nc", 1, 10.004, 0, 5), arc_block(2, 0, 9.996, 5, arc_plane::xy, {0, 0, 5}, false)});
-  CHECK(off == "GOTO/10.004,0,5\nCIRCLE/0,0,5,0,0,1,10\nGOTO/0,9.996,5\n");
+  CHECK(off == "GOTO/10.004,0,5\nCIRCLE/0,0,5,0,0,1,10\nGOTO/0,9.996,5\nFINI\n");
   CHECK(apt::read(off, "back.cls").ok());
   // a helix: the end 2 mm higher along the vector
   CHECK(written({start, arc_block(2, 0, 10, 7, arc_plane::xy, {0, 0, 5}, false)}) ==
-        "GOTO/10,0,5\nCIRCLE/0,0,5,0,0,1,10\nGOTO/0,10,7\n");
+        "GOTO/10,0,5\nCIRCLE/0,0,5,0,0,1,10\nGOTO/0,10,7\nFINI\n");
 }
 
 TEST_CASE("apt: the writer refuses an arc CIRCLE cannot say") {
@@ -143,7 +143,7 @@ TEST_CASE("apt: what another dialect says that has no APT form is refused, never
         "is in the other unit, and APT changes the unit only with a value");
   per_minute.feed = 300;
   CHECK(written({start, inverse, per_minute}) ==
-        "GOTO/10,0,5\nFEDRAT/INVERS,2\nGOTO/20,0,5\nFEDRAT/MMPM,300\nGOTO/30,0,5\n");
+        "GOTO/10,0,5\nFEDRAT/INVERS,2\nGOTO/20,0,5\nFEDRAT/MMPM,300\nGOTO/30,0,5\nFINI\n");
 }
 
 TEST_CASE("apt: a kept word whose effect a comment would lose is refused, a harmless one is a $$ comment") {
@@ -157,5 +157,5 @@ TEST_CASE("apt: a kept word whose effect a comment would lose is refused, a harm
   plane.where = {"in.nc", 2, 1};
   plane.text = "G17 G40";
   plane.kept_words = {"G17", "G40"};
-  CHECK(written({plane}) == "$$ G17 G40\n");
+  CHECK(written({plane}) == "$$ G17 G40\nFINI\n");
 }

@@ -107,7 +107,7 @@ TEST_CASE("apt: blocks from another dialect") {
   m.text = "M428";
   m.m_codes = {428};
   p.blocks = {g0, odd};
-  CHECK(apt::write(p) == "$$ G0 G90 X1 Y2 Z3\nRAPID\nGOTO/1,2,3\n$$ G05.1 Q1\n");
+  CHECK(apt::write(p) == "$$ G0 G90 X1 Y2 Z3\nRAPID\nGOTO/1,2,3\n$$ G05.1 Q1\nFINI\n");  // FINI: no end given
   // an M function APT has no statement for is refused, not carried in a comment
   p.blocks.push_back(m);
   CHECK_THROWS_WITH(apt::write(p), ":0: block cannot be written in APT: M function M428 has no APT statement");
