@@ -37,8 +37,6 @@ namespace {
 
 const dialect iso_d = id_of<iso::dialect>(), linuxcnc_d = id_of<linuxcnc::dialect>(), siemens_d = id_of<siemens::dialect>(),
               heidenhain_d = id_of<heidenhain::dialect>(), apt_d = id_of<apt::dialect>(), haas_d = id_of<haas::dialect>();
-/// ISO and Haas, whose readers share the Fanuc grammar: G43 H n, G41 D n.
-bool iso_like(dialect d) { return d == iso_d || d == haas_d; }
 const std::vector<dialect> nc_sources = {iso_d, linuxcnc_d, siemens_d, heidenhain_d, haas_d};  // APT refuses CUTCOM
 
 /// Side and whose radius at one move: "left tool", "right other", "off".
@@ -92,8 +90,8 @@ block move(double x_mm, double y_mm) {
 /// Compensation switched to `side` as `from` says it, on a block of its own or on `on`.
 void switch_side(block& on, dialect from, cutter_side side) {
   on.state.radius_compensation = side;
-  if (side == cutter_side::off || (!iso_like(from) && from != linuxcnc_d)) return;
-  if (iso_like(from) || *rc::gen::inRange(0, 3) != 0)  // LinuxCNC: sometimes without D, the loaded tool
+  if (side == cutter_side::off || (!kin5::test::fanuc_grammar(from) && from != linuxcnc_d)) return;
+  if (kin5::test::fanuc_grammar(from) || *rc::gen::inRange(0, 3) != 0)  // LinuxCNC: sometimes without D, the loaded tool
     on.state.radius_register = *rc::gen::element(1LL, 1LL, 1LL, 2LL);
 }
 

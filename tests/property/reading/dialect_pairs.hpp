@@ -4,6 +4,7 @@
 /// `from -> to` in the report, and marks the Catch test case failed for each pair that fails.
 /// `all_dialects()` lists every dialect of `kin5::program::dialects`, so a new dialect joins
 /// every law that uses it. `pairs::distinct` skips a dialect paired with itself.
+/// `fanuc_grammar(d)`: ISO or Haas, the readers that give offset registers.
 #pragma once
 
 #include <cstddef>
@@ -22,6 +23,12 @@ inline std::vector<program::dialect> all_dialects() {
   std::vector<program::dialect> out;
   for (std::size_t i = 0; i < program::dialect_count; ++i) out.push_back(program::dialect{i});
   return out;
+}
+
+/// Whether dialect `d` is ISO or Haas, whose readers share the Fanuc grammar: `G43 H n`,
+/// `G41 D n` with offset registers.
+inline bool fanuc_grammar(program::dialect d) {
+  return d == program::id_of<program::iso::dialect>() || d == program::id_of<program::haas::dialect>();
 }
 
 /// Whether a law pairs a dialect with itself.

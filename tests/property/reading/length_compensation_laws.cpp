@@ -39,8 +39,6 @@ namespace {
 
 const dialect iso_d = id_of<iso::dialect>(), linuxcnc_d = id_of<linuxcnc::dialect>(), siemens_d = id_of<siemens::dialect>(),
               heidenhain_d = id_of<heidenhain::dialect>(), apt_d = id_of<apt::dialect>(), haas_d = id_of<haas::dialect>();
-/// ISO and Haas, whose readers share the Fanuc grammar: G43 H n, G41 D n.
-bool iso_like(dialect d) { return d == iso_d || d == haas_d; }
 const std::vector<dialect> every_dialect = kin5::test::all_dialects();
 const std::vector<dialect> register_dialects = {iso_d, linuxcnc_d, haas_d};  // their readers give G43 H
 
@@ -108,16 +106,16 @@ block tool_change(long long tool) {
 block length_on(dialect from, long long tool, bool tracking) {
   block b;
   b.state.length_compensation = true;
-  if (iso_like(from) || *rc::gen::inRange(0, 3) != 0)
+  if (kin5::test::fanuc_grammar(from) || *rc::gen::inRange(0, 3) != 0)
     b.state.length_register = *rc::gen::element(tool, tool, *rc::gen::inRange<long long>(1, 4));
-  if (tracking && iso_like(from)) b.tcp = true;
+  if (tracking && kin5::test::fanuc_grammar(from)) b.tcp = true;
   return b;
 }
 
 block length_off(dialect from, bool tracking) {
   block b;
   b.state.length_compensation = false;
-  if (tracking && iso_like(from)) b.tcp = false;
+  if (tracking && kin5::test::fanuc_grammar(from)) b.tcp = false;
   return b;
 }
 

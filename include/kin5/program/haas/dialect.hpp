@@ -39,10 +39,13 @@ struct dialect {
   /// TCPC and the additional work offsets: no other dialect writes them.
   static constexpr std::array<marker, 2> markers{{{"G234", marker::place::anywhere},
                                                   {"G154", marker::place::anywhere}}};
-  /// As ISO's controller (iso/dialect.hpp): increment system IS-C, `( … )` comments, S a whole
-  /// number; Haas's dwell (vocabulary.hpp). Inch lengths take the 4th decimal (0.0001 in, HA5).
-  static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {4, 4, 3, 7}, .paren_comments = true,
-                                    .whole_spindle_speed = true, .dwell = dwell_steps};
+  /// ISO's (iso/vocabulary.hpp `fanuc_reads`: IS-C, `( … )` comments, S a whole number; inch
+  /// lengths to 0.0001 in, HA5) with Haas's dwell (vocabulary.hpp).
+  static constexpr controller reads = [] {
+    controller c = iso::detail::fanuc_reads;
+    c.dwell = dwell_steps;
+    return c;
+  }();
   /// Catalog machines whose controller reads it: none (no Haas machine is in the catalog; a
   /// program for one names the dialect: `--from-dialect haas`, `--to-dialect haas`).
   static constexpr std::array<std::string_view, 0> default_for{};

@@ -34,10 +34,8 @@ struct dialect {
                                     .work_offsets = {{{work_offset_family::g54, 1, 6}, {work_offset_family::extended, 1, 300}}}};
   static constexpr std::array<marker, 2> markers{{{"G43.4", marker::place::anywhere},
                                                   {"G43.5", marker::place::anywhere}}};
-  /// Increment system IS-C (Mitsubishi M700V §2.1; IS-B rounds the 4th); `( … )` are comments;
-  /// S is no decimal-point address (M700V §5.3): a whole number; G4 X dwells (vocabulary.hpp).
-  static constexpr controller reads{.usual = {3, 3, 1, 7}, .finest = {4, 4, 3, 7}, .paren_comments = true,
-                                    .whole_spindle_speed = true, .dwell = detail::dwell_steps};
+  /// A Fanuc-style controller's (vocabulary.hpp: IS-C, `( … )` comments, S whole, G4 X).
+  static constexpr controller reads = detail::fanuc_reads;
   /// Catalog machines whose controller reads it (CN1624613's 4-axis machine).
   static constexpr std::array<std::string_view, 1> default_for{"a-rotary-4axis"};
   /// Kept words a comment would lose: none (the dwell and tool length compensation are read into
