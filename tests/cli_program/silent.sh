@@ -234,8 +234,13 @@ case "$name" in
   compensation-g41-linuxcnc)
     printf '%s\n' 'G21 G90 G17' 'T1 M6' 'G43' 'M428' 'G1 X0 Y0 Z50 A0 C0 F500' 'G42 X10 Y0' 'G40 X20' 'M429' 'M30' >g42.ngc
     run 2 translate --from xyzac-trt --to xyzac-trt --from-dialect linuxcnc --to-dialect iso -o g42.nc g42.ngc
-    error_at 'g42.ngc:6:1: error: cutter radius compensation between linuxcnc and iso'
+    error_at "g42.ngc:6:1: error: cutter radius compensation between linuxcnc and iso: switched off (line 7) before the contour's first element"
     nothing g42.nc
+    # Entered and left straight on along X: both controls place the tool alike, so it is written.
+    printf '%s\n' 'G21 G90 G17' 'T1 M6' 'G43' 'M428' 'G1 X0 Y0 Z50 A0 C0 F500' 'G42 X10 Y0' 'G1 X20' 'G40 X30' 'M429' 'M30' >g42s.ngc
+    run 0 translate --from xyzac-trt --to xyzac-trt --from-dialect linuxcnc --to-dialect iso -o g42s.nc g42s.ngc
+    has_line g42s.nc 'G42 D1 X10\. Y0\. Z50\. A0\. C0\.'
+    has_line g42s.nc 'G40 X30\. Y0\. Z50\. A0\. C0\.'
     ;;
   compensation-cutcom)
     printf '%s\n' 'PARTNO CC' 'UNITS/MM' 'LOAD/TOOL,1' 'FEDRAT/MMPM,500' 'GOTO/0,0,50,0,0,1' 'CUTCOM/LEFT,1' \

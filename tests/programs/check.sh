@@ -104,6 +104,13 @@ case $name in
   linuxcnc/trunnion_m428.ngc)
     expect 2 "14:1: error: cutter radius compensation between linuxcnc and siemens" \
       translate --from xyzac-trt --to sajo-12000p --work-offset-map G54=G54 ;;
+  linuxcnc/plate_tangent_comp.ngc)
+    # Entered and left straight on along the bottom edge: compensation goes into the TNC and ISO.
+    expect 0 - translate --from xyzac-trt --to dmu-80p --work-offset-map G54=1
+    has '^16 L X\+30 Y-25 Z-4 B\+0 C\+0 RL F1500$' '^19 C X-40 Y-15 DR-$' '^30 L X\+10 Y-25 Z-4 B\+0 C\+0 R0$'
+    expect 0 - translate --from xyzac-trt --to xyzac-trt --to-dialect iso
+    has '^G41 D6 G1 X30\. Y-25\. Z-4\. A0\. C0\. F1500\.$' '^G2 X-40\. Y-15\. I0\. J10\.$' '^G40 G1 X10\. Y-25\. '
+    ;;
   linuxcnc/g12_1_tcp.ngc)
     expect 0 - translate --from xyzac-trt --to dmu-80p --work-offset-map G55=2
     has ' TOOL CALL 3 Z$' ' M128' ;;

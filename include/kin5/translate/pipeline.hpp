@@ -196,6 +196,7 @@ class two_pass_translator final : public block_translator {
   void configure() {
     source_.tolerance = common_.angle_tolerance.value_or(default_angle_tolerance(resolution_));
     source_.output = result_.output.language;
+    source_.linear_decimals = resolution_.linear_decimals;
     source_.m_codes = &common_.m_codes;
     source_.work_offsets = &common_.work_offsets;
     result_.angle_tolerance = source_.tolerance;

@@ -58,6 +58,8 @@ struct source_context {
   program::dialect output{};  ///< the dialect written
   const m_map* m_codes = nullptr;                        ///< the user's M mapping (`--m-map`), if any
   const work_offset_map* work_offsets = nullptr;         ///< the user's work-offset mapping, if any
+  /// Decimals of the program's X Y Z (program/resolution.hpp): how finely its points are known.
+  std::optional<int> linear_decimals{};
 };
 
 /// An address word of block `b` found again in its first line: where it starts and how it is

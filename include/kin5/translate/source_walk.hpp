@@ -11,7 +11,9 @@
 /// it lacks, values outside its travel). Motion without tool-tip tracking, an unknown tip, a
 /// feed move at F0 (at its F word), or an arc that cannot be mapped is an error at the block; a rotary axis with no value yet is
 /// refused (`unset-rotary`, which `--allow` turns into taking it as 0); a block not understood or
-/// in machine coordinates passes through with a warning. The walker runs once per pass:
+/// in machine coordinates passes through with a warning. Between controls whose cutter radius
+/// compensation starts differently (LinuxCNC and the others), each start-up and cancel must run
+/// straight on (`compensation_ends.hpp`). The walker runs once per pass:
 /// diagnostics go to the result in the first only.
 /// @code
 ///   kin5::translate_detail::source_walker walk(kin5::translate_detail::nc_source{kin5::machines::sajo_12000p::model});
@@ -26,6 +28,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <span>
@@ -41,6 +44,7 @@
 #include "../program/modal.hpp"
 #include "allowances.hpp"
 #include "arc_plane.hpp"
+#include "compensation_ends.hpp"
 #include "diagnostic_text.hpp"
 #include "options.hpp"
 #include "source_checks.hpp"
@@ -210,6 +214,17 @@ class source_walker {
   /// The step of block `b`; `kinematics`: whether to compute the tool axis and
   /// `source_step::principal` of a motion step (else only its angles).
   source_step next(const program::block& b, translation* out, bool kinematics) {
+    const program::cutter_side was = modal_.radius_compensation.value_or(program::cutter_side::off);
+    source_step s = step(b, out, kinematics);
+    if (program::controller_of(context_.language).tangent_compensation_entry !=
+        program::controller_of(context_.output).tangent_compensation_entry)
+      follow_compensation_ends(b, was, s, report{out, &allow_});
+    return s;
+  }
+
+ private:
+  /// The step of block `b`, as `next` gives it.
+  source_step step(const program::block& b, translation* out, bool kinematics) {
     const report to{out, &allow_};
     if constexpr (Source::needs_tcp)
       if (b.tcp && *b.tcp != modal_.tcp) rebase_on_switch(*b.tcp);
@@ -283,7 +298,6 @@ class source_walker {
     return s;
   }
 
- private:
   Source source_;
   program::modal_state modal_;
   std::string warned_letters_;  // rotary axes already warned about as having no value
@@ -294,6 +308,7 @@ class source_walker {
   std::optional<std::optional<program::work_offset>> untracked_offset_;  // work offset of the first untracked motion
   tool_length_tracker lengths_;  // the tool length of each untracked motion
   run_inputs in_{};              // the source's placement with the length in effect
+  compensation_ends compensation_ends_;  // start-ups and cancels between controls whose entries differ
 
   /// Where diagnostics go: the result of the first pass, or nowhere.
   struct report {
@@ -352,8 +367,7 @@ class source_walker {
 
   /// Cutter radius compensation at block `b` (`on`: in effect after it), where the target
   /// could cut another contour (docs/dialects/compensation.md): outside the XY plane (G17, a TNC's
-  /// tool axis Z), or switched on between controls whose entry moves differ (LinuxCNC's ends
-  /// tangent to the entry line). False, with an error at the block, when refused.
+  /// tool axis Z). False, with an error at the block, when refused.
   bool compensation_ok(const program::block& b, bool on, const report& to) const {
     const bool switched_on = b.state.radius_compensation && *b.state.radius_compensation != program::cutter_side::off;
     if (!switched_on && !(on && b.moves())) return true;
@@ -363,15 +377,28 @@ class source_walker {
                         "): kin5 translates it only in the XY plane, where every control offsets alike"));
       return false;
     }
-    if (switched_on && program::controller_of(context_.language).tangent_compensation_entry !=
-                           program::controller_of(context_.output).tangent_compensation_entry) {
-      to.fail(at(b, "cutter radius compensation between " + std::string(program::name(context_.language)) + " and " +
-                        std::string(program::name(context_.output)) +
-                        ": one control ends the entry move tangent to the entry line, the other at the contour's start, "
-                        "so the approach would cut differently"));
-      return false;
-    }
     return true;
+  }
+
+  /// Between controls whose entry moves differ (LinuxCNC's ends tangent to the entry line, the
+  /// others' at the contour's start): the start-up or cancel of compensation that block `b`
+  /// (side `was` before it, step `s`) shows not to run straight on, refused at the block that
+  /// switched (compensation_ends.hpp). Points are known to a unit of the last decimal written,
+  /// and never taken as coarser than 0.001 (mm or inch).
+  void follow_compensation_ends(const program::block& b, program::cutter_side was, const source_step& s,
+                                const report& to) {
+    if (s.what == source_step::kind::failed) return compensation_ends_.reset();
+    std::optional<planar_move> moved;
+    if (s.what == source_step::kind::motion)
+      moved = planar_move{s.start_source_mm, s.tip_source_mm, program::is_arc(s.motion) ? &s.arc_source : nullptr};
+    const double delta_mm = std::pow(10.0, -std::max(context_.linear_decimals.value_or(3), 3)) *
+                            (modal_.metric == false ? 25.4 : 1.0);
+    const auto refusal =
+        compensation_ends_.follow(b, was, modal_.radius_compensation.value_or(program::cutter_side::off), moved,
+                                  says_nothing(b), delta_mm);
+    if (refusal)
+      to.fail({refusal->where, "cutter radius compensation between " + std::string(program::name(context_.language)) +
+                                   " and " + std::string(program::name(context_.output)) + ": " + refusal->reason});
   }
 
   /// A move under cutter radius compensation: its programmed point must be the tool tip (not

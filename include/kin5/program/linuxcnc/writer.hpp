@@ -9,9 +9,9 @@
 /// change what tracking needs there: `M429` before the `M6`, `G43` and `M428` after; tracking
 /// switched on gets a `G43` first when the loaded tool's length is not in effect. A tool-axis
 /// vector (LinuxCNC has no G43.5) and a work offset LinuxCNC does not select throw
-/// `std::invalid_argument` naming the block's `file:line`, as does cutter radius compensation
-/// switched on in another dialect (its entry move differs: docs/dialects/compensation.md). A
-/// dwell is `G4 P…` (seconds), a line of its own.
+/// `std::invalid_argument` naming the block's `file:line`. Cutter radius compensation is written
+/// as ISO writes it; where its entry or exit would run differently here the translation has
+/// refused it already (translate/compensation_ends.hpp). A dwell is `G4 P…` (seconds), a line of its own.
 #pragma once
 
 #include <algorithm>
@@ -87,9 +87,6 @@ class writer {
     if (!same_ && tracking_ && !length_of_loaded_ && is_motion(b))
       fail(b, "a move under tracking while G43 does not hold the loaded tool's length (G43 H n of another tool, or "
               "G49): the TCP kinematics take the tool length from G43");
-    if (!same_ && b.state.radius_compensation && *b.state.radius_compensation != cutter_side::off)
-      fail(b, "cutter radius compensation (G41/G42) of another dialect: LinuxCNC ends the entry move tangent to the "
-              "entry line, the other controls at the contour's start (docs/dialects/compensation.md)");
     std::string line;
     iso_line(line, b);
     out += before + with_words(line, own) + after;
