@@ -209,6 +209,8 @@ class source_walker {
   void configure(const source_context& ctx, const allowances& allow) {
     context_ = ctx;
     allow_ = allow;
+    entries_differ_ = program::controller_of(ctx.language).tangent_compensation_entry !=
+                      program::controller_of(ctx.output).tangent_compensation_entry;
   }
 
   /// The step of block `b`; `kinematics`: whether to compute the tool axis and
@@ -216,9 +218,7 @@ class source_walker {
   source_step next(const program::block& b, translation* out, bool kinematics) {
     const program::cutter_side was = modal_.radius_compensation.value_or(program::cutter_side::off);
     source_step s = step(b, out, kinematics);
-    if (program::controller_of(context_.language).tangent_compensation_entry !=
-        program::controller_of(context_.output).tangent_compensation_entry)
-      follow_compensation_ends(b, was, s, report{out, &allow_});
+    if (entries_differ_) follow_compensation_ends(b, was, s, report{out, &allow_});
     return s;
   }
 
@@ -308,7 +308,8 @@ class source_walker {
   std::optional<std::optional<program::work_offset>> untracked_offset_;  // work offset of the first untracked motion
   tool_length_tracker lengths_;  // the tool length of each untracked motion
   run_inputs in_{};              // the source's placement with the length in effect
-  compensation_ends compensation_ends_;  // start-ups and cancels between controls whose entries differ
+  bool entries_differ_ = false;          // the two controls start compensation differently
+  compensation_ends compensation_ends_;  // their start-ups and cancels
 
   /// Where diagnostics go: the result of the first pass, or nowhere.
   struct report {
