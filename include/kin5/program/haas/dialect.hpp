@@ -40,12 +40,8 @@ struct dialect {
   static constexpr std::array<marker, 2> markers{{{"G234", marker::place::anywhere},
                                                   {"G154", marker::place::anywhere}}};
   /// ISO's (iso/vocabulary.hpp `fanuc_reads`: IS-C, `( … )` comments, S a whole number; inch
-  /// lengths to 0.0001 in, HA5) with Haas's dwell (vocabulary.hpp).
-  static constexpr controller reads = [] {
-    controller c = iso::detail::fanuc_reads;
-    c.dwell = dwell_steps;
-    return c;
-  }();
+  /// lengths to 0.0001 in, HA5; its dwells, which `G04 P` takes as vocabulary.hpp says).
+  static constexpr controller reads = iso::detail::fanuc_reads;
   /// Catalog machines whose controller reads it: none (no Haas machine is in the catalog; a
   /// program for one names the dialect: `--from-dialect haas`, `--to-dialect haas`).
   static constexpr std::array<std::string_view, 0> default_for{};

@@ -7,13 +7,14 @@
 #pragma once
 
 #include "../dwell.hpp"
+#include "../iso/vocabulary.hpp"
 #include "../iso/writer.hpp"
 
 namespace kin5::program::haas {
 
-/// The dwells a Haas control takes with `G04 P`: seconds to the millisecond (P without a decimal
-/// point counts milliseconds), up to ISO's longest (docs/dialects/haas.md).
-inline constexpr dwell_input dwell_steps{3, 9999.999};
+/// The dwells a Haas control takes with `G04 P`: ISO's, seconds to the millisecond up to
+/// 9999.999 s (P without a decimal point counts milliseconds; docs/dialects/haas.md).
+inline constexpr dwell_input dwell_steps = iso::detail::dwell_steps;
 
 /// The ISO writer's codes as a Haas mill spells them: TCPC `G234 H n` and no vector form,
 /// additional work offsets `G154 P1` … `P99`, a dwell `G04 P` in seconds with a decimal point.

@@ -176,7 +176,7 @@ class writer {
     for (const std::string& w : words_) line += (line.empty() ? "" : " ") + w;
     out += line + '\n';
     if (change && tcp_on_ && !b.tcp)
-      out += (vector_tcp_ ? std::string("G43.5") : std::string(options_.spell.tcp_on)) + " H" + std::to_string(*active_tool_) + "\n";
+      out += std::string(tcp_code()) + " H" + std::to_string(*active_tool_) + "\n";
     if (b.tcp) tcp_on_ = *b.tcp;
   }
 
@@ -206,6 +206,10 @@ class writer {
   std::vector<std::string> words_;  // the line's words
   std::vector<std::string> tail_;   // non-G kept words
   std::string notes_;               // what another dialect said that ISO cannot: a comment
+
+  /// The code that switches tool-tip tracking on as the writer now writes it: G43.5 with
+  /// tool-axis vectors, else the control's own (`spelling::tcp_on`: G43.4, Haas G234).
+  std::string_view tcp_code() const { return vector_tcp_ ? "G43.5" : options_.spell.tcp_on; }
 
   [[noreturn]] void fail(const block& b, const std::string& why) const {
     throw std::invalid_argument(b.where.file + ":" + std::to_string(b.where.line) + ": block cannot be written in " +
@@ -340,7 +344,7 @@ class writer {
     }
     if (b.tcp) {
       vector_tcp_ = *b.tcp && vector_tcp_ahead && options_.spell.vector_tcp;
-      words_.push_back(!*b.tcp ? "G49" : vector_tcp_ ? "G43.5" : std::string(options_.spell.tcp_on));
+      words_.push_back(std::string(*b.tcp ? tcp_code() : "G49"));
       // H: the register the block names (ISO's own G43.4 H n, LinuxCNC's G43 H n), else, as
       // another dialect's TCP uses the active tool's own length, that tool's register (the
       // offset number equal to the tool number, as tool-change macros set it). With no tool
@@ -349,7 +353,7 @@ class writer {
       // written as it was given.
       const auto h = b.state.length_register ? b.state.length_register : active_tool_;
       if (*b.tcp && !same_ && !h)
-        fail(b, std::string(vector_tcp_ ? "G43.5" : options_.spell.tcp_on) +
+        fail(b, std::string(tcp_code()) +
                     ": tool-tip tracking switched on before any tool change: no tool gives its length offset H");
       if (*b.tcp && h) words_.push_back(code('H', *h));
     }
