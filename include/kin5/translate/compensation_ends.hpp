@@ -28,6 +28,7 @@
 #include "../core/math.hpp"
 #include "../core/vec.hpp"
 #include "../program/block.hpp"
+#include "../program/program_end.hpp"
 #include "arc_plane.hpp"
 
 namespace kin5::translate_detail {
@@ -181,12 +182,13 @@ class compensation_ends {
 };
 
 /// Whether block `b` says nothing that acts: only its number, comment, a parameter's assignment
-/// or the program's tape frame.
+/// or the program's tape frame. As `program::without_effect`, with an assignment, but not a
+/// program end or text not understood (which may act on the source control).
 inline bool says_nothing(const program::block& b) {
+  if (b.program_end || b.passthrough) return false;
   program::block rest = b;
-  rest.where = {}, rest.text.clear(), rest.number.reset(), rest.comment.reset();
-  rest.assignment = false, rest.framing = false;
-  return rest == program::block{};
+  rest.assignment = false;
+  return program::without_effect(rest);
 }
 
 }  // namespace kin5::translate_detail

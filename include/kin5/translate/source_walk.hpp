@@ -42,6 +42,7 @@
 #include "../kinematics/matchability.hpp"
 #include "../program/block.hpp"
 #include "../program/modal.hpp"
+#include "../program/units.hpp"
 #include "allowances.hpp"
 #include "arc_plane.hpp"
 #include "compensation_ends.hpp"
@@ -393,7 +394,7 @@ class source_walker {
     if (s.what == source_step::kind::motion)
       moved = planar_move{s.start_source_mm, s.tip_source_mm, program::is_arc(s.motion) ? &s.arc_source : nullptr};
     const double delta_mm = std::pow(10.0, -std::max(context_.linear_decimals.value_or(3), 3)) *
-                            (modal_.metric == false ? 25.4 : 1.0);
+                            (modal_.metric == false ? program::mm_per_inch : 1.0);
     const auto refusal =
         compensation_ends_.follow(b, was, modal_.radius_compensation.value_or(program::cutter_side::off), moved,
                                   says_nothing(b), delta_mm);
