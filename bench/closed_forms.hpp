@@ -1,6 +1,7 @@
 /// @file bench/closed_forms.hpp
-/// The specialised closed-form inverse of each catalog machine, typed directly from docs/papers.md,
-/// as the baseline `inverse<M>` is measured against.
+/// The specialised closed-form inverse of each catalog machine, typed directly from docs/papers.md
+/// or, where no paper gives one, derived by hand from the machine's (G1) (docs/catalog.md), as the
+/// baseline `inverse<M>` is measured against.
 ///
 /// Each `closed_form<M>::solve(u)` returns the same set `inverse<M>` returns for a unit tool
 /// axis u away from the poles: both branches of (G3), commanded angles in `M::rotary` order,
