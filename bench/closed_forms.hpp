@@ -1,6 +1,7 @@
 /// @file bench/closed_forms.hpp
-/// The specialised closed-form inverse of each catalog machine, typed directly from docs/papers.md,
-/// as the baseline `inverse<M>` is measured against.
+/// The specialised closed-form inverse of each catalog machine, typed directly from docs/papers.md
+/// or, where no paper gives one, derived by hand from the machine's (G1) (docs/catalog.md), as the
+/// baseline `inverse<M>` is measured against.
 ///
 /// Each `closed_form<M>::solve(u)` returns the same set `inverse<M>` returns for a unit tool
 /// axis u away from the poles: both branches of (G3), commanded angles in `M::rotary` order,
@@ -18,11 +19,21 @@
 /// | ac-head               | A = ±acos k, C = atan2(i, −j) or atan2(−i, j), C ± 360°   |
 /// | b-head-a-tilted-table | derived in docs/performance.md: B = 45° + asin κ or       |
 /// |                       | 225° − asin κ with κ = (i − k)/√2; A = ±90° − atan2((i+k)/√2, j) |
+/// | bc-trunnion           | B = ±acos k, C = atan2(j, i) or atan2(−j, −i)             |
+/// | ab-trunnion           | (K2) and (K3), the tool axes of sajo-12000p                |
+/// | bc-nutating-table     | B = 2·atan2(√(1−k), √k), C = atan2(√(2k), √(1−k)) − atan2(j, i); |
+/// |                       | second branch B → −B, and C with −atan2(√(2k), √(1−k))    |
+/// | xyzac-trt             | (K19), the tool axes of ac-trunnion                       |
+/// | xyzbc-trt             | B = ±acos k, C = atan2(j, −i) or atan2(−j, i)             |
+///
+/// Every catalog machine must have one: `require_closed_forms` fails the build, naming the
+/// machine, when one is missing.
 #pragma once
 
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <tuple>
 
 #include <kin5/kin5.hpp>
 
@@ -50,8 +61,14 @@ inline double wrap(double x) {
   return x <= -pi ? x + 2.0 * pi : x;
 }
 
+/// The closed form of machine M: one specialisation per catalog machine, with
+/// `static closed_result<rotary_count<M>> solve(const vec3& u)`. The primary template has none.
 template <class M>
-struct closed_form;
+struct closed_form {};
+
+/// Whether machine M has a closed form here.
+template <class M>
+concept has_closed_form = requires(const vec3& u) { closed_form<M>::solve(u); };
 
 /// M1, rotary = {B table, A head}: (K2) a = −atan2(j, √(i²+k²)), b = atan2(i, k);
 /// (K3) (a, b) → (−180° − a, b + 180°). A ∈ [−120°, 30°].
@@ -169,5 +186,106 @@ struct closed_form<machines::b_head_a_tilted_table> {
     return r;
   }
 };
+
+/// Trunnion, rotary = {C, B} tool-relative, u = (cos C sin B, sin C sin B, cos B) (G1 of the
+/// machine, docs/catalog.md): B = ±acos k, C = atan2(j, i) for +, atan2(−j, −i) for −.
+/// B ∈ [−120°, 120°].
+template <>
+struct closed_form<machines::bc_trunnion> {
+  static closed_result<2> solve(const vec3& u) {
+    closed_result<2> r;
+    const double b = std::atan2(std::sqrt(u.x * u.x + u.y * u.y), u.z);
+    const double c = std::atan2(u.y, u.x);
+    const bool in = b <= 120.0 * deg;
+    r.add({c, b}, in);
+    r.add({wrap(c + pi), -b}, in);
+    return r;
+  }
+};
+
+/// A/B trunnion, rotary = {B faceplate, A tilting table} tool-relative: the tool axes of M1,
+/// u = (cos A sin B, −sin A, cos A cos B), so (K2) a = −atan2(j, √(i²+k²)), b = atan2(i, k) and
+/// (K3) (a, b) → (±180° − a, b + 180°). A ∈ [−110°, 110°]: the second branch only for |a| ≥ 70°.
+template <>
+struct closed_form<machines::ab_trunnion> {
+  static closed_result<2> solve(const vec3& u) {
+    closed_result<2> r;
+    const double a = -std::atan2(u.y, std::sqrt(u.x * u.x + u.z * u.z));
+    const double b = std::atan2(u.x, u.z);
+    r.add({b, a}, true);
+    const double a2 = wrap(pi - a);
+    r.add({wrap(b + pi), a2}, std::fabs(a2) <= 110.0 * deg);
+    return r;
+  }
+};
+
+/// Nutating table, rotary = {C, B} physical, u = R(Z, −C) v with
+/// v = R(n, −B) ẑ = ((1 − cos B)/2, sin B/√2, (1 + cos B)/2), n = (1, 0, 1)/√2 (G1 of the
+/// machine): k = (1 + cos B)/2, so B = ±acos(2k − 1) = ±2·atan2(√(1−k), √k), reachable for
+/// k ≥ 0. On the + branch v has azimuth c_t = atan2(sin B/√2, 1 − k) = atan2(√(2k), √(1−k)),
+/// and turning by −C carries it to u's: C = c_t − atan2(j, i); on the − branch C = −c_t −
+/// atan2(j, i). The − branch (B < 0) is outside B ∈ [0°, 180°]. 1 − k = (i² + j²)/(1 + k).
+template <>
+struct closed_form<machines::bc_nutating_table> {
+  static closed_result<2> solve(const vec3& u) {
+    closed_result<2> r;
+    if (u.z < 0) return r;
+    const double one_minus_k = (u.x * u.x + u.y * u.y) / (1.0 + u.z);
+    const double b = 2.0 * std::atan2(std::sqrt(one_minus_k), std::sqrt(u.z));
+    const double ct = std::atan2(std::sqrt(2.0 * u.z), std::sqrt(one_minus_k));
+    const double az = std::atan2(u.y, u.x);
+    r.add({wrap(ct - az), b}, true);
+    r.add({wrap(-ct - az), -b}, false);
+    return r;
+  }
+};
+
+/// LinuxCNC's xyzac-trt, rotary = {C, A} physical: the tool axes of the A/C trunnion,
+/// u = (sin A sin C, sin A cos C, cos A), so (K19) a = ±acos k, c = atan2(i, j) (+180° for −).
+/// A ∈ [−100°, 50°]: the + branch for a ≤ 50°, the − branch for a ≤ 100°.
+template <>
+struct closed_form<machines::xyzac_trt> {
+  static closed_result<2> solve(const vec3& u) {
+    closed_result<2> r;
+    const double a = std::atan2(std::sqrt(u.x * u.x + u.y * u.y), u.z);
+    const double c = std::atan2(u.x, u.y);
+    r.add({c, a}, a <= 50.0 * deg);
+    r.add({wrap(c + pi), -a}, a <= 100.0 * deg);
+    return r;
+  }
+};
+
+/// LinuxCNC's xyzbc-trt, rotary = {C, B} physical, u = (−sin B cos C, sin B sin C, cos B) (G1 of
+/// the machine): B = ±acos k, C = atan2(j, −i) for +, atan2(−j, i) for −. B ∈ [−100°, 50°]: the
+/// + branch for b ≤ 50°, the − branch for b ≤ 100°.
+template <>
+struct closed_form<machines::xyzbc_trt> {
+  static closed_result<2> solve(const vec3& u) {
+    closed_result<2> r;
+    const double b = std::atan2(std::sqrt(u.x * u.x + u.y * u.y), u.z);
+    const double c = std::atan2(u.y, -u.x);
+    r.add({c, b}, b <= 50.0 * deg);
+    r.add({wrap(c + pi), -b}, b <= 100.0 * deg);
+    return r;
+  }
+};
+
+/// Fails the build, naming M in the compiler's "required from" note, when M has no closed form.
+template <class M>
+consteval bool require_closed_form() {
+  static_assert(has_closed_form<M>,
+                "a catalog machine has no closed form in bench/closed_forms.hpp (the machine is M in the "
+                "instantiation note): derive it from the machine's (G1) and add closed_form<M>");
+  return has_closed_form<M>;
+}
+
+/// True when every catalog machine has a closed form; otherwise the build fails in
+/// `require_closed_form`, once per machine without one.
+template <class... Ms>
+consteval bool require_closed_forms(std::tuple<Ms...>*) {
+  return (require_closed_form<Ms>() && ...);
+}
+
+static_assert(require_closed_forms(static_cast<machines::catalog*>(nullptr)));
 
 }  // namespace kin5::bench

@@ -146,13 +146,19 @@ void bm_eigen_newton(benchmark::State& state) {
 
 int main(int argc, char** argv) {
   bool ok = true;
-  machines::for_each_machine([&]<class M>() { ok = validate<M>() && ok; });
+  // A machine without a closed form fails the build in closed_forms.hpp, naming it; the guards
+  // keep that the only error.
+  machines::for_each_machine([&]<class M>() {
+    if constexpr (bench::has_closed_form<M>) ok = validate<M>() && ok;
+  });
   if (!ok) return 1;
   machines::for_each_machine([&]<class M>() {
-    const std::string id(M::id);
-    benchmark::RegisterBenchmark(("inverse/" + id).c_str(), bm_inverse<M>);
-    benchmark::RegisterBenchmark(("closed_form/" + id).c_str(), bm_closed_form<M>);
-    benchmark::RegisterBenchmark(("eigen_newton/" + id).c_str(), bm_eigen_newton<M>);
+    if constexpr (bench::has_closed_form<M>) {
+      const std::string id(M::id);
+      benchmark::RegisterBenchmark(("inverse/" + id).c_str(), bm_inverse<M>);
+      benchmark::RegisterBenchmark(("closed_form/" + id).c_str(), bm_closed_form<M>);
+      benchmark::RegisterBenchmark(("eigen_newton/" + id).c_str(), bm_eigen_newton<M>);
+    }
   });
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

@@ -7,7 +7,9 @@
 #   bench/translate/gbench.sh [--blocks=N] [extra Google Benchmark flags]
 #
 # Environment: KIN5_BENCH_BUILD_DIR (default: build-bench in the source tree),
-#              KIN5_BENCH_REPETITIONS (default 5), KIN5_BENCH_MIN_TIME (seconds, default 0.5).
+#              KIN5_BENCH_REPETITIONS (default 5, at least 2), KIN5_BENCH_MIN_TIME (seconds, default 0.5).
+# If the build or the benchmark fails, it says which and why (the build log's last lines) and
+# exits 1.
 set -eu
 
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -15,17 +17,23 @@ build=${KIN5_BENCH_BUILD_DIR:-$root/build-bench}
 reps=${KIN5_BENCH_REPETITIONS:-5}
 min_time=${KIN5_BENCH_MIN_TIME:-0.5}
 
+. "$root/bench/quietly.sh"
+# The table shows medians, which Google Benchmark reports only over two or more repetitions.
+[ "$reps" -ge 2 ] 2>/dev/null || { echo "$0: KIN5_BENCH_REPETITIONS must be 2 or more (the table shows medians), not '$reps'" >&2; exit 1; }
+
 generator=""
 if command -v ninja >/dev/null 2>&1; then generator="-G Ninja"; fi
 # shellcheck disable=SC2086
-cmake -S "$root" -B "$build" $generator -DCMAKE_BUILD_TYPE=Release -DKIN5_BUILD_BENCH=ON \
-  -DKIN5_BUILD_TESTS=OFF -DKIN5_BUILD_TOOLS=OFF -DKIN5_BUILD_REACH=OFF -DKIN5_INSTALL=OFF >/dev/null
-cmake --build "$build" --target kin5_bench_translate -j2 >/dev/null
+quietly "$build/configure.log" "configuring $build (cmake)" \
+  cmake -S "$root" -B "$build" $generator -DCMAKE_BUILD_TYPE=Release -DKIN5_BUILD_BENCH=ON \
+  -DKIN5_BUILD_TESTS=OFF -DKIN5_BUILD_TOOLS=OFF -DKIN5_BUILD_REACH=OFF -DKIN5_INSTALL=OFF
+quietly "$build/build.log" "building kin5_bench_translate" cmake --build "$build" --target kin5_bench_translate -j2
 
 csv="$build/bench/translate/translate.csv"
 "$build/bench/translate/kin5_bench_translate" --benchmark_format=csv --benchmark_repetitions="$reps" \
   --benchmark_report_aggregates_only=true --benchmark_min_time="$min_time" \
-  --benchmark_enable_random_interleaving=true "$@" >"$csv"
+  --benchmark_enable_random_interleaving=true "$@" >"$csv" || {
+  echo "$0: kin5_bench_translate failed (exit status $?); its messages are above" >&2; exit 1; }
 
 # CSV columns: name,iterations,real_time,cpu_time,time_unit,...; names like "parse_baseline_median".
 awk -F, '

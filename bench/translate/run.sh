@@ -18,6 +18,8 @@
 #              INSTRUCTIONS=1: also count the instructions both programs execute on the first
 #              20,000 lines, under valgrind's callgrind: a figure that, unlike time, does not
 #              move with the load of a shared machine.
+# If a build or a run fails, it says which and why (the build log's last lines, the program's
+# messages) and exits 1.
 set -eu
 
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -26,15 +28,19 @@ blocks=${1:-1000000}
 runs=${RUNS:-3}
 cpu=${CPU:-0}
 
+. "$root/bench/quietly.sh"
+
 generator=""
 if command -v ninja >/dev/null 2>&1; then generator="-G Ninja"; fi
 # shellcheck disable=SC2086
-cmake -S "$root" -B "$build/kin5" $generator -DCMAKE_BUILD_TYPE=Release -DKIN5_BUILD_TOOLS=ON \
-  -DKIN5_BUILD_TESTS=OFF -DKIN5_BUILD_REACH=OFF -DKIN5_BUILD_BENCH=OFF -DKIN5_INSTALL=OFF >/dev/null
-cmake --build "$build/kin5" --target kin5_cli -j2 >/dev/null
+quietly "$build/kin5/configure.log" "configuring $build/kin5 (cmake)" \
+  cmake -S "$root" -B "$build/kin5" $generator -DCMAKE_BUILD_TYPE=Release -DKIN5_BUILD_TOOLS=ON \
+  -DKIN5_BUILD_TESTS=OFF -DKIN5_BUILD_REACH=OFF -DKIN5_BUILD_BENCH=OFF -DKIN5_INSTALL=OFF
+quietly "$build/kin5/build.log" "building the kin5 tool" cmake --build "$build/kin5" --target kin5_cli -j2
 # shellcheck disable=SC2086
-cmake -S "$root/bench/translate" -B "$build/helpers" $generator -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build/helpers" -j2 >/dev/null
+quietly "$build/helpers/configure.log" "configuring $build/helpers (cmake)" \
+  cmake -S "$root/bench/translate" -B "$build/helpers" $generator -DCMAKE_BUILD_TYPE=Release
+quietly "$build/helpers/build.log" "building the helpers" cmake --build "$build/helpers" -j2
 
 kin5=$(find "$build/kin5" -name kin5 -type f -perm -u+x | head -n 1)
 gen="$build/helpers/kin5_bench_gen_program"
@@ -42,7 +48,10 @@ baseline="$build/helpers/kin5_bench_parse_baseline"
 data="$build/data"
 mkdir -p "$data"
 input="$data/spiral-$blocks.mpf"
-[ -s "$input" ] || "$gen" "$blocks" "$input"
+if [ ! -s "$input" ]; then
+  quietly "$data/gen.log" "writing the $blocks-block program" "$gen" "$blocks" "$input.part"
+  mv "$input.part" "$input"
+fi
 
 # measure NAME COMMAND...: RUNS runs; appends "NAME elapsed_s cpu_s maxrss_kb" per run.
 measure() {
@@ -51,7 +60,7 @@ measure() {
   while [ "$i" -lt "$runs" ]; do
     i=$((i + 1))
     taskset -c "$cpu" /usr/bin/time -v "$@" 2>"$data/time.txt" >/dev/null || {
-      echo "run.sh: $name failed:" >&2; cat "$data/time.txt" >&2; exit 1; }
+      cat "$data/time.txt" >&2; echo "$0: $name failed; its messages and times are above" >&2; exit 1; }
     awk -v n="$name" -F': ' '
       /Elapsed \(wall clock\)/ { k = split($2, t, ":"); e = 0; for (j = 1; j <= k; ++j) e = e * 60 + t[j] }
       /User time/ { u = $2 } /System time/ { s = $2 } /Maximum resident/ { m = $2 }

@@ -57,10 +57,13 @@ inline std::string spiral_program(long blocks) {
     append_word(out, 'B', b, 3), out += ' ';
     append_word(out, 'F', std::round(feed), 0), out += '\n';
   }
-  out += "N" + std::to_string(n + 10) + " G0 Z100.\n";
-  out += "N" + std::to_string(n + 20) + " TRAFOOF\n";
-  out += "N" + std::to_string(n + 30) + " M5\n";
-  out += "N" + std::to_string(n + 40) + " M30\n";
+  // Appended, not `"N" + …`: GCC 12 warns falsely (-Wrestrict) on that.
+  for (const char* end : {" G0 Z100.\n", " TRAFOOF\n", " M5\n", " M30\n"}) {
+    n += 10;
+    out += 'N';
+    out += std::to_string(n);
+    out += end;
+  }
   return out;
 }
 
