@@ -369,6 +369,27 @@ case "$name" in
     has_line ok.h '[0-9]+ ;done'
     count_is ok.h '[0-9]+ M30' 1
     ;;
+  # G43 H n after G43.4 (Haas G234) replaces it in modal group 08: tracking ends there, so the
+  # rotary move after it is machine axes with the length along Z, never a tracked tool tip
+  # (it once became `; G43 H1` and a move under TRAORI).
+  g43-ends-tcp)
+    printf '%s\n' '%' 'O1' 'G21 G90 G17' 'T1 M6' 'G43.4 H1' 'G1 X0. Y0. Z10. A0. C0. F100.' 'G43 H1' \
+      'G1 X10. A30.' 'G49' 'M30' >t.nc
+    run 2 translate --from ac-trunnion --from-dialect iso --to ac-trunnion --to-dialect siemens -o t.mpf t.nc
+    error_at 't.nc:8:1: error: rotary motion without tool-tip tracking'
+    nothing t.mpf
+    run 2 reverse --machine ac-trunnion --dialect iso -o t.apt t.nc
+    error_at 't.nc:8:1: error: rotary motion without tool-tip tracking'
+    nothing t.apt
+    sed 's/^G43.4 H1$/G234 H1/' t.nc >h.nc
+    run 2 translate --from ac-trunnion --from-dialect haas --to ac-trunnion --to-dialect siemens -o h.mpf h.nc
+    error_at 'h.nc:8:1: error: rotary motion without tool-tip tracking'
+    nothing h.mpf
+    sed '8d' t.nc >n.nc  # no move under G43: G43 writes tracking off, then the length alone
+    run 0 translate --from ac-trunnion --from-dialect iso --to ac-trunnion --to-dialect iso -o n2.nc n.nc
+    has_line n2.nc 'G49'
+    has_line n2.nc 'G43 H1'
+    ;;
   *)
     echo "silent.sh: unknown row '$name'" >&2
     exit 2
