@@ -390,6 +390,23 @@ case "$name" in
     has_line n2.nc 'G49'
     has_line n2.nc 'G43 H1'
     ;;
+  # In inverse time (G93) F is not modal: a feed move without its own F was read and written with
+  # no F, and `--feed inverse-time` wrote its first move (unknown start, no block time) without F.
+  inverse-time-f)
+    printf '%s\n' '%' 'O1' 'T1 M6' 'G43.4 H1' 'G93' 'G1 X0. Y0. Z10. A0. C0. F10.' 'G1 X10.' 'G94' 'G49' 'M30' >g.nc
+    run 2 translate --from ac-trunnion --from-dialect iso --to ac-trunnion --to-dialect siemens -o g.mpf g.nc
+    error_at 'g.nc:7:1: error: feed move in inverse time (G93) without its own F'
+    nothing g.mpf
+    # The 840D keeps F in G93 until another is given: the ISO output writes it in the block.
+    printf '%s\n' 'N5 T1 M6' 'N10 TRAORI' 'N15 G93' 'N20 G1 X0 Y0 Z0 A-10 B20 F10' 'N30 G1 X10' 'N40 M30' >s.mpf
+    run 0 translate --from sajo-12000p --to sajo-12000p --to-dialect iso -o s.nc s.mpf
+    has_line s.nc 'N30 G1 X10\. Y0\. Z0\. A-10\. B20\. F10\.'
+    printf '%s\n' 'N5 T1 M6' 'N10 TRAORI' 'N20 G1 X0 Y0 Z0 A-10 B20 F100' 'N30 G1 X10 F20' 'N40 M30' >p.mpf
+    run 0 translate --from sajo-12000p --to sajo-12000p --to-dialect linuxcnc --feed inverse-time -o p.ngc p.mpf
+    has_line p.ngc 'N20 G1 X0 Y0 Z0 A-10 B20 F100'
+    has_line p.ngc 'N30 G1 G93 X10 Y0 Z0 A-10 B20 F2'
+    run 0 translate --from sajo-12000p --from-dialect linuxcnc --to sajo-12000p -o q.mpf p.ngc  # reads back
+    ;;
   *)
     echo "silent.sh: unknown row '$name'" >&2
     exit 2

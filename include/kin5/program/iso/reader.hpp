@@ -207,6 +207,7 @@ class basic_reader {
       error(l.extended->column, "G54.1 needs P n, the number of the extended work offset");
     machine_or_incremental(b);
     if (b.motion) state_.motion = b.motion;
+    inverse_time_feed(b, l);
     centre_or_vector(b, l);
     if (!b.machine_coordinates) {
       if (b.axes.x_mm) state_.last[0] = b.axes.x_mm;
@@ -511,6 +512,17 @@ class basic_reader {
     b.state.dwell_s = s;
     if (!b.only_dwell())
       error(l.dwell->column, "G4: a dwell takes a block of its own (N, X or P, and a comment)");
+  }
+
+  /// In inverse time (G93) F is not modal: every G1, G2, G3 block gives its own, the block's time
+  /// (Mitsubishi M700V §7.5, precaution 2: program error P62 without it; LinuxCNC User Manual,
+  /// G93: "an F word must appear on every line which has a G1, G2, or G3 motion"). A feed move
+  /// without one is refused at the block. Homing and machine-coordinate blocks are not judged.
+  void inverse_time_feed(const block& b, const line_words& l) {
+    if (!state_.inverse_time || b.feed || !b.moves() || b.machine_coordinates || l.homing || l.suppress) return;
+    if (!state_.motion || *state_.motion == motion_kind::rapid) return;
+    error(b.where.column, "feed move in inverse time (G93) without its own F: in G93 each G1, G2 and G3 block gives "
+                          "its time as F (write F in this block)");
   }
 
   /// Machine-coordinate and homing blocks: the axis words are not workpiece positions.
