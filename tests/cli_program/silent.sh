@@ -407,6 +407,25 @@ case "$name" in
     has_line p.ngc 'N30 G1 G93 X10 Y0 Z0 A-10 B20 F2'
     run 0 translate --from sajo-12000p --from-dialect linuxcnc --to sajo-12000p -o q.mpf p.ngc  # reads back
     ;;
+  # Bytes a terminal acts on never reach it from a diagnostic: the Heidenhain reader once quoted
+  # ESC sequences and 0xFF as read (a program could clear the screen or fake a diagnostic).
+  escaped-bytes)
+    esc=$(printf '\033')
+    printf '0 BEGIN PGM A MM\n1 FUNCTION TCPM F TCP AXIS POS %s[2J\n2 L X+0 Y+0 Z+50 B+10 C+0 F500 R\377\n3 END PGM %s[31m MM\n' \
+      "$esc" "$esc" >e.h
+    run 2 translate --from dmu-80p --to dmu-80p -o e2.h e.h
+    if grep -q "$esc" err || LC_ALL=C grep -q "$(printf '\377')" err; then report "a raw ESC or 0xFF byte in a message"; show err; fi
+    grep -qF '\x1B[31m' err || { report "no escaped ESC"; show err; }
+    nothing e2.h
+    ;;
+  # Dialect markers inside comments say nothing: a Siemens program noting LinuxCNC's M428 in a
+  # comment was not recognised, and was read as the machine's default dialect, LinuxCNC.
+  guess-outside-comments)
+    printf '%s\n' 'N10 T1 M6' 'N20 TRAORI ; M428 on LinuxCNC' 'N30 G1 X0 Y0 Z50 A-30 C0 F500' '(G234)' 'N40 TRAFOOF' 'N50 M30' >g.mpf
+    run 0 translate --from xyzac-trt --to xyzac-trt -o g.ngc g.mpf
+    grep -q 'reading g.mpf as siemens' err || { report "not read as siemens"; show err; }
+    has_line g.ngc 'N20 M428( \(.*\))?'
+    ;;
   *)
     echo "silent.sh: unknown row '$name'" >&2
     exit 2
