@@ -426,6 +426,17 @@ case "$name" in
     grep -q 'reading g.mpf as siemens' err || { report "not read as siemens"; show err; }
     has_line g.ngc 'N20 M428( \(.*\))?'
     ;;
+  # A LinuxCNC control acts on some comments: another dialect's `; ABORT, …` became
+  # `(ABORT, …)`, which stops the program there, and `; PY, …` would run Python.
+  linuxcnc-active-comment)
+    printf '%s\n' 'N5 T1 M6' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A-30 C0 F500 ; ABORT, stop here' '; PY, x=1' \
+      'N30 G1 X10 ; MSG, hello' 'N40 TRAFOOF' 'N50 M30' >a.mpf
+    run 0 translate --from xyzac-trt --to xyzac-trt --from-dialect siemens --to-dialect linuxcnc -o a.ngc a.mpf
+    has_line a.ngc 'N20 G1 X0 Y0 Z50 A-30 C0 F500 \(- ABORT, stop here\)'
+    has_line a.ngc '\(- PY, x=1\)'
+    has_line a.ngc 'N30 G1 X10 .*\(- MSG, hello\)'
+    run 0 translate --from xyzac-trt --to xyzac-trt --from-dialect linuxcnc -o b.ngc a.ngc  # reads back
+    ;;
   *)
     echo "silent.sh: unknown row '$name'" >&2
     exit 2

@@ -88,6 +88,16 @@ inline bool is_active(std::string_view c, std::string_view name) {
   return k < c.size() && c[k] == ',';
 }
 
+/// Whether comment text `c` would act on LinuxCNC (interp_convert.cc, `convert_comment`; the
+/// emccanon `PROBEOPEN`, `PROBECLOSE`): show a message, write a file, run Python or abort. Text
+/// another dialect kept as a plain comment must not say so in a LinuxCNC program.
+inline bool acts(std::string_view c) {
+  for (std::string_view name : {"MSG,", "DEBUG,", "PRINT,", "LOG,", "LOGOPEN,", "LOGAPPEND,", "LOGCLOSE", "PY,",
+                                "PYRUN,", "PYRELOAD", "ABORT,", "PROBEOPEN", "PROBECLOSE"})
+    if (is_active(c, name)) return true;
+  return false;
+}
+
 /// The active comment that changes what runs, as the problem that stops the line (User Manual,
 /// "G-code Overview": "Abort Messages"; the interpreter's `convert_comment`): `(ABORT, …)` ends
 /// the program there with an error, so the blocks after it never run; `(PY, …)`, `(PYRUN, …)`
