@@ -369,6 +369,74 @@ case "$name" in
     has_line ok.h '[0-9]+ ;done'
     count_is ok.h '[0-9]+ M30' 1
     ;;
+  # G43 H n after G43.4 (Haas G234) replaces it in modal group 08: tracking ends there, so the
+  # rotary move after it is machine axes with the length along Z, never a tracked tool tip
+  # (it once became `; G43 H1` and a move under TRAORI).
+  g43-ends-tcp)
+    printf '%s\n' '%' 'O1' 'G21 G90 G17' 'T1 M6' 'G43.4 H1' 'G1 X0. Y0. Z10. A0. C0. F100.' 'G43 H1' \
+      'G1 X10. A30.' 'G49' 'M30' >t.nc
+    run 2 translate --from ac-trunnion --from-dialect iso --to ac-trunnion --to-dialect siemens -o t.mpf t.nc
+    error_at 't.nc:8:1: error: rotary motion without tool-tip tracking'
+    nothing t.mpf
+    run 2 reverse --machine ac-trunnion --dialect iso -o t.apt t.nc
+    error_at 't.nc:8:1: error: rotary motion without tool-tip tracking'
+    nothing t.apt
+    sed 's/^G43.4 H1$/G234 H1/' t.nc >h.nc
+    run 2 translate --from ac-trunnion --from-dialect haas --to ac-trunnion --to-dialect siemens -o h.mpf h.nc
+    error_at 'h.nc:8:1: error: rotary motion without tool-tip tracking'
+    nothing h.mpf
+    sed '8d' t.nc >n.nc  # no move under G43: G43 writes tracking off, then the length alone
+    run 0 translate --from ac-trunnion --from-dialect iso --to ac-trunnion --to-dialect iso -o n2.nc n.nc
+    has_line n2.nc 'G49'
+    has_line n2.nc 'G43 H1'
+    ;;
+  # In inverse time (G93) F is not modal: a feed move without its own F was read and written with
+  # no F, and `--feed inverse-time` wrote its first move (unknown start, no block time) without F.
+  inverse-time-f)
+    printf '%s\n' '%' 'O1' 'T1 M6' 'G43.4 H1' 'G93' 'G1 X0. Y0. Z10. A0. C0. F10.' 'G1 X10.' 'G94' 'G49' 'M30' >g.nc
+    run 2 translate --from ac-trunnion --from-dialect iso --to ac-trunnion --to-dialect siemens -o g.mpf g.nc
+    error_at 'g.nc:7:1: error: feed move in inverse time (G93) without its own F'
+    nothing g.mpf
+    # The 840D keeps F in G93 until another is given: the ISO output writes it in the block.
+    printf '%s\n' 'N5 T1 M6' 'N10 TRAORI' 'N15 G93' 'N20 G1 X0 Y0 Z0 A-10 B20 F10' 'N30 G1 X10' 'N40 M30' >s.mpf
+    run 0 translate --from sajo-12000p --to sajo-12000p --to-dialect iso -o s.nc s.mpf
+    has_line s.nc 'N30 G1 X10\. Y0\. Z0\. A-10\. B20\. F10\.'
+    printf '%s\n' 'N5 T1 M6' 'N10 TRAORI' 'N20 G1 X0 Y0 Z0 A-10 B20 F100' 'N30 G1 X10 F20' 'N40 M30' >p.mpf
+    run 0 translate --from sajo-12000p --to sajo-12000p --to-dialect linuxcnc --feed inverse-time -o p.ngc p.mpf
+    has_line p.ngc 'N20 G1 X0 Y0 Z0 A-10 B20 F100'
+    has_line p.ngc 'N30 G1 G93 X10 Y0 Z0 A-10 B20 F2'
+    run 0 translate --from sajo-12000p --from-dialect linuxcnc --to sajo-12000p -o q.mpf p.ngc  # reads back
+    ;;
+  # Bytes a terminal acts on never reach it from a diagnostic: the Heidenhain reader once quoted
+  # ESC sequences and 0xFF as read (a program could clear the screen or fake a diagnostic).
+  escaped-bytes)
+    esc=$(printf '\033')
+    printf '0 BEGIN PGM A MM\n1 FUNCTION TCPM F TCP AXIS POS %s[2J\n2 L X+0 Y+0 Z+50 B+10 C+0 F500 R\377\n3 END PGM %s[31m MM\n' \
+      "$esc" "$esc" >e.h
+    run 2 translate --from dmu-80p --to dmu-80p -o e2.h e.h
+    if grep -q "$esc" err || LC_ALL=C grep -q "$(printf '\377')" err; then report "a raw ESC or 0xFF byte in a message"; show err; fi
+    grep -qF '\x1B[31m' err || { report "no escaped ESC"; show err; }
+    nothing e2.h
+    ;;
+  # Dialect markers inside comments say nothing: a Siemens program noting LinuxCNC's M428 in a
+  # comment was not recognised, and was read as the machine's default dialect, LinuxCNC.
+  guess-outside-comments)
+    printf '%s\n' 'N10 T1 M6' 'N20 TRAORI ; M428 on LinuxCNC' 'N30 G1 X0 Y0 Z50 A-30 C0 F500' '(G234)' 'N40 TRAFOOF' 'N50 M30' >g.mpf
+    run 0 translate --from xyzac-trt --to xyzac-trt -o g.ngc g.mpf
+    grep -q 'reading g.mpf as siemens' err || { report "not read as siemens"; show err; }
+    has_line g.ngc 'N20 M428( \(.*\))?'
+    ;;
+  # A LinuxCNC control acts on some comments: another dialect's `; ABORT, …` became
+  # `(ABORT, …)`, which stops the program there, and `; PY, …` would run Python.
+  linuxcnc-active-comment)
+    printf '%s\n' 'N5 T1 M6' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A-30 C0 F500 ; ABORT, stop here' '; PY, x=1' \
+      'N30 G1 X10 ; MSG, hello' 'N40 TRAFOOF' 'N50 M30' >a.mpf
+    run 0 translate --from xyzac-trt --to xyzac-trt --from-dialect siemens --to-dialect linuxcnc -o a.ngc a.mpf
+    has_line a.ngc 'N20 G1 X0 Y0 Z50 A-30 C0 F500 \(- ABORT, stop here\)'
+    has_line a.ngc '\(- PY, x=1\)'
+    has_line a.ngc 'N30 G1 X10 .*\(- MSG, hello\)'
+    run 0 translate --from xyzac-trt --to xyzac-trt --from-dialect linuxcnc -o b.ngc a.ngc  # reads back
+    ;;
   *)
     echo "silent.sh: unknown row '$name'" >&2
     exit 2

@@ -152,10 +152,13 @@ TEST_CASE("inverse-time feed is G93 with F = 1 over the block time and is refuse
       sajo_program(), kin5::test::options(kin5::feed_policy::inverse_time, kin5::program::id_of<kin5::program::siemens::dialect>()));
   REQUIRE(t.ok());
   const auto m = motions(t.output);
-  CHECK(m[0]->feed_mode == kin5::program::feed_unit::inverse_time);  // G93 from the first feed block
-  CHECK_FALSE(m[0]->feed.has_value());  // its start is unknown, so is its time: a warning says so
-  REQUIRE(t.warnings.size() == 1);
-  CHECK(t.warnings[0].where.line == 2);
+  // The first feed block's start is unknown, so is its time: in G93 it would have no F, so it
+  // keeps its per-minute F (G94), and G93 starts with the second.
+  CHECK(m[0]->feed_mode != kin5::program::feed_unit::inverse_time);
+  REQUIRE(m[0]->feed.has_value());
+  CHECK(*m[0]->feed == table1[0].fs);
+  CHECK(m[1]->feed_mode == kin5::program::feed_unit::inverse_time);
+  CHECK(t.warnings.empty());
   for (std::size_t i = 1; i < 4; ++i) {
     const row &p = table1[i - 1], &r = table1[i];
     const double tip = std::sqrt(std::pow(r.xs - p.xs, 2) + std::pow(r.ys - p.ys, 2) + std::pow(r.zs - p.zs, 2));

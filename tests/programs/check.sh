@@ -122,7 +122,7 @@ case $name in
   linuxcnc/oword_refused.ngc)
     expect 2 "11:1: error: o-word control flow (o100 while) is not supported" translate --from xyzac-trt --to dmu-80p ;;
   linuxcnc/zero_feed_refused.ngc)
-    expect 2 "12:1: error: inverse-time move without F" translate --from xyzac-trt --to dmu-80p --work-offset-map G54=1 ;;
+    expect 2 "12:1: error: feed move in inverse time (G93) without its own F" translate --from xyzac-trt --to dmu-80p --work-offset-map G54=1 ;;
   apt/blade_multax.cls)
     expect 2 "22:1: error: CUTCOM/LEFT: cutter radius compensation is not supported in CL data" post --machine dmu-80p ;;
   apt/hub_inch_inverse.cls)

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include <kin5/program/io.hpp>
+#include <kin5/program/printable.hpp>
 #include <kin5/reach.hpp>
 #include <kin5/reach/report_text.hpp>
 #include <kin5/translate/setup.hpp>
@@ -82,7 +83,7 @@ int pair_only(const machine_model& from, const machine_model& to, const match_ar
 }
 
 int with_program(const machine_model& from, const machine_model& to, const match_arguments& a) {
-  const std::string name = a.program == "-" ? "<stdin>" : a.program;
+  const std::string name = a.program == "-" ? "<stdin>" : kin5::program::printable(a.program);
   const auto bytes = read_file(a.program);
   if (!bytes) {
     std::fprintf(stderr, "kin5 match: cannot read %s: %s\n", name.c_str(), std::strerror(errno));

@@ -41,6 +41,7 @@
 #include <kin5/machines/tool_table_file.hpp>
 #include <kin5/program/io.hpp>
 #include <kin5/program/number.hpp>
+#include <kin5/program/printable.hpp>
 #include <kin5/translate/run_report.hpp>
 #include <kin5/translate/translate.hpp>
 #include <kin5/translate/stream.hpp>
@@ -64,7 +65,7 @@ std::vector<std::string_view> nc_dialect_names() {
 // ---- files --------------------------------------------------------------------------------
 
 /// The name diagnostics use for IN: the path as given, or `<stdin>` for '-'.
-std::string display_name(const std::string& path) { return path == "-" ? "<stdin>" : path; }
+std::string display_name(const std::string& path) { return path == "-" ? "<stdin>" : prog::printable(path); }
 
 /// The bytes of `path` ('-': stdin), read in binary mode; nothing, with `error` set, on failure.
 std::optional<std::string> read_bytes(const std::string& path, std::string& error) {
@@ -139,7 +140,8 @@ void print_in_source_order(std::vector<message> messages, const std::string& pre
     ++shown[k];
     const auto& where = m.diagnostic.where;
     if (where.line == 0)  // about the whole file
-      std::cerr << where.file.str() << ": " << m.severity << ": " << m.diagnostic.message << '\n';
+      std::cerr << prog::printable(where.file.str()) << ": " << m.severity << ": " << prog::printable(m.diagnostic.message)
+                << '\n';
     else
       std::cerr << m.diagnostic.to_string(m.severity) << '\n';
   }
@@ -184,7 +186,7 @@ std::size_t errors_by_run_not_kept(const translation& t, const std::vector<unrea
 /// Says on stderr that a file cannot be read or written, and records it in `a` as an error about
 /// the whole `file` (line 0; `file` as the report names it).
 void file_failure(run_account& a, const std::string& prefix, const std::string& file, std::string message) {
-  std::cerr << prefix << message << '\n';
+  std::cerr << prefix << prog::printable(message) << '\n';
   a.errors.push_back({prog::source_location{file, 0, 0}, std::move(message)});
 }
 
@@ -237,7 +239,7 @@ class report_file {
     file_->buffer() = to_json(a);
     committed_ = file_->ok() && file_->commit();
     failed_ = !committed_;
-    if (failed_) std::cerr << prefix_ << "cannot write the report '" << path_ << "': " << file_->error() << '\n';
+    if (failed_) std::cerr << prefix_ << "cannot write the report '" << prog::printable(path_) << "': " << file_->error() << '\n';
     return committed_;
   }
 

@@ -19,6 +19,7 @@
 
 #include "../core/vec.hpp"
 #include "dialect_id.hpp"
+#include "printable.hpp"
 #include "resolution.hpp"
 #include "state_words.hpp"
 
@@ -183,10 +184,12 @@ struct diagnostic {
   /// The option that resolves it ("--allow unset-rotary", "--angle-tolerance"), when one does.
   std::string option{};
 
-  /// `FILE:LINE:COL: error: message`, the format compilers use, so editors can jump to it.
+  /// `FILE:LINE:COL: error: message`, the format compilers use, so editors can jump to it. The
+  /// file name and the message may quote the input: bytes a terminal acts on are written `\xHH`
+  /// (printable.hpp), so a program cannot send escape sequences through a diagnostic.
   std::string to_string(std::string_view severity = "error") const {
-    return where.file.str() + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) + ": " +
-           std::string(severity) + ": " + message;
+    return printable(where.file.str()) + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
+           ": " + std::string(severity) + ": " + printable(message);
   }
 };
 

@@ -167,12 +167,36 @@ constexpr std::string_view skip_block_number(std::string_view line) {
   return line.substr(i);
 }
 
+/// Calls `f` with each piece of `line` outside comments, in order, as any dialect writes them:
+/// `( … )` (ISO, Haas, LinuxCNC; Siemens strings and call arguments sit there too), to the end of
+/// the line after `;` (Siemens, Heidenhain, LinuxCNC) or `$$` (APT), and whole lines that start
+/// (after a block number) with `*` (Heidenhain) or `PPRINT` (APT). A marker in a comment says
+/// nothing about the language (`; converted from G234` in a Siemens program).
+template <class F>
+constexpr void for_each_code_piece(std::string_view line, F&& f) {
+  const std::string_view statement = skip_block_number(line);
+  if (!statement.empty() && statement.front() == '*') return;
+  if (starts_with_keyword(statement, "PPRINT")) return;
+  std::size_t start = 0, i = 0;
+  for (; i < line.size(); ++i) {
+    const char c = line[i];
+    if (c == ';' || (c == '$' && i + 1 < line.size() && line[i + 1] == '$')) break;
+    if (c != '(') continue;
+    f(line.substr(start, i - start));
+    const std::size_t close = line.find(')', i);
+    if (close == std::string_view::npos) return;
+    start = close + 1;
+    i = close;
+  }
+  f(line.substr(start, i - start));
+}
+
 }  // namespace detail
 
 /// The dialect of `text` when it carries a marker that only one dialect uses, else nothing.
 ///
 /// Markers are each entry's `markers` (a keyword at the start of a block, after an optional block
-/// number, or anywhere in a line). Text with markers of two dialects, or none, gives nothing: the
+/// number, or anywhere in a line), outside comments (`detail::for_each_code_piece`). Text with markers of two dialects, or none, gives nothing: the
 /// caller then decides (for example with `default_dialect`). Cost: one pass over the first 200 lines.
 template <class List = dialects>
 constexpr std::optional<dialect> guess_dialect(std::string_view text) {
@@ -181,13 +205,16 @@ constexpr std::optional<dialect> guess_dialect(std::string_view text) {
   while (start < text.size() && lines < 200) {
     std::size_t end = start;
     while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
-    const std::string_view line = text.substr(start, end - start);
-    const std::string_view statement = detail::skip_block_number(line);
-    for_each_dialect<List>([&]<class D>(std::type_identity<D>, std::size_t i) {
-      for (const marker& m : D::markers)
-        if (m.where == marker::place::block_start ? starts_with_keyword(statement, m.keyword)
-                                                  : detail::contains_keyword(line, m.keyword))
-          seen[i] = true;
+    bool first = true;  // the piece a block starts with
+    detail::for_each_code_piece(text.substr(start, end - start), [&](std::string_view piece) {
+      const std::string_view statement = detail::skip_block_number(piece);
+      for_each_dialect<List>([&]<class D>(std::type_identity<D>, std::size_t i) {
+        for (const marker& m : D::markers)
+          if (m.where == marker::place::block_start ? first && starts_with_keyword(statement, m.keyword)
+                                                    : detail::contains_keyword(piece, m.keyword))
+            seen[i] = true;
+      });
+      first = false;
     });
     start = end + 1;
     ++lines;

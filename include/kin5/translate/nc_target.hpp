@@ -529,9 +529,14 @@ class nc_target {
         inverse_time_error_ = true;
       }
       o.feed = inverse_time_feed_per_min(*s.feed_mm_per_min, path_length(s));
-      if (!o.feed)
-        out.warnings.push_back(at(b, s.start_source_mm ? "zero-length move: no inverse-time F written"
-                                                       : "start point unknown, so is the block time: no inverse-time F written"));
+      if (!o.feed) {
+        // No block time to invert (a move from an unknown start, or one of zero length): in G93
+        // every feed move needs its F, so this one keeps its per-minute F in G94, as `--feed
+        // tcp` writes it; the next feed move returns to G93.
+        o.feed = *s.feed_mm_per_min;
+        if (output_inverse_time_) o.feed_mode = program::feed_unit::per_minute, output_inverse_time_ = false;
+        return;
+      }
       if (!output_inverse_time_) o.feed_mode = program::feed_unit::inverse_time, output_inverse_time_ = true;
     }
   }

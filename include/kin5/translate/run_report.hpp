@@ -261,18 +261,7 @@ inline run_account account_of(const translation& t, const stream_result& run, co
 
 namespace json_detail {
 
-/// The length of the well-formed UTF-8 sequence at the start of `s`, or 0.
-inline std::size_t utf8_length(std::string_view s) {
-  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(s[i]); };
-  const unsigned char c = byte(0);
-  const std::size_t n = c < 0x80 ? 1 : c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
-  if (n == 0 || s.size() < n) return 0;
-  for (std::size_t i = 1; i < n; ++i)
-    if ((byte(i) & 0xC0) != 0x80) return 0;
-  if (n == 3 && ((c == 0xE0 && byte(1) < 0xA0) || (c == 0xED && byte(1) >= 0xA0))) return 0;  // overlong, surrogate
-  if (n == 4 && ((c == 0xF0 && byte(1) < 0x90) || (c == 0xF4 && byte(1) >= 0x90))) return 0;  // overlong, > U+10FFFF
-  return n;
-}
+using program::utf8_length;
 
 /// `s` as a JSON string: quotes, backslashes and control characters escaped; a byte that is
 /// not part of well-formed UTF-8 becomes U+FFFD, so that the report is valid JSON whatever the input.

@@ -138,3 +138,49 @@ TEST_CASE("inverse time: into Heidenhain a move whose tip does not move is refus
         "t.nc:3:1: error: inverse-time move whose tool tip does not move (a rotation alone) cannot keep its time in "
         "heidenhain, which has no inverse-time feed");
 }
+
+TEST_CASE("inverse time: a feed move without its own F is refused at the block by the Fanuc-grammar readers") {
+  // In G93 F is not modal there: each G1, G2, G3 block gives its time (docs/dialects/iso.md).
+  // A rapid needs none; the row's second move lacks F.
+  const std::string message =
+      "error: feed move in inverse time (G93) without its own F: in G93 each G1, G2 and G3 block gives its time as F "
+      "(write F in this block)";
+  struct row {
+    program::dialect d;
+    std::string text, where;
+  };
+  const std::vector<row> rows = {
+      {program::id_of<program::iso::dialect>(), "G93 G1 X10. F20.\nG0 X0.\n  G1 X20.\n", "t:3:3: "},
+      {program::id_of<program::haas::dialect>(), "G93 G1 X10. F20.\nG0 X0.\n  G1 X20.\n", "t:3:3: "},
+      {program::id_of<program::linuxcnc::dialect>(), "G93 G1 X10 F20\nG0 X0\n  G1 X20\n", "t:3:3: "},
+      {program::id_of<program::iso::dialect>(), "G93\nG2 X10. R5. F2.\nX0. R5.\n", "t:3:1: "},
+  };
+  for (const row& r : rows) {
+    INFO(r.text);
+    const program::read_result got = program::read(r.d, r.text, "t");
+    REQUIRE(got.errors.size() == 1);
+    CHECK(got.errors.front().to_string() == r.where + message);
+    // The same program with F on its last move too reads.
+    const bool point = r.d != program::id_of<program::linuxcnc::dialect>();
+    std::string fixed = r.text;
+    fixed.insert(fixed.size() - 1, point ? " F30." : " F30");
+    CHECK(program::read(r.d, fixed, "t").ok());
+  }
+}
+
+TEST_CASE("inverse time: a Siemens feed move without F takes the F in effect since G93, or is refused") {
+  // On the 840D F stays in effect, and a switch between G93 and G94 needs a new one
+  // (docs/dialects/siemens.md): the block gets the F in effect written into it, its time.
+  const auto siemens = program::id_of<program::siemens::dialect>();
+  const program::read_result carried = program::read(siemens, "G93 G1 X10 F20\nX20\nG0 X0\nG1 X5\n", "t");
+  REQUIRE(carried.ok());
+  REQUIRE(carried.parsed.blocks.size() == 4);
+  CHECK(carried.parsed.blocks[1].feed == 20.0);
+  CHECK_FALSE(carried.parsed.blocks[2].feed.has_value());  // a rapid takes none
+  CHECK(carried.parsed.blocks[3].feed == 20.0);
+  const program::read_result switched = program::read(siemens, "G94 G1 X0 F100\nG93\n  G1 X20\n", "t");
+  REQUIRE(switched.errors.size() == 1);
+  CHECK(switched.errors.front().to_string() ==
+        "t:3:3: error: feed move in inverse time (G93) without F since G93: the block's time is not known (write F "
+        "in this block)");
+}

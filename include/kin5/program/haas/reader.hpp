@@ -7,6 +7,7 @@
 /// |---|---|
 /// | `G234 H n` | tool center point control (TCPC) on, with the length of offset n (`tcp`, `length_register`) |
 /// | `G49` | TCPC and length compensation off (as ISO reads it) |
+/// | `G43 H n` after `G234` | TCPC off, length n on (G43 replaces G234 in group 08, as ISO reads G43.4) |
 /// | `G154 P n` (n = 1 … 99), `G110` … `G129` | additional work offset n (`work_offset`, family `extended`; G110 … G129 are P1 … P20) |
 /// | `G04 P t` | a dwell: t seconds with a decimal point, t milliseconds without one (`state.dwell_s`) |
 /// | `G255` | dynamic work offset off: kept (G254, which switches it on, is refused) |

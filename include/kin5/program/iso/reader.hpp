@@ -5,7 +5,7 @@
 /// `G53` / `G28` / `G30` (machine coordinates), M30/M2, G20/G21 (an inch program's lengths and
 /// per-minute feeds are converted to mm: units.hpp). Tool length compensation: `G43 H n`,
 /// `G43.4 H n`, `G43.5 H n` switch it on with offset n (without H: the last H of the program),
-/// `G49` off (`state.length_compensation`, `length_register`). Cutter radius compensation:
+/// `G43` after `G43.4` / `G43.5` ends tracking (one modal group, 08), `G49` off (`state.length_compensation`, `length_register`). Cutter radius compensation:
 /// `G41 D n` / `G42 D n` (without D: the last D), `G40` (`state.radius_compensation`,
 /// `radius_register`; start-up and cancel in an arc refused). Errors: G91 (except in `G91 G28`/`G30`
 /// homing blocks), G95, a unit change after motion, active frames (G68, G68.2, G51, G52 with
@@ -207,6 +207,7 @@ class basic_reader {
       error(l.extended->column, "G54.1 needs P n, the number of the extended work offset");
     machine_or_incremental(b);
     if (b.motion) state_.motion = b.motion;
+    inverse_time_feed(b, l);
     centre_or_vector(b, l);
     if (!b.machine_coordinates) {
       if (b.axes.x_mm) state_.last[0] = b.axes.x_mm;
@@ -434,9 +435,13 @@ class basic_reader {
       state_.inverse_time = g == 930;
       b.feed_mode = g == 930 ? feed_unit::inverse_time : feed_unit::per_minute;
     } else if (g == 430) {
-      return;  // tool length compensation, with its H: `length_offset`
+      // G43 replaces G43.4 / G43.5 in modal group 08: tracking ends, the length stays (its H:
+      // `length_offset`).
+      if (state_.tcp) b.tcp = false;
+      state_.tcp = state_.vector_tcp = false;
     } else if (g == 434 || g == 435 || g == 490) {
       b.tcp = g != 490;
+      state_.tcp = g != 490;
       state_.vector_tcp = g == 435;
       if (g == 490) b.state.length_compensation = false;
     } else if (g == 530 || g == 280 || g == 300) {
@@ -507,6 +512,17 @@ class basic_reader {
     b.state.dwell_s = s;
     if (!b.only_dwell())
       error(l.dwell->column, "G4: a dwell takes a block of its own (N, X or P, and a comment)");
+  }
+
+  /// In inverse time (G93) F is not modal: every G1, G2, G3 block gives its own, the block's time
+  /// (Mitsubishi M700V §7.5, precaution 2: program error P62 without it; LinuxCNC User Manual,
+  /// G93: "an F word must appear on every line which has a G1, G2, or G3 motion"). A feed move
+  /// without one is refused at the block. Homing and machine-coordinate blocks are not judged.
+  void inverse_time_feed(const block& b, const line_words& l) {
+    if (!state_.inverse_time || b.feed || !b.moves() || b.machine_coordinates || l.homing || l.suppress) return;
+    if (!state_.motion || *state_.motion == motion_kind::rapid) return;
+    error(b.where.column, "feed move in inverse time (G93) without its own F: in G93 each G1, G2 and G3 block gives "
+                          "its time as F (write F in this block)");
   }
 
   /// Machine-coordinate and homing blocks: the axis words are not workpiece positions.

@@ -45,6 +45,7 @@ struct line_words {
 struct reader_state {
   std::optional<motion_kind> motion;
   arc_plane plane = arc_plane::xy;
+  bool tcp = false;           // G43.4 or G43.5 active (modal group 08): G43 or G49 ends it
   bool vector_tcp = false;    // G43.5 active
   bool incremental = false;   // G91 from a homing block, until G90
   std::size_t incremental_line = 0;

@@ -342,7 +342,10 @@ class writer {
       const motion_kind m = b.feed_rapid ? motion_kind::rapid : *b.motion;
       words_.push_back(m == motion_kind::rapid ? "G0" : m == motion_kind::linear ? "G1" : m == motion_kind::arc_cw ? "G2" : "G3");
     }
-    if (b.tcp) {
+    // Tracking off with the length kept on is `G43 H n`, which replaces G43.4 / G43.5 (G234) in
+    // modal group 08; G49 would drop the length too.
+    const bool length_ends_tcp = b.tcp && !*b.tcp && b.state.length_compensation == true;
+    if (b.tcp && !length_ends_tcp) {
       vector_tcp_ = *b.tcp && vector_tcp_ahead && options_.spell.vector_tcp;
       words_.push_back(std::string(*b.tcp ? tcp_code() : "G49"));
       // H: the register the block names (ISO's own G43.4 H n, LinuxCNC's G43 H n), else, as
@@ -357,7 +360,8 @@ class writer {
                     ": tool-tip tracking switched on before any tool change: no tool gives its length offset H");
       if (*b.tcp && h) words_.push_back(code('H', *h));
     }
-    if (b.state.length_compensation && !b.tcp) {  // without tool-tip tracking: G43 [H n] / G49
+    if (b.state.length_compensation && (!b.tcp || length_ends_tcp)) {  // without tracking: G43 [H n] / G49
+      if (length_ends_tcp) vector_tcp_ = false;
       words_.push_back(*b.state.length_compensation ? "G43" : "G49");
       const auto h = b.state.length_register ? b.state.length_register : active_tool_;
       if (*b.state.length_compensation && !same_ && !h)

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "../iso/lexer.hpp"
 #include "../lexing.hpp"
@@ -47,6 +48,72 @@ inline std::optional<lex_problem> o_word(std::string_view s, std::size_t i, std:
   }
   if (i < end && (s[i] == 'o' || s[i] == 'O'))
     return lex_problem{i + 1, "o-word control flow (" + detail::o_word_text(s, i, end) + ") is not supported"};
+  return std::nullopt;
+}
+
+/// The comment of the line from `i` to `end` that LinuxCNC acts on: the last one (User Manual,
+/// "G-code Overview", "Comments": only the last comment of a line is read as an active comment;
+/// a `;` comment is always the last). Its text without the delimiters and its column; nothing
+/// for a line without comments or with one not closed (the lexer refuses that).
+inline std::optional<std::pair<std::string_view, std::size_t>> last_comment(std::string_view s, std::size_t i,
+                                                                            std::size_t end) {
+  std::optional<std::pair<std::string_view, std::size_t>> last;
+  while (i < end) {
+    if (s[i] == ';') return std::pair{s.substr(i + 1, end - i - 1), i + 1};
+    if (s[i] != '(') {
+      ++i;
+      continue;
+    }
+    const std::size_t close = s.find(')', i);
+    if (close == std::string_view::npos || close >= end) return last;
+    last = std::pair{s.substr(i + 1, close - i - 1), i + 1};
+    i = close + 1;
+  }
+  return last;
+}
+
+/// Whether comment text `c` is the active comment `name` (upper case, with its comma when it
+/// takes one): after leading blanks, in either case, blanks allowed before the comma (the
+/// manual's "Messages" allows them; the interpreter does not, so kin5 takes both spellings).
+inline bool is_active(std::string_view c, std::string_view name) {
+  std::size_t k = lexing::skip_blanks(c, 0);
+  const bool comma = !name.empty() && name.back() == ',';
+  const std::string_view word = comma ? name.substr(0, name.size() - 1) : name;
+  for (char l : word) {
+    if (k >= c.size() || to_upper(c[k]) != l) return false;
+    ++k;
+  }
+  if (!comma) return true;  // `PYRELOAD`: the interpreter compares the start only
+  k = lexing::skip_blanks(c, k);
+  return k < c.size() && c[k] == ',';
+}
+
+/// Whether comment text `c` would act on LinuxCNC (interp_convert.cc, `convert_comment`; the
+/// emccanon `PROBEOPEN`, `PROBECLOSE`): show a message, write a file, run Python or abort. Text
+/// another dialect kept as a plain comment must not say so in a LinuxCNC program.
+inline bool acts(std::string_view c) {
+  for (std::string_view name : {"MSG,", "DEBUG,", "PRINT,", "LOG,", "LOGOPEN,", "LOGAPPEND,", "LOGCLOSE", "PY,",
+                                "PYRUN,", "PYRELOAD", "ABORT,", "PROBEOPEN", "PROBECLOSE"})
+    if (is_active(c, name)) return true;
+  return false;
+}
+
+/// The active comment that changes what runs, as the problem that stops the line (User Manual,
+/// "G-code Overview": "Abort Messages"; the interpreter's `convert_comment`): `(ABORT, …)` ends
+/// the program there with an error, so the blocks after it never run; `(PY, …)`, `(PYRUN, …)`
+/// and `(PYRELOAD)` run embedded Python, which may set parameters and so change the motion.
+/// `(MSG, …)`, `(DEBUG, …)`, `(PRINT, …)`, the `LOG` and `PROBEOPEN` comments only show or
+/// record text: comments.
+inline std::optional<lex_problem> stopping_comment(std::string_view s, std::size_t i, std::size_t end) {
+  const auto c = last_comment(s, i, end);
+  if (!c) return std::nullopt;
+  if (is_active(c->first, "ABORT,"))
+    return lex_problem{c->second, "(ABORT, …) stops the program here with an error on LinuxCNC: kin5 writes no "
+                                  "abort in another dialect (end the program before it, M2, or remove it)"};
+  for (std::string_view py : {"PY,", "PYRUN,", "PYRELOAD"})
+    if (is_active(c->first, py))
+      return lex_problem{c->second, "(" + std::string(py) + (py.back() == ',' ? " …)" : ")") + ": embedded Python is not supported (it may set "
+                                    "parameters and change the motion)"};
   return std::nullopt;
 }
 

@@ -16,7 +16,7 @@
 /// read-only predefined one (`#<_x>`) and expressions are refused.
 /// Refused at the word: `M430`, `G12.1` with another type, a kinematics switch on a line with
 /// motion or M6, `G43.1`/`G43.2`, ISO codes LinuxCNC does not have (`G43.4`, `G43.5`, `G54.1`,
-/// `G50`), splines `G5`–`G5.3`, `G90.1`, `M61`, `H` without G43, `D` without G41/G42, `G41.1`/`G42.1`, `G4`
+/// `G50`), `(ABORT, …)` and `(PY, …)` as a line's last comment (lexer.hpp), splines `G5`–`G5.3`, `G90.1`, `M61`, `H` without G43, `D` without G41/G42, `G41.1`/`G42.1`, `G4`
 /// with axis words, without P, with a negative P or with other words (`G4 P1.5` alone is
 /// `state.dwell_s`), o-words (lexer.hpp); under tracking, a move while G43 does not hold the
 /// loaded tool's length (the point programmed would not be the tool tip).
@@ -70,7 +70,12 @@ inline std::string g_name(int g) {
 /// length, whether tracking is on.
 class own_words {
  public:
-  std::optional<lex_problem> line(std::string_view s, std::size_t first, std::size_t end) { return o_word(s, first, end); }
+  /// Refuses a line that starts with an o-word, or whose active comment stops the program or runs
+  /// Python (lexer.hpp).
+  std::optional<lex_problem> line(std::string_view s, std::size_t first, std::size_t end) {
+    if (auto p = o_word(s, first, end)) return p;
+    return stopping_comment(s, first, end);
+  }
 
   /// Why the program may not set parameter `#n`: #1–#5000 are the program's (#31–#5000 the
   /// G-code user parameters), the rest the control's (probe results, G28/G30 homes, offsets).

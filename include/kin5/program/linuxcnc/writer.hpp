@@ -32,6 +32,7 @@
 #include "../text.hpp"
 #include "../tool_length.hpp"
 #include "../work_offsets.hpp"
+#include "lexer.hpp"
 #include "vocabulary.hpp"
 
 namespace kin5::program::iso {
@@ -57,6 +58,14 @@ class writer {
   /// Appends the lines of block `b` to `out`; throws `std::invalid_argument` naming the block
   /// when LinuxCNC cannot say it.
   void write(std::string& out, const block& b) {
+    // Another dialect's comment that reads as an active one here (`; ABORT, …` would stop the
+    // program, `; PY, …` run Python): written with `- ` before it, a plain comment.
+    if (!same_ && ((b.comment && acts(*b.comment)) || (b.passthrough && acts(b.text)))) {
+      block quiet = b;
+      if (b.comment && acts(*b.comment)) quiet.comment = "- " + *b.comment;
+      if (b.passthrough && acts(b.text)) quiet.text = "- " + b.text;
+      return write(out, quiet);
+    }
     if (!same_) {
       if (b.framing) return;  // another dialect's frame (`%`, `;$PATH=`): the `%` lines stand for it
       if (end_.after_end(b)) {

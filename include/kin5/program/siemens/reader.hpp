@@ -167,6 +167,24 @@ inline void dwell(line_parse& p, std::vector<diagnostic>& errors) {
     errors.push_back({at(*p.dwell_column), "G4: the 840D takes a dwell in a block of its own (N, G4 F and a comment)"});
 }
 
+/// In inverse time (G93) F stays in effect until another is given, and a switch between G93 and
+/// G94 needs a new one (S1 §2.7 "Feed control": F "remains active until a new feedrate is
+/// programmed"; after switching between G93, G94 and G95 it "has to be reprogrammed"). Every
+/// other dialect's G93 takes an F in each feed block, so a G1, G2, G3 block without F gets the
+/// one in effect written into it (`b.feed`): its time. Without one since the switch, refused at
+/// the block.
+inline void inverse_time_feed(block& b, modal_state& state, std::optional<motion_kind> before,
+                              std::vector<diagnostic>& errors) {
+  if (b.feed_mode) state.inverse_feed.reset();
+  if (!state.inverse_time) return;
+  if (b.feed) state.inverse_feed = *b.feed;
+  const auto kind = b.motion ? b.motion : before;
+  if (b.feed || !b.moves() || b.machine_coordinates || !kind || *kind == motion_kind::rapid) return;
+  if (state.inverse_feed) b.feed = *state.inverse_feed;
+  else errors.push_back({b.where, "feed move in inverse time (G93) without F since G93: the block's time is not "
+                                  "known (write F in this block)"});
+}
+
 /// M2 / M30 end the program: carried by `program_end` only, not also in `m_codes`.
 inline void program_end(block& b, const modal_state& state) {
   const bool m30 = std::find(b.m_codes.begin(), b.m_codes.end(), 30) != b.m_codes.end();
@@ -211,6 +229,7 @@ inline void finish(line_parse& p, modal_state& state, read_result& result) {
       tool_axis_vector(p, found);
       arc(p, state, found);
       compensation(p, state, motion_before, found);
+      inverse_time_feed(b, state, motion_before, found);
       for (auto& d : found) keep_or_count(p.errors, p.errors_not_kept, std::move(d));
     }
     state.move(b);
@@ -300,6 +319,7 @@ inline bool read_plain_motion(std::string_view line, block& b, modal_state& stat
     if (!words.take(letter, n.value)) return false;
   }
   if (is_arc(words.motion ? words.motion : state.motion) && words.axes.has_linear()) return false;  // needs its centre
+  if (state.inverse_time) return false;  // the full reader carries the F of inverse time (`inverse_time_feed`)
   b.number = words.number;
   b.motion = words.motion;
   b.axes = words.axes;

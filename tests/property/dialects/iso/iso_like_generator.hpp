@@ -52,6 +52,7 @@ struct state {
   arc_plane plane = arc_plane::xy;
   bool vector_tcp = false;
   bool incremental = false;  // G91 of a homing block: the next block says G90
+  bool inverse_time = false;  // G93: every feed move gives its F
   std::optional<double> last[3];
 };
 
@@ -151,7 +152,7 @@ inline void draw_motion(item& it, state& st, const flavour& f) {
   }
   for (int k = 0; k < 3; ++k)
     if (have[k]) st.last[k] = pos[k];
-  if (*rc::gen::inRange(0, 3) == 0) {
+  if (*rc::gen::inRange(0, 3) == 0 || (st.inverse_time && effective != motion_kind::rapid)) {
     const double f = draw_decimal(0.1, 20000, 1);
     b.feed = f;
     it.words.push_back(spell_word('F', f, 1));
@@ -223,6 +224,10 @@ inline item draw_item(state& st, const flavour& f) {
       if (st.vector_tcp && *rc::gen::arbitrary<bool>()) {
         b.axes.tool_axis = kin5::vec3{0, 0, 1};
         it.words.push_back("I0 J0 K1.");
+        if (st.inverse_time && st.motion && *st.motion != motion_kind::rapid) {  // a feed move: its F
+          b.feed = 100;
+          it.words.push_back("F100.");
+        }
       }
       it.words.push_back(spell_code('H', h));
       b.state.length_compensation = true;  // G43.4 H n: the length of offset n, with tracking
@@ -232,6 +237,7 @@ inline item draw_item(state& st, const flavour& f) {
     case 8: {
       const bool inverse = *rc::gen::arbitrary<bool>();
       b.feed_mode = inverse ? feed_unit::inverse_time : feed_unit::per_minute;
+      st.inverse_time = inverse;
       it.words.push_back(draw_case(inverse ? "G93" : "G94"));
       break;
     }

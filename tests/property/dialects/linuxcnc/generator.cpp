@@ -35,6 +35,7 @@ struct state {
   std::optional<double> last[3];
   bool tracking = false, length = false;  // M428 on; G43 holds the loaded tool's length
   std::optional<long long> loaded;        // the tool of the last M6: G43 without H is its length
+  bool inverse_time = false;              // G93: every feed move gives its F
 };
 
 std::string spell_code(char letter, int v) {
@@ -99,7 +100,7 @@ void draw_motion(item& it, state& st) {
   const std::optional<double>* xyz[3] = {&b.axes.x_mm, &b.axes.y_mm, &b.axes.z_mm};
   for (int k = 0; k < 3; ++k)
     if (*xyz[k]) st.last[k] = **xyz[k];
-  if (*rc::gen::inRange(0, 3) == 0) {
+  if (*rc::gen::inRange(0, 3) == 0 || (st.inverse_time && *st.motion != motion_kind::rapid)) {
     b.feed = draw_decimal(0.1, 20000, 1);
     it.words.push_back(spell_word('F', *b.feed, 1));
   }
@@ -209,6 +210,7 @@ item draw_item(state& st) {
     case 7: draw_tool(it, st); break;
     case 8:
       b.feed_mode = *rc::gen::arbitrary<bool>() ? feed_unit::inverse_time : feed_unit::per_minute;
+      st.inverse_time = b.feed_mode == feed_unit::inverse_time;
       it.words.push_back(draw_case(b.feed_mode == feed_unit::inverse_time ? "G93" : "G94"));
       break;
     case 9:

@@ -74,6 +74,7 @@ struct state {
   arc_plane plane = arc_plane::xy;
   std::array<std::optional<double>, 3> position;
   std::optional<std::string> name;
+  bool inverse_time = false;  // G93: every feed move is drawn with its F (the reader carries one into a move without)
 };
 
 struct line {
@@ -177,7 +178,8 @@ void move_block(line& l, state& s) {
       l.words.push_back(draw_case("CR") + draw_blanks(1) + "=" + draw_blanks(1) + spell_value(r, 3));
     }
   }
-  if (coin()) b.feed = draw_decimal(0, 200'000, 1), l.words.push_back(spell_address("F", *b.feed, 1));
+  const bool needs_feed = s.inverse_time && s.motion != motion_kind::rapid && b.moves();
+  if (coin() || needs_feed) b.feed = draw_decimal(0, 200'000, 1), l.words.push_back(spell_address("F", *b.feed, 1));
   if (*rc::gen::inRange(0, 4) == 0) b.spindle_rpm = draw_decimal(0, 240'000, 1), l.words.push_back(spell_address("S", *b.spindle_rpm, 1));
   if (*rc::gen::inRange(0, 6) == 0) {
     const int m = *rc::gen::element(3, 4, 5, 8, 9);
@@ -215,6 +217,7 @@ line draw_line(state& s) {
       if (coin()) {
         const bool inverse = coin();
         b.feed_mode = inverse ? feed_unit::inverse_time : feed_unit::per_minute;
+        s.inverse_time = inverse;
         l.words.push_back(spell_code('G', inverse ? 93 : 94));
       }
       if (coin()) add_kept(l, s, *rc::gen::elementOf(kept_pool));
