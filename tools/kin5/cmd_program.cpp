@@ -49,6 +49,7 @@
 #include "format.hpp"
 #include "machine_option.hpp"
 #include "output_file.hpp"
+#include "same_file.hpp"
 
 namespace kin5::tool {
 namespace {
@@ -364,6 +365,10 @@ int translate_and_write(const job& j, std::string bytes, prog::dialect dialect, 
 /// and the report (--report) whatever the outcome.
 int execute(const job& j) {
   const std::string prefix = "kin5 " + j.command + ": ";
+  if (const auto why = overwrite_refusal(j.input_path, j.output_path, j.report_path)) {  // nothing touched
+    std::cerr << prefix << *why << '\n';
+    return exit_codes::usage;
+  }
   report_file report(j, prefix);  // checked, as OUT is, before the input is read
   if (!report.usage().empty()) {
     std::cerr << prefix << report.usage() << '\n';
