@@ -7,6 +7,7 @@
 #include <iterator>
 #include <string>
 #include <string_view>
+#include <tuple>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
@@ -322,6 +323,21 @@ TEST_CASE("machine files and tool tables nest at most 32 deep and keep keys shor
   // Brackets, dots and '=' inside strings and comments count for nothing.
   CHECK_FALSE(toml_bounds_violation("s = \"" + std::string(100, '[') + dotted(100) + "\" # " + std::string(100, '{') +
                                     "\nt = '''\n" + std::string(100, '[') + "\n'''\nu = \"\"\"a\\\"\"\"\"\n"));
+  // Non-ASCII outside strings and comments, or first after a backslash in a string: toml++ 3.3
+  // reached TOML_UNREACHABLE on them (undefined behaviour; found by machine_file_fuzz).
+  for (const auto& [text, line, column] : {std::tuple{std::string("_\xcf\xa9"), 1u, 2u},
+                                           std::tuple{std::string("\xcc\xaa"), 1u, 1u},
+                                           std::tuple{std::string("1=-c1'\xcc\x87'"), 1u, 7u},
+                                           std::tuple{std::string("\"\"\"\\\xef\xbb\xa2\x10"), 1u, 5u},
+                                           std::tuple{std::string("s = \"\"\"\\\n\xc2\xa7\"\"\"\n"), 2u, 1u}}) {
+    const auto v = toml_bounds_violation(text);
+    REQUIRE(v);
+    CHECK(v->line == line);
+    CHECK(v->column == column);
+    CHECK(v->message.find("non-ASCII") != std::string::npos);
+    CHECK(parse_machine_file(text, "m.toml").errors.front().message.find("non-ASCII") != std::string::npos);
+  }
+  CHECK_FALSE(toml_bounds_violation("s = \"\xc2\xa7\" # \xcf\xa9\nt = '\xcf\xa9'\n"));
   // Size: 4 MiB of text, and no more.
   CHECK(toml_bounds_violation(std::string(toml_bounds::max_file_bytes + 1, '\n')));
   CHECK_FALSE(toml_bounds_violation(std::string(toml_bounds::max_file_bytes, '\n')));
