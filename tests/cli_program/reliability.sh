@@ -265,6 +265,160 @@ case "$name" in
     grep -q '^kin5 translate: 19900 more errors not shown' err || { report "no count of the rest"; tail -n 3 err >&2; }
     grep -q '^kin5 translate: 20000 errors in bad.mpf' err || report "total not given"
     ;;
+  same-file)
+    # -o or --report naming the input file is refused before anything is read or written, exit 1:
+    # directly, through a symbolic link, by another hard link, '-' read from it, stdout
+    # redirected onto it; and -o and --report naming one file. Every program command.
+    cp "$example" in.mpf
+    ln -s in.mpf link.mpf
+    ln in.mpf hard.mpf
+    sum=$(cksum <in.mpf)
+    same() {  # same EXPECTED_MESSAGE ARGS...: exit 1, that message, in.mpf untouched, nothing left
+      want_msg=$1; shift
+      run 1 "$@"
+      grep -q -- "$want_msg" err || { report "no refusal ($want_msg): kin5 $*"; show err; }
+      [ "$(cksum <in.mpf)" = "$sum" ] || { report "in.mpf changed by: kin5 $*"; cp "$example" in.mpf; }
+      [ -s out ] && report "stdout written by: kin5 $*"
+      no_temporary
+    }
+    same '-o in.mpf is the input file in.mpf' $translate -o in.mpf in.mpf
+    same '-o link.mpf is the input file in.mpf' $translate -o link.mpf in.mpf
+    same '-o hard.mpf is the input file in.mpf' $translate -o hard.mpf in.mpf
+    same '--report in.mpf is the input file in.mpf' $translate --report in.mpf -o o.h in.mpf
+    same '--report link.mpf is the input file' $translate --report link.mpf -o o.h in.mpf
+    same '-o in.mpf is the file stdin reads' $translate -o in.mpf - <in.mpf
+    same '-o hard.mpf is the file stdin reads' $translate -o hard.mpf - <in.mpf
+    env --default-signal "$exe" $translate -o - in.mpf 1<>in.mpf 2>err
+    rc=$?
+    [ "$rc" = 1 ] || { report "stdout onto in.mpf: exit $rc, expected 1"; show err; }
+    grep -q -- '-o - (stdout) is the input file in.mpf' err || { report "stdout onto in.mpf: no refusal"; show err; }
+    [ "$(cksum <in.mpf)" = "$sum" ] || report "in.mpf changed through stdout"
+    same '-o in.mpf is the input file' reverse --machine sajo-12000p -o in.mpf in.mpf
+    same '--report in.mpf is the input file' reverse --machine sajo-12000p --report in.mpf -o o.apt in.mpf
+    run 0 reverse --machine sajo-12000p --work-offset-map G54= -o in.apt in.mpf
+    apt_sum=$(cksum <in.apt)
+    run 1 post --machine dmu-80p -o in.apt in.apt
+    grep -q -- '-o in.apt is the input file in.apt' err || { report "post: no refusal"; show err; }
+    run 1 post --machine dmu-80p --report in.apt -o o.h in.apt
+    [ "$(cksum <in.apt)" = "$apt_sum" ] || report "post replaced its input"
+    echo old >o.h
+    ln -s o.h o-link.h
+    same '--report o-link.h and -o o.h are the same file' $translate --report o-link.h -o o.h in.mpf
+    [ "$(cat o.h)" = old ] || report "o.h changed"
+    [ -e o.json ] && report "o.json written"
+    ;;
+  unreadable-input)
+    # A directory or an unreadable file given for a program, a machine file or a tool table: exit
+    # 2 with a read error (was: match aborted with an uncaught std::__ios_failure, exit 134; a
+    # directory as a machine file reported five missing keys).
+    mkdir d
+    run 2 translate --from-file d --to dmu-80p -o o.h "$example"
+    grep -q '^d:1:1: error: cannot read the machine file: is a directory$' err || { report "machine file: directory"; show err; }
+    grep -q 'missing key' err && { report "directory read as an empty machine file"; show err; }
+    run 2 $translate --tool-table d --work-offset 0,0,0 -o o.h "$example"
+    grep -q '^d:1:1: error: cannot read the tool-table file: is a directory$' err || { report "tool table: directory"; show err; }
+    run 2 machines --machine-file /proc/self/mem
+    grep -q '^/proc/self/mem:1:1: error: cannot read the machine file: Input/output error$' err || { report "machine file: EIO"; show err; }
+    run 2 $translate -o o.h d
+    grep -q "cannot read 'd': is a directory" err || { report "program: directory"; show err; }
+    run 2 $translate -o o.h /proc/self/mem
+    grep -q "cannot read '/proc/self/mem': Input/output error" err || { report "program: EIO"; show err; }
+    if "$exe" match --from sajo-12000p --to dmu-80p 2>&1 | grep -q 'built without Ipopt'; then :; else
+      run 2 match --from sajo-12000p --to dmu-80p --program d
+      grep -q '^kin5 match: cannot read d: is a directory$' err || { report "match: directory"; show err; }
+      run 2 match --from sajo-12000p --to dmu-80p --program /proc/self/mem
+      grep -q '^kin5 match: cannot read /proc/self/mem: Input/output error$' err || { report "match: EIO"; show err; }
+    fi
+    [ -e o.h ] && report "o.h written"
+    ;;
+  deep-toml)
+    # A 40,000-part dotted key, table name, or deeply nested inline tables or arrays in a machine
+    # file or tool table: refused at its line and column before toml++ parses it (was: SIGSEGV,
+    # the stack overflowed inside toml++); a key over 256 bytes and a file over 4 MiB too.
+    awk 'BEGIN { print "kin5_machine = 1"; printf "a"; for (i = 1; i < 40000; ++i) printf ".a"; print " = 1" }' >key.toml
+    awk 'BEGIN { print "kin5_tools = 1"; printf "["; printf "a"; for (i = 1; i < 40000; ++i) printf ".a"; print "]" }' >table.toml
+    awk 'BEGIN { printf "x = "; for (i = 0; i < 40000; ++i) printf "{a = "; printf "1"; for (i = 0; i < 40000; ++i) printf "}"; print "" }' >inline.toml
+    awk 'BEGIN { printf "x = "; for (i = 0; i < 40000; ++i) printf "["; printf "1"; for (i = 0; i < 40000; ++i) printf "]"; print "" }' >array.toml
+    for f in key table inline array; do
+      run 2 machines --machine-file $f.toml
+      grep -q "^$f.toml:[12]:[0-9]*: error: nested more than 32 levels deep" err || { report "$f: machine file"; show err; }
+      run 2 $translate --tool-table $f.toml --work-offset 0,0,0 -o o.h "$example"
+      grep -q "^$f.toml:[12]:[0-9]*: error: nested more than 32 levels deep" err || { report "$f: tool table"; show err; }
+    done
+    run 2 machines --machine-file key.toml
+    grep -q '^key.toml:2:1: error: nested' err || { report "not at the key"; show err; }
+    awk 'BEGIN { print "kin5_tools = 1"; printf "  "; for (i = 0; i < 300; ++i) printf "k"; print " = 1" }' >long.toml
+    run 2 $translate --tool-table long.toml --work-offset 0,0,0 -o o.h "$example"
+    grep -q '^long.toml:2:3: error: a key longer than 256 bytes' err || { report "long key"; show err; }
+    head -c 5000000 /dev/zero | tr '\0' '\n' >big.toml
+    run 2 machines --machine-file big.toml
+    grep -q '^big.toml:1:1: error: cannot read the machine file: larger than 4194304 bytes' err || { report "big file"; show err; }
+    run 2 machines --machine-file /dev/zero
+    grep -q 'larger than 4194304 bytes' err || { report "/dev/zero"; show err; }
+    [ -e o.h ] && report "o.h written"
+    ;;
+  number-options)
+    # nan, inf and 1e400 as a tool length or work offset are refused by every command with the
+    # same check (format.hpp parse_length_mm): was accepted by match, which printed nan slides.
+    for bad in nan inf 1e400; do
+      run 1 $translate --work-offset "0,$bad,0" -o o.h "$example"
+      run 1 $translate --work-offset 0,0,0 --tool-length "$bad" -o o.h "$example"
+      run 1 solve --machine dmu-80p --vector 0,0,1 --tip 0,0,0 --tool-length "$bad"
+      run 1 solve --machine dmu-80p --vector 0,0,1 --tip 0,0,0 --work-offset "0,0,$bad"
+    done
+    if "$exe" match --from sajo-12000p --to dmu-80p 2>&1 | grep -q 'built without Ipopt'; then :; else
+      for bad in nan inf 1e400 -1; do
+        run 1 match --from sajo-12000p --to dmu-80p --program "$example" --tool-length "$bad" --work-offset 0,0,-300
+        grep -q -- '--tool-length: give a length in mm' err || { report "match --tool-length $bad"; show err; }
+        [ -s out ] && report "match --tool-length $bad printed a report"
+      done
+      for bad in nan inf 1e400; do
+        run 1 match --from sajo-12000p --to dmu-80p --program "$example" --work-offset "0,$bad,0"
+        grep -q -- '--work-offset needs 3 numbers' err || { report "match --work-offset $bad"; show err; }
+      done
+      run 0 match --from sajo-12000p --to dmu-80p --program "$example" --tool-length 100 --work-offset 0,0,-500
+      grep -qi nan out && { report "nan in the report"; show out; }
+    fi
+    [ -e o.h ] && report "o.h written"
+    ;;
+  all-signals)
+    # With the named temporary file, every signal whose default action ends the process (and
+    # can be caught) removes it before the process dies of that signal; INT, TERM, HUP: the
+    # `signals` test. Was: QUIT, XCPU, USR1, ALRM … left .o.h.kin5-XXXXXX behind.
+    big big.mpf 250000
+    ulimit -c 0  # QUIT, XCPU, SYS, ABRT dump core by default
+    for sig in QUIT XCPU USR1 USR2 ALRM VTALRM PROF IO PWR SYS ABRT RTMIN; do
+      echo old >o.h
+      KIN5_OUTPUT_NAMED_TEMP=1 env --default-signal "$exe" $translate -o o.h big.mpf 2>/dev/null &
+      pid=$!
+      i=0
+      while [ $i -lt 6000 ]; do
+        ls -A | grep -q 'kin5-' && break
+        kill -0 $pid 2>/dev/null || break
+        sleep 0.01
+        i=$((i + 1))
+      done
+      kill -s $sig $pid 2>/dev/null || report "$sig: the run ended before the signal"
+      wait $pid
+      rc=$?
+      [ "$rc" -gt 128 ] && [ "$(kill -l $rc)" = "$sig" ] || report "$sig: exit $rc, not death by $sig"
+      [ "$(cat o.h)" = old ] || report "$sig: o.h changed"
+      [ "$(ls -A | grep -c 'kin5-')" = 0 ] || report "$sig: temporary files left: $(ls -A | grep 'kin5-')"
+      rm -f .o.h.kin5-*
+    done
+    ;;
+  digits-rounding)
+    # --digits below the source's decimals rounds knowingly but never silently: a warning that
+    # says how far a position or an angle may move (--digits 0 moved 3-decimal positions by up
+    # to 0.5 mm without a word); at or above them, nothing is said.
+    run 0 $translate --digits 0 -o o.h "$example"
+    grep -q "warning: --digits 0 rounds the source's positions written with 3 decimals to 0: each may move by up to 0.5 mm; angles written with 3 decimals to 0: each may move by up to 0.5 deg" err ||
+      { report "no warning for --digits 0"; show err; }
+    run 0 $translate --digits 2 -o o.h "$example"
+    grep -q 'each may move by up to 0.005 mm' err || { report "no warning for --digits 2"; show err; }
+    run 0 $translate --digits 3 -o o.h "$example"
+    grep -q -- '--digits' err && { report "a warning for --digits 3"; show err; }
+    ;;
   *)
     echo "reliability.sh: unknown test '$name'" >&2
     exit 2

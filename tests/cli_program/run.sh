@@ -675,7 +675,7 @@ EOF
     run 2 translate $src --tool-table bad.toml -o no.nc t.nc
     grep -q "^bad\.toml:2:1: error: missing key 'number' in \[\[tool\]\] #1" err || { report "missing number"; show err; }
     run 2 translate $src --tool-table missing.toml -o no.nc t.nc
-    grep -q '^missing\.toml:1:1: error: cannot open the tool-table file' err || { report "missing file"; show err; }
+    grep -q '^missing\.toml:1:1: error: cannot read the tool-table file: No such file or directory' err || { report "missing file"; show err; }
     [ -e no.nc ] && report "no.nc written"
     # The table is for motion in machine coordinates: without a work offset it is a usage error.
     run 1 translate --from ac-head --to ac-head --tool-table tools.toml -o no.nc t.nc

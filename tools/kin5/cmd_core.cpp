@@ -112,9 +112,9 @@ std::optional<run_inputs> parse_inputs(const std::string& tool_length, const std
                                        std::string& error) {
   run_inputs in{};
   if (!tool_length.empty()) {
-    const auto l = parse_real(tool_length);
+    const auto l = parse_length_mm(tool_length);
     if (!l) {
-      error = "--tool-length '" + tool_length + "' is not a finite number of mm";
+      error = "--tool-length '" + tool_length + "' is not a finite number of mm within ±1e9";
       return std::nullopt;
     }
     in.tool_length_mm = *l;
@@ -122,6 +122,10 @@ std::optional<run_inputs> parse_inputs(const std::string& tool_length, const std
   if (!work_offset.empty()) {
     const auto w = parse_triple(work_offset, "--work-offset", "X,Y,Z", error);
     if (!w) return std::nullopt;
+    if (!parse_point_mm(work_offset)) {
+      error = "--work-offset '" + work_offset + "': each number must be within ±1e9 mm";
+      return std::nullopt;
+    }
     in.work_offset.translation_mm = *w;
   }
   return in;

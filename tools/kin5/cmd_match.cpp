@@ -23,9 +23,7 @@
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <iostream>
-#include <iterator>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -47,6 +45,7 @@ namespace prog = kin5::program;
 struct match_arguments {
   machine_choice from, to;
   std::string program, from_dialect, format = "md";
+  std::string tool_length, work_offset;  ///< as given; checked as every command checks them (format.hpp)
   double tool_length_mm = 0.0;
   std::vector<double> work_offset_mm;  ///< X, Y, Z of the workpiece frame on the target, or empty
   std::vector<std::string> work_offset_map;  ///< --work-offset-map entries, as `translate` takes them
@@ -62,11 +61,35 @@ run_inputs target_inputs(const match_arguments& a) {
 /// Whether --work-offset says where the part sits: then the slides' ends are checked.
 bool placed(const match_arguments& a) { return a.work_offset_mm.size() == 3; }
 
-std::optional<std::string> read_file(const std::string& path) {
-  if (path == "-") return std::string(std::istreambuf_iterator<char>(std::cin), {});
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  return std::string(std::istreambuf_iterator<char>(in), {});
+/// The bytes of `path` ('-': stdin); nothing, with `error` set, when it cannot be read to its end
+/// (a directory, a read error such as /proc/self/mem's). Read with stdio, whose errors are
+/// return values: an input stream's iterator throws on a read error.
+std::optional<std::string> read_file(const std::string& path, std::string& error) {
+  std::FILE* f = stdin;
+  if (path != "-") {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+      error = "is a directory";
+      return std::nullopt;
+    }
+    f = std::fopen(path.c_str(), "rb");
+    if (!f) {
+      error = std::strerror(errno);
+      return std::nullopt;
+    }
+  }
+  std::string bytes;
+  char chunk[1 << 16];
+  std::size_t got = 0;
+  while ((got = std::fread(chunk, 1, sizeof chunk, f)) > 0) bytes.append(chunk, got);
+  const bool failed = std::ferror(f) != 0;
+  const int saved = errno;
+  if (f != stdin) std::fclose(f);
+  if (failed) {
+    error = std::strerror(saved);
+    return std::nullopt;
+  }
+  return bytes;
 }
 
 void print(const std::string& text) { std::fwrite(text.data(), 1, text.size(), stdout); }
@@ -84,9 +107,10 @@ int pair_only(const machine_model& from, const machine_model& to, const match_ar
 
 int with_program(const machine_model& from, const machine_model& to, const match_arguments& a) {
   const std::string name = a.program == "-" ? "<stdin>" : kin5::program::printable(a.program);
-  const auto bytes = read_file(a.program);
+  std::string error;
+  const auto bytes = read_file(a.program, error);
   if (!bytes) {
-    std::fprintf(stderr, "kin5 match: cannot read %s: %s\n", name.c_str(), std::strerror(errno));
+    std::fprintf(stderr, "kin5 match: cannot read %s: %s\n", name.c_str(), error.c_str());
     return exit_codes::input_error;
   }
   const prog::dialect d = a.from_dialect.empty() ? prog::default_dialect(from.geometry.id).value_or(prog::dialect{})
@@ -142,7 +166,30 @@ int with_program(const machine_model& from, const machine_model& to, const match
   return runs ? exit_codes::ok : exit_codes::unreachable;
 }
 
-int run_match(const match_arguments& a) {
+/// --tool-length and --work-offset into `a`'s numbers; false, with the reason printed, when one
+/// is not a length the other commands take (`nan`, `inf`, `1e400` were read as such).
+bool parse_placement(match_arguments& a) {
+  if (!a.tool_length.empty()) {
+    const auto l = parse_length_mm(a.tool_length, true);
+    if (!l) {
+      std::fprintf(stderr, "kin5 match: --tool-length: give a length in mm, 0 or more (within 1e9)\n");
+      return false;
+    }
+    a.tool_length_mm = *l;
+  }
+  if (!a.work_offset.empty()) {
+    const auto w = parse_point_mm(a.work_offset);
+    if (!w) {
+      std::fprintf(stderr, "kin5 match: --work-offset needs 3 numbers X,Y,Z (mm, within ±1e9)\n");
+      return false;
+    }
+    a.work_offset_mm.assign(w->begin(), w->end());
+  }
+  return true;
+}
+
+int run_match(match_arguments a) {
+  if (!parse_placement(a)) return exit_codes::usage;
   int code = exit_codes::ok;
   const std::optional<chosen_machine> from = resolve_machine(a.from, "match", code);
   if (!from) return code;
@@ -170,11 +217,8 @@ void add_match_command(CLI::App& app, int& exit_code) {
   sub->add_option("--format", a->format, "md, csv, svg or json")
       ->check(CLI::IsMember({"md", "csv", "svg", "json"}))
       ->capture_default_str();
-  sub->add_option("--tool-length", a->tool_length_mm, "Tool length on the target, mm (places the slides)")
-      ->check(CLI::Range(0.0, 1e6));
-  sub->add_option("--work-offset", a->work_offset_mm, "Origin of the workpiece frame on the target X,Y,Z, mm")
-      ->delimiter(',')
-      ->expected(3);
+  sub->add_option("--tool-length", a->tool_length, "Tool length on the target, mm (places the slides)");
+  sub->add_option("--work-offset", a->work_offset, "Origin of the workpiece frame on the target X,Y,Z, mm");
   sub->add_option("--work-offset-map", a->work_offset_map,
                   "Work offset selections of the program mapped to the target's, as translate takes them "
                   "(FROM=TO[,FROM=TO…])")

@@ -50,6 +50,7 @@
 #include "format.hpp"
 #include "machine_option.hpp"
 #include "output_file.hpp"
+#include "same_file.hpp"
 
 namespace kin5::tool {
 namespace {
@@ -366,6 +367,10 @@ int translate_and_write(const job& j, std::string bytes, prog::dialect dialect, 
 /// and the report (--report) whatever the outcome.
 int execute(const job& j) {
   const std::string prefix = "kin5 " + j.command + ": ";
+  if (const auto why = overwrite_refusal(j.input_path, j.output_path, j.report_path)) {  // nothing touched
+    std::cerr << prefix << *why << '\n';
+    return exit_codes::usage;
+  }
   report_file report(j, prefix);  // checked, as OUT is, before the input is read
   if (!report.usage().empty()) {
     std::cerr << prefix << report.usage() << '\n';
@@ -455,15 +460,15 @@ std::optional<run_inputs> parse_run_inputs(std::string_view command, std::string
                                            const std::string& tool_length, const std::string& work_offset) {
   run_inputs in;
   if (!tool_length.empty()) {
-    const auto l = parse_real(tool_length);
-    if (!l || !(*l >= 0.0) || !prog::writable(*l)) {
+    const auto l = parse_length_mm(tool_length, true);
+    if (!l) {
       std::cerr << "kin5 " << command << ": --" << prefix << "tool-length: give a length in mm, 0 or more\n";
       return std::nullopt;
     }
     in.tool_length_mm = *l;
   }
-  const auto w = parse_list(work_offset, 3);
-  if (!w || !prog::writable((*w)[0]) || !prog::writable((*w)[1]) || !prog::writable((*w)[2])) {
+  const auto w = parse_point_mm(work_offset);
+  if (!w) {
     std::cerr << "kin5 " << command << ": --" << prefix << "work-offset needs 3 numbers X,Y,Z (mm, within ±1e9)\n";
     return std::nullopt;
   }

@@ -2,10 +2,12 @@
 // writing angles and vectors, and the ids of the catalog machines.
 //
 // Arguments are read strictly: a whole argument must be one finite decimal number (an exponent
-// is allowed, `inf` and `nan` are not). Angles are written in degrees with 6 decimals, tool axes
-// with 12 significant digits, and `-0` never appears in the output.
+// is allowed, `inf` and `nan` are not), and a length in mm lies within ±1e9 (`parse_length_mm`).
+// Angles are written in degrees with 6 decimals, tool axes with 12 significant digits, and `-0`
+// never appears in the output.
 #pragma once
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +18,7 @@
 #include <vector>
 
 #include <kin5/machines/catalog.hpp>
+#include <kin5/program/number.hpp>
 
 namespace kin5::tool {
 
@@ -31,6 +34,16 @@ inline std::optional<double> parse_real(std::string_view s) {
   return v;
 }
 
+/// A length in mm an option gives (a tool length, a work offset's coordinate): a whole argument
+/// that is one finite number within ±1e9 mm (what an NC program can hold, `program::writable`),
+/// and 0 or more when `non_negative`; nothing otherwise (`nan`, `inf`, `1e400` included). The
+/// one check of every command's lengths.
+inline std::optional<double> parse_length_mm(std::string_view s, bool non_negative = false) {
+  const auto v = parse_real(s);
+  if (!v || !kin5::program::writable(*v) || (non_negative && !(*v >= 0.0))) return std::nullopt;
+  return v;
+}
+
 /// `s` split at every `separator` (empty fields kept).
 inline std::vector<std::string_view> split(std::string_view s, char separator) {
   std::vector<std::string_view> out;
@@ -40,6 +53,19 @@ inline std::vector<std::string_view> split(std::string_view s, char separator) {
       out.push_back(s.substr(start, i - start));
       start = i + 1;
     }
+  }
+  return out;
+}
+
+/// Three lengths X,Y,Z in mm separated by commas, each as `parse_length_mm`, or nothing.
+inline std::optional<std::array<double, 3>> parse_point_mm(std::string_view s) {
+  const auto fields = split(s, ',');
+  if (fields.size() != 3) return std::nullopt;
+  std::array<double, 3> out{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto v = parse_length_mm(fields[i]);
+    if (!v) return std::nullopt;
+    out[i] = *v;
   }
   return out;
 }

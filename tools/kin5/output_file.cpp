@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string_view>
+#include <vector>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -21,8 +22,34 @@ constexpr std::size_t flush_threshold = std::size_t{1} << 20;
 
 // ---- the one named temporary file, removed by the signal handlers --------------------------
 
-/// The signals after which a named temporary file is removed before the process dies.
-constexpr int cleanup_signals[] = {SIGTERM, SIGINT, SIGHUP};
+/// The signals after which a named temporary file is removed before the process dies: every one
+/// whose default action ends the process and that can be caught — those sent to stop a run
+/// (TERM, INT, HUP, QUIT), limits (XCPU; XFSZ and PIPE are ignored, see
+/// `ignore_write_signals`), timers (ALRM, VTALRM, PROF), the user's and the real-time ones, and
+/// those of a fault (ABRT, SEGV, BUS, FPE, ILL, TRAP, SYS). Not KILL, which cannot be caught.
+const std::vector<int>& cleanup_signals() {
+  static const std::vector<int> signals = [] {
+    std::vector<int> s = {SIGHUP, SIGINT,  SIGQUIT,   SIGILL,  SIGTRAP, SIGABRT, SIGBUS, SIGFPE,
+                          SIGUSR1, SIGSEGV, SIGUSR2, SIGALRM, SIGTERM, SIGXCPU, SIGVTALRM, SIGPROF, SIGSYS};
+#ifdef SIGIO
+    s.push_back(SIGIO);  // SIGPOLL
+#endif
+#ifdef SIGPWR
+    s.push_back(SIGPWR);
+#endif
+#ifdef SIGSTKFLT
+    s.push_back(SIGSTKFLT);
+#endif
+#ifdef SIGRTMIN
+    for (int sig = SIGRTMIN; sig <= SIGRTMAX; ++sig) s.push_back(sig);
+#endif
+    return s;
+  }();
+  return signals;
+}
+
+/// Whether `sig` reports a fault of the instruction that raised it, which must not be blocked.
+bool is_fault(int sig) { return sig == SIGSEGV || sig == SIGBUS || sig == SIGFPE || sig == SIGILL || sig == SIGTRAP; }
 
 char named_temp[PATH_MAX];                  // the path, valid while `named_temp_set`
 volatile std::sig_atomic_t named_temp_set = 0;
@@ -39,7 +66,7 @@ void install_cleanup_handlers() {
   static bool installed = false;
   if (installed) return;
   installed = true;
-  for (int sig : cleanup_signals) {
+  for (int sig : cleanup_signals()) {
     struct sigaction old {};
     if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler != SIG_DFL) continue;
     struct sigaction action {};
@@ -57,7 +84,8 @@ class signals_blocked {
   signals_blocked() {
     sigset_t set;
     ::sigemptyset(&set);
-    for (int sig : cleanup_signals) ::sigaddset(&set, sig);
+    for (int sig : cleanup_signals())
+      if (!is_fault(sig)) ::sigaddset(&set, sig);  // a fault while blocked is undefined behaviour
     ::sigprocmask(SIG_BLOCK, &set, &old_);
   }
   ~signals_blocked() { ::sigprocmask(SIG_SETMASK, &old_, nullptr); }

@@ -7,7 +7,9 @@
 //     (O_TMPFILE), linked into place on `commit` — a file that never had a name cannot be left
 //     behind by any exit, SIGKILL included. Where the file system has no O_TMPFILE, a named
 //     temporary file `.OUT.kin5-XXXXXX` is used instead, removed on every exit the process can
-//     catch (error, SIGTERM, SIGINT, SIGHUP); signals are blocked while it is created or renamed.
+//     catch (an error, and every signal whose default action ends the process but KILL: TERM,
+//     INT, HUP, QUIT, XCPU, ALRM, USR1, the real-time ones, a fault's …); those signals are
+//     blocked while it is created or renamed.
 //     An existing OUT keeps its permission bits and, where allowed, its owner and group.
 //   * a symbolic link: written through to the file it names (the link itself is kept).
 //   * a FIFO, a character device, or '-' (stdout): the text is spooled to an unnamed temporary

@@ -14,10 +14,8 @@
 
 #include <array>
 #include <cstdint>
-#include <fstream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,6 +23,7 @@
 #include <toml++/toml.h>
 
 #include "../kinematics/machine_model.hpp"
+#include "toml_bounds.hpp"
 
 namespace kin5 {
 
@@ -317,10 +316,16 @@ inline std::optional<machine_geometry> geometry_of(const toml::table& doc, reade
 
 }  // namespace machine_file_detail
 
-/// Reads machine file text; `file` names it in error messages.
+/// Reads machine file text; `file` names it in error messages. Text beyond the bounds of
+/// `toml_bounds.hpp` (size, key length, nesting) is refused before toml++ parses it.
 inline machine_file_result parse_machine_file(std::string_view text, std::string file) {
   machine_file_result out{};
   machine_file_detail::reader r{file, {}};
+  if (const auto v = toml_bounds_violation(text)) {  // before toml++, whose recursion it bounds
+    r.errors.push_back({file, v->line, v->column, v->message});
+    out.errors = std::move(r.errors);
+    return out;
+  }
   toml::table doc;
   try {
     doc = toml::parse(text, file);
@@ -336,13 +341,12 @@ inline machine_file_result parse_machine_file(std::string_view text, std::string
   return out;
 }
 
-/// Reads the machine file at `path`.
+/// Reads the machine file at `path`; a directory, a read error or a file over 4 MiB is one
+/// error, "cannot read the machine file: …" (`read_toml_file`).
 inline machine_file_result read_machine_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return {std::nullopt, {{path, 1, 1, "cannot open the machine file"}}};
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_machine_file(text.str(), path);
+  toml_file_text read = read_toml_file(path);
+  if (!read.text) return {std::nullopt, {{path, 1, 1, "cannot read the machine file: " + read.error}}};
+  return parse_machine_file(*read.text, path);
 }
 
 }  // namespace kin5

@@ -16,9 +16,7 @@
 
 #include <array>
 #include <cstdint>
-#include <fstream>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,6 +25,7 @@
 
 #include "../kinematics/tool_table.hpp"
 #include "machine_file.hpp"
+#include "toml_bounds.hpp"
 
 namespace kin5 {
 
@@ -77,9 +76,12 @@ inline void read_entry(machine_file_detail::reader& r, const toml::table& t, std
 
 }  // namespace tool_table_detail
 
-/// Reads tool-table text; `file` names it in error messages.
+/// Reads tool-table text; `file` names it in error messages. Text beyond the bounds of
+/// `toml_bounds.hpp` (size, key length, nesting) is refused before toml++ parses it.
 inline tool_table_result parse_tool_table_file(std::string_view text, std::string file) {
   machine_file_detail::reader r{file, {}};
+  if (const auto v = toml_bounds_violation(text))  // before toml++, whose recursion it bounds
+    return {std::nullopt, {{file, v->line, v->column, v->message}}};
   toml::table doc;
   try {
     doc = toml::parse(text, file);
@@ -102,13 +104,12 @@ inline tool_table_result parse_tool_table_file(std::string_view text, std::strin
   return {std::move(table), {}};
 }
 
-/// Reads the tool-table file at `path`.
+/// Reads the tool-table file at `path`; a directory, a read error or a file over 4 MiB is one
+/// error, "cannot read the tool-table file: …" (`read_toml_file`).
 inline tool_table_result read_tool_table_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return {std::nullopt, {{path, 1, 1, "cannot open the tool-table file"}}};
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_tool_table_file(text.str(), path);
+  toml_file_text read = read_toml_file(path);
+  if (!read.text) return {std::nullopt, {{path, 1, 1, "cannot read the tool-table file: " + read.error}}};
+  return parse_tool_table_file(*read.text, path);
 }
 
 }  // namespace kin5

@@ -9,9 +9,11 @@
 /// so a 4-decimal source is no longer written with 3, and a value is never written finer than
 /// the controller's input resolution (where it would be an input error or silently rounded).
 /// Positions or angles an NC source writes finer than the controller reads are refused
-/// (`--digits` rounds them knowingly); feeds and vectors finer than it, angles derived from
-/// vectors and CL data's positions are written to the controller's resolution with a warning. Angles and vectors are converted into each other where the source has one
-/// and the output the other: a vector component's last place 10⁻ᵛ rad needs v − 1 decimals of a
+/// (`--digits` rounds them knowingly, with a warning wherever it writes fewer decimals than the
+/// source: `--digits 0` moves a 3-decimal position by up to 0.5 mm); feeds and vectors finer
+/// than it, angles derived from vectors and CL data's positions are written to the controller's
+/// resolution with a warning. Angles and vectors are converted into each other where the source
+/// has one and the output the other: a vector component's last place 10⁻ᵛ rad needs v − 1 decimals of a
 /// degree; an angle's 10⁻ᵃ° (1.75·10⁻⁽ᵃ⁺²⁾ rad) needs a + 2 decimals of a vector.
 ///
 /// The controllers' resolutions are data of each dialect (`reads`, a `program::controller`, in
@@ -57,9 +59,15 @@ struct precision_notes {
   std::string rounded;
 };
 
+/// Half a unit of the last of `decimals` decimals, as text: "0.5" for 0, "0.0005" for 3.
+inline std::string half_unit(int decimals) {
+  return decimals <= 0 ? std::string("0.5") : "0." + std::string(static_cast<std::size_t>(decimals), '0') + "5";
+}
+
 /// The decimals to write a program whose source writes `source` in dialect `out` (see the file
 /// comment), and in `notes` what cannot be kept. `--digits` (`digits`) chooses positions and
-/// angles knowingly: nothing is refused then. `source_is_cl`: the source is CL data, whose
+/// angles knowingly: nothing is refused then, but fewer decimals than the source writes are
+/// a warning (`rounded`) that says how far a position or an angle may move. `source_is_cl`: the source is CL data, whose
 /// decimals are the CAM system's arithmetic, not a controller's input: rounded with a warning.
 /// `inch`: the program's lengths are inches, and every writer writes them with one decimal more
 /// than `linear` (0.0001 in for 0.001 mm): the source's position decimals, the usual and the
@@ -86,12 +94,24 @@ inline program::word_decimals output_decimals(const program::number_resolution& 
   d.angle = pick(s.angle_decimals, limits.usual.angle, limits.finest.angle, "angles", source.angle_decimals.has_value());
   d.feed = pick(s.feed_decimals, limits.usual.feed, limits.finest.feed, "feeds", false);
   d.vector = pick(s.vector_decimals, limits.usual.vector, limits.finest.vector, "tool-axis vectors", false);
+  std::string coarser;  // what --digits rounds of the source's own decimals
   if (digits) {
     d.linear = std::max(*digits - in, 0);
     d.angle = *digits;
     said = {};
+    const auto rounds = [&](const std::optional<int>& written, std::string_view what, std::string_view unit) {
+      if (!written || *digits >= *written) return;
+      coarser += (coarser.empty() ? "" : "; ") + std::string(what) + " written with " + std::to_string(*written) +
+                 " decimals to " + std::to_string(*digits) + ": each may move by up to " + half_unit(*digits) + ' ' +
+                 std::string(unit);
+    };
+    rounds(s.linear_decimals, "positions", inch ? "in" : "mm");
+    rounds(source.angle_decimals, "angles", "deg");
   }
   if (notes) {
+    if (!coarser.empty())
+      notes->rounded = "--digits " + std::to_string(*digits) + " rounds the source's " + coarser +
+                       " (fewer decimals than the program writes move the machine elsewhere)";
     if (!said.refused.empty())
       notes->refused = "the source writes " + said.refused + ": rounding them would move the machine elsewhere " +
                        "(--digits N rounds positions and angles knowingly)";

@@ -7,6 +7,7 @@
 #include <iterator>
 #include <string>
 #include <string_view>
+#include <tuple>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
@@ -15,6 +16,8 @@
 #include <kin5/machines/every_machine.hpp>
 #include <kin5/machines/machine_file.hpp>
 #include <kin5/machines/machine_file_writer.hpp>
+#include <kin5/machines/tool_table_file.hpp>
+#include <kin5/machines/toml_bounds.hpp>
 
 #include "generators.hpp"
 
@@ -261,4 +264,83 @@ TEST_CASE("machine file errors name file, line, column and the rule", "[core][ma
     CHECK(e.message.find(c.says) != std::string::npos);
     CHECK(e.to_string().rfind("m.toml:" + std::to_string(c.line) + ":" + std::to_string(c.column) + ": error: ", 0) == 0);
   }
+}
+
+namespace {
+
+/// `n` parts joined by dots: "a.a.a".
+std::string dotted(std::size_t n) {
+  std::string key = "a";
+  for (std::size_t i = 1; i < n; ++i) key += ".a";
+  return key;
+}
+
+/// A document nested `n` levels deep as `toml_bounds_violation` counts them, in one of four
+/// forms: a dotted key, a table name, inline tables, arrays.
+std::string nested(int form, std::size_t n) {
+  switch (form) {
+    case 0: return "kin5_machine = 1\n" + dotted(n) + " = 1\n";
+    case 1: return "kin5_machine = 1\n[" + dotted(n) + "]\n";
+    case 2: {  // x = {a = {a = 1}}: the key x, then a key in each of n - 1 inline tables
+      std::string s = "x = ";
+      for (std::size_t i = 1; i < n; ++i) s += "{a = ";
+      return s + "1" + std::string(n - 1, '}') + "\n";
+    }
+    default:  // x = [[[1]]]: n arrays, the outermost the key x's value
+      return "x = " + std::string(n, '[') + "1" + std::string(n, ']') + "\n";
+  }
+}
+
+}  // namespace
+
+TEST_CASE("machine files and tool tables nest at most 32 deep and keep keys short, before toml++ parses them",
+          "[core][machine-file]") {
+  // A 40,000-part dotted key or table name overflowed the stack inside toml++ (SIGSEGV).
+  for (int form = 0; form < 4; ++form)
+    for (std::size_t n : {std::size_t{1}, std::size_t{3}, std::size_t{32}, std::size_t{33}, std::size_t{40000}}) {
+      const std::string text = nested(form, n);
+      INFO("form " << form << ", depth " << n);
+      const auto v = toml_bounds_violation(text);
+      CHECK(v.has_value() == (n > toml_bounds::max_nesting));
+      const machine_file_result m = parse_machine_file(text, "m.toml");
+      const tool_table_result t = parse_tool_table_file(text, "t.toml");
+      REQUIRE_FALSE(m.errors.empty());
+      REQUIRE_FALSE(t.errors.empty());
+      if (n > toml_bounds::max_nesting) {
+        CHECK(m.errors.front().message.find("nested more than 32 levels") != std::string::npos);
+        CHECK(t.errors.front().message.find("nested more than 32 levels") != std::string::npos);
+        CHECK(m.errors.front().line == (form < 2 ? 2u : 1u));  // at the key, table name or bracket
+      }
+    }
+  // Keys: 256 bytes pass, 257 do not; at the key's line and column.
+  CHECK_FALSE(toml_bounds_violation("x = 1\n" + std::string(256, 'k') + " = 1\n"));
+  const auto long_key = toml_bounds_violation("x = 1\n  " + std::string(257, 'k') + " = 1\n");
+  REQUIRE(long_key);
+  CHECK(long_key->line == 2);
+  CHECK(long_key->column == 3);
+  CHECK(long_key->message.find("longer than 256 bytes") != std::string::npos);
+  CHECK(toml_bounds_violation("[\"" + std::string(300, 'k') + "\"]\n"));
+  // Brackets, dots and '=' inside strings and comments count for nothing.
+  CHECK_FALSE(toml_bounds_violation("s = \"" + std::string(100, '[') + dotted(100) + "\" # " + std::string(100, '{') +
+                                    "\nt = '''\n" + std::string(100, '[') + "\n'''\nu = \"\"\"a\\\"\"\"\"\n"));
+  // Non-ASCII outside strings and comments, or first after a backslash in a string: toml++ 3.3
+  // reached TOML_UNREACHABLE on them (undefined behaviour; found by machine_file_fuzz).
+  for (const auto& [text, line, column] : {std::tuple{std::string("_\xcf\xa9"), 1u, 2u},
+                                           std::tuple{std::string("\xcc\xaa"), 1u, 1u},
+                                           std::tuple{std::string("1=-c1'\xcc\x87'"), 1u, 7u},
+                                           std::tuple{std::string("\"\"\"\\\xef\xbb\xa2\x10"), 1u, 5u},
+                                           std::tuple{std::string("s = \"\"\"\\\n\xc2\xa7\"\"\"\n"), 2u, 1u}}) {
+    const auto v = toml_bounds_violation(text);
+    REQUIRE(v);
+    CHECK(v->line == line);
+    CHECK(v->column == column);
+    CHECK(v->message.find("non-ASCII") != std::string::npos);
+    CHECK(parse_machine_file(text, "m.toml").errors.front().message.find("non-ASCII") != std::string::npos);
+  }
+  CHECK_FALSE(toml_bounds_violation("s = \"\xc2\xa7\" # \xcf\xa9\nt = '\xcf\xa9'\n"));
+  // Size: 4 MiB of text, and no more.
+  CHECK(toml_bounds_violation(std::string(toml_bounds::max_file_bytes + 1, '\n')));
+  CHECK_FALSE(toml_bounds_violation(std::string(toml_bounds::max_file_bytes, '\n')));
+  // Every bundled machine file is within the bounds (they are read in the cases above).
+  CHECK_FALSE(toml_bounds_violation(good));
 }

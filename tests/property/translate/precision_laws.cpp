@@ -109,15 +109,23 @@ TEST_CASE("the output keeps the source's decimals, finer than the output control
   });
 }
 
-TEST_CASE("the option --digits sets the decimals of positions and angles, whatever the source and the dialect") {
+TEST_CASE("the option --digits sets the decimals of positions and angles, whatever the source and the dialect, and says what it rounds") {
   rc::prop("digits 0 to 6", [] {
     const int digits = *rc::gen::inRange(0, 7);
     const dialect out = *rc::gen::elementOf(std::vector<dialect>(std::begin(nc_dialects), std::end(nc_dialects)));
     const auto tips = *rc::gen::container<std::vector<vec3>>(*rc::gen::inRange<std::size_t>(1, 6), test::tip());
-    const auto w = translate_text(siemens_text(tips, 6), out, digits);
+    const std::string text = siemens_text(tips, 6);
+    const auto w = translate_text(text, out, digits);
     RC_ASSERT(w.read.ok());
     RC_ASSERT(w.result.output_decimals.linear == digits);
     RC_ASSERT(w.result.output_decimals.angle == digits);
+    // Fewer decimals than the source writes are said, never done silently (--digits 0 moved a
+    // 3-decimal position by up to 0.5 mm without a word).
+    const auto source = program::scan_resolution(text, program::id_of<program::siemens::dialect>());
+    const bool rounds = digits < source.linear_decimals.value_or(0) || digits < source.angle_decimals.value_or(0);
+    bool warned = false;
+    for (const auto& d : w.result.warnings) warned = warned || d.message.find("--digits") != std::string::npos;
+    RC_ASSERT(warned == rounds);
     const auto r = program::scan_resolution(w.text, out);
     RC_ASSERT(r.linear_decimals.value_or(0) <= digits);
     RC_ASSERT(r.angle_decimals.value_or(0) <= digits);
