@@ -204,19 +204,17 @@ class expression_parser {
 
   interp::node_id unary() {
     const std::size_t at = position();
+    const bool sign = at < text_.size() && (text_[at] == '-' || text_[at] == '+');
+    const prefix_spelling* p = sign ? nullptr : prefix_at();
+    if (!sign && !p) return primary();
     if (!nest(at)) return interp::no_node;
+    const std::size_t length = sign ? 1 : p->name.size();
+    i_ += length;
+    const interp::node_id x = unary();
     interp::node_id out = interp::no_node;
-    if (at < text_.size() && (text_[at] == '-' || text_[at] == '+')) {
-      ++i_;
-      const interp::node_id x = unary();
-      if (!failed())
-        out = checked(tree_.unary(text_[at] == '-' ? interp::unary_op::negate : interp::unary_op::plus, x, span_of(at, at + 1)));
-    } else if (const prefix_spelling* p = prefix_at()) {
-      i_ += p->name.size();
-      const interp::node_id x = unary();
-      if (!failed()) out = checked(tree_.unary(p->op, x, span_of(at, at + p->name.size())));
-    } else {
-      out = primary();
+    if (!failed()) {
+      const interp::unary_op op = p ? p->op : text_[at] == '-' ? interp::unary_op::negate : interp::unary_op::plus;
+      out = checked(tree_.unary(op, x, span_of(at, at + length)));
     }
     --nesting_;
     return failed() ? interp::no_node : out;
@@ -275,9 +273,7 @@ class expression_parser {
       number = tree_.number(n.value, span_of(i_, k));
       i_ = k;
     } else if (i_ < text_.size() && text_[i_] == s_.open) {
-      if (!nest(i_)) return interp::no_node;
       number = bracketed(i_);
-      --nesting_;
     } else if (s_.hash_indirect && i_ < text_.size() && text_[i_] == '#') {
       if (!nest(i_)) return interp::no_node;
       number = hash_parameter(i_);
@@ -327,7 +323,7 @@ class expression_parser {
     const bool open = i_ < text_.size() && text_[i_] == s_.open;
     if (!open && !s_.functions_without_brackets)
       return fail(at, name_end, std::string(f.name) + " takes its argument in '" + s_.open + " " + s_.close + "'");
-    if (!nest(at)) return interp::no_node;
+    if (!open && !nest(at)) return interp::no_node;  // with brackets, their expression is the level
     if (f.kind == interp::function_kind::exists) {
       ++i_;
       const std::size_t p = position();
@@ -358,7 +354,7 @@ class expression_parser {
         second = slash_argument(f, at);
       }
     }
-    --nesting_;
+    if (!open) --nesting_;
     if (failed()) return interp::no_node;
     const interp::node_id id = checked(tree_.function(f.kind, first, second, span_of(at, name_end)));
     return id;

@@ -27,9 +27,11 @@
 
 namespace kin5::program::interp {
 
-/// Expressions nested deeper than this (brackets, functions, signs and operators each count one
-/// level: `[1+[2*3]]` is 3 deep) are refused. Real programs nest a handful of levels (FANUC
-/// allows 5 brackets); 100 is far beyond them and far within any stack.
+/// Expressions nested deeper than this are refused: more brackets inside each other (a
+/// function's brackets included; a function written without brackets and each sign count as
+/// one too), or a tree deeper than this (an operator's node is one deeper than its operands':
+/// `1+2*3` is 3 deep, `1+1+…+1` with 100 `+` is 101). Real programs nest a handful of levels
+/// (FANUC allows 5 brackets); 100 is far beyond them and far within any stack.
 inline constexpr std::size_t max_expression_depth = 100;
 
 /// Where a node's text is: 1-based line and column of its first byte, and its length in bytes.
