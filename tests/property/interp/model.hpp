@@ -57,20 +57,21 @@ struct prefix_row {
 inline constexpr double pi = 3.14159265358979323846;
 inline double rad(double deg) { return deg * (pi / 180.0); }
 inline double deg(double r) { return r * (180.0 / pi); }
-// The angle functions are exact at multiples of 90° (the documented rule: COS[90] is 0).
+// The angle functions reduce the angle to one turn and are exact at multiples of 90° (the
+// documented rule: COS[90] is 0, SIN[1e20] is the sine of 1e20 mod 360).
 inline double sin_d(double a) {
   const double r = std::fmod(a, 360.0);
   if (r == 0 || r == 180 || r == -180) return 0;
   if (r == 90 || r == -270) return 1;
   if (r == -90 || r == 270) return -1;
-  return std::sin(rad(a));
+  return std::sin(rad(r));
 }
 inline double cos_d(double a) {
   const double r = std::fmod(a, 360.0);
   if (r == 90 || r == -90 || r == 270 || r == -270) return 0;
   if (r == 0) return 1;
   if (r == 180 || r == -180) return -1;
-  return std::cos(rad(a));
+  return std::cos(rad(r));
 }
 inline value fin(double v) { return std::isfinite(v) ? value(v) : std::nullopt; }
 inline value truth(bool t) { return t ? 1.0 : 0.0; }
@@ -355,6 +356,20 @@ inline value evaluate(spelling s, const tree& t, const parameters& p) {
     }
   }
   return std::nullopt;
+}
+
+/// Whether `t` takes a sine, cosine or tangent where kin5 and a calculation in radians without
+/// reduction (rs274's) differ: at an exact multiple of 90°, where kin5 gives the exact value
+/// (0, ±1; a refused tangent; rs274's SIN[180] is 1.2e-16, its TAN[90] about -4e19), and at
+/// angles beyond 10⁴°, where the product with π/180 loses the digits that kin5's reduction keeps.
+inline bool trig_differs_from_radians(spelling s, const tree& t, const parameters& p) {
+  for (const tree& k : t.kids)
+    if (trig_differs_from_radians(s, k, p)) return true;
+  if (t.kind != tree::call) return false;
+  const std::string name = functions(s)[t.index].name;
+  if (name != "SIN" && name != "COS" && name != "TAN") return false;
+  const value a = evaluate(s, t.kids[0], p);
+  return a && (std::fmod(*a, 90.0) == 0 || std::abs(*a) > 1e4);
 }
 
 inline bool atomic(const tree& t) { return t.kind == tree::number || t.kind == tree::parameter || t.kind == tree::call; }

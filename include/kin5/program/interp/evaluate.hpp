@@ -38,21 +38,22 @@ struct evaluation {
 
 namespace detail {
 
-/// sin and cos of an angle in degrees, exact at multiples of 90° (so that `COS[90]` is 0 and
-/// `TAN[90]` is recognised).
+/// sin and cos of an angle in degrees: reduced to one turn first (exactly: `fmod` is exact), so
+/// that a large angle keeps its value, and exact at multiples of 90° (so that `COS[90]` is 0
+/// and `TAN[90]` is recognised).
 inline double sin_of_degrees(double deg) {
   const double r = std::fmod(deg, 360.0);
   if (r == 0 || r == 180 || r == -180) return 0;
   if (r == 90 || r == -270) return 1;
   if (r == -90 || r == 270) return -1;
-  return std::sin(to_radians(degrees{deg}).value);
+  return std::sin(to_radians(degrees{r}).value);
 }
 inline double cos_of_degrees(double deg) {
   const double r = std::fmod(deg, 360.0);
   if (r == 90 || r == -90 || r == 270 || r == -270) return 0;
   if (r == 0) return 1;
   if (r == 180 || r == -180) return -1;
-  return std::cos(to_radians(degrees{deg}).value);
+  return std::cos(to_radians(degrees{r}).value);
 }
 
 /// Whether `v` is a whole number within 32 bits (for the bit operators), as that number.
@@ -221,7 +222,8 @@ class evaluator {
       case function_kind::atan_deg: return {deg(std::atan(x))};
       case function_kind::atan2_deg:
       case function_kind::atan2_deg_0_360: {
-        if (x == 0 && y == 0) return fail(n.where, "the arc tangent of 0/0");
+        // (0, 0): 0 as C's atan2 and rs274 give it; FANUC's manual gives no angle there
+        if (x == 0 && y == 0 && n.function == function_kind::atan2_deg_0_360) return fail(n.where, "the arc tangent of 0/0");
         const double a = deg(std::atan2(x, y));
         return {n.function == function_kind::atan2_deg_0_360 && a < 0 ? a + 360.0 : a};
       }

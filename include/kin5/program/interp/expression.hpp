@@ -81,8 +81,8 @@ enum class function_kind : unsigned char {
   asin_deg,         ///< −90° … 90°; refused outside −1 … 1
   acos_deg,         ///< 0° … 180°; refused outside −1 … 1
   atan_deg,         ///< one argument: −90° … 90°
-  atan2_deg,        ///< (y, x): the angle of (x, y), −180° … 180°
-  atan2_deg_0_360,  ///< (y, x): the same angle in [0°, 360°) (FANUC with parameter NAT = 0)
+  atan2_deg,        ///< (y, x): the angle of (x, y), −180° … 180°; 0 at (0, 0) (LinuxCNC's rs274)
+  atan2_deg_0_360,  ///< (y, x): the same angle in [0°, 360°) (FANUC with parameter NAT = 0); refused at (0, 0)
   asin_deg_0_360,   ///< the arc sine in [0°, 90°] ∪ [270°, 360°) (FANUC with parameter NAT = 0)
   sqrt,             ///< refused below 0
   square,           ///< Heidenhain `SQ`, Siemens `POT`
