@@ -189,6 +189,8 @@ TEST_CASE("examples from the manuals") {
   CHECK(s840("7 DIV 2").value == 3);
   CHECK(s840("1 == 1 AND 1").value == 1);  // (1 AND 1) is compared, not (1 == 1)
   CHECK(s840("2 == 2 AND 0").value == 0);
+  CHECK(s840("0.3 == 0.1 + 0.2").error->message.find("relative tolerance") != std::string::npos);
+  CHECK(s840("0.3 == 0.30001").value == 0);
 }
 
 TEST_CASE("errors name the place and the reason") {

@@ -3,6 +3,7 @@
 // manuals' definitions (docs/dialects/*.md, "Expressions"), not through kin5's evaluator.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -109,6 +110,13 @@ inline std::vector<op_row> operators(spelling s) {
   const auto sub = [](double a, double b) { return fin(a - b); };
   const auto mul = [](double a, double b) { return fin(a * b); };
   const auto cmp = [](auto f) { return [f](double a, double b) { return truth(f(a, b)); }; };
+  // SINUMERIK compares within a relative tolerance of its own: operands that close are refused
+  const auto near_cmp = [](auto f) {
+    return [f](double a, double b) -> value {
+      if (a != b && std::abs(a - b) <= 1e-12 * std::max(std::abs(a), std::abs(b))) return std::nullopt;
+      return truth(f(a, b));
+    };
+  };
   switch (s) {
     case spelling::linuxcnc: {  // ** ; * / MOD ; + - ; EQ … ; AND OR XOR — left to right
       const auto eq = [](double a, double b) { return std::abs(a - b) < 0.0001; };
@@ -163,12 +171,12 @@ inline std::vector<op_row> operators(spelling s) {
               {"AND", 5, cmp([](double a, double b) { return a != 0 && b != 0; })},
               {"XOR", 4, cmp([](double a, double b) { return (a != 0) != (b != 0); })},
               {"OR", 3, cmp([](double a, double b) { return a != 0 || b != 0; })},
-              {"==", 1, cmp(std::equal_to<double>())},
-              {"<>", 1, cmp(std::not_equal_to<double>())},
-              {">", 1, cmp(std::greater<double>())},
-              {">=", 1, cmp(std::greater_equal<double>())},
-              {"<", 1, cmp(std::less<double>())},
-              {"<=", 1, cmp(std::less_equal<double>())}};
+              {"==", 1, near_cmp(std::equal_to<double>())},
+              {"<>", 1, near_cmp(std::not_equal_to<double>())},
+              {">", 1, near_cmp(std::greater<double>())},
+              {">=", 1, near_cmp(std::greater_equal<double>())},
+              {"<", 1, near_cmp(std::less<double>())},
+              {"<=", 1, near_cmp(std::less_equal<double>())}};
     case spelling::heidenhain:  // ^ ; * / % ; + -
       return {{"^", 3, pow_of, true}, {"*", 2, mul}, {"/", 2, divide}, {"%", 2, remainder_of},
               {"+", 1, add},          {"-", 1, sub}};

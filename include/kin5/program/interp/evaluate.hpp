@@ -140,6 +140,9 @@ class evaluator {
     if (!r.ok()) return r;
     const double a = l.value, b = r.value;
     const auto truth = [](bool t) { return evaluation{t ? 1.0 : 0.0}; };
+    const bool comparison = n.binary >= binary_op::equal && n.binary <= binary_op::less_equal;
+    if (comparison && n.tolerance < 0 && a != b && std::abs(a - b) <= -n.tolerance * std::max(std::abs(a), std::abs(b)))
+      return fail(n.where, "a comparison of two values this close: the control compares within a relative tolerance of its own");
     switch (n.binary) {
       case binary_op::add: return finite(n, a + b);
       case binary_op::subtract: return finite(n, a - b);
@@ -164,7 +167,7 @@ class evaluator {
           return fail(n.where, "the remainder and whole quotient of a negative number are not defined by the control's manual");
         return finite(n, n.binary == binary_op::remainder ? std::fmod(a, b) : std::trunc(a / b));
       case binary_op::equal: return truth(n.tolerance > 0 ? std::abs(a - b) < n.tolerance : a == b);
-      case binary_op::not_equal: return truth(!(n.tolerance > 0 ? std::abs(a - b) < n.tolerance : a == b));
+      case binary_op::not_equal: return truth(n.tolerance > 0 ? !(std::abs(a - b) < n.tolerance) : a != b);
       case binary_op::greater: return truth(a > b);
       case binary_op::greater_equal: return truth(a >= b);
       case binary_op::less: return truth(a < b);

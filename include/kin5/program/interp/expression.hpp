@@ -135,8 +135,10 @@ struct node {
   binary_op binary{};
   function_kind function{};
   double number = 0;     ///< a number's value
-  /// equal / not_equal: |a − b| < tolerance counts as equal (0: exactly); a numbered parameter:
-  /// a number within it of a whole number is that number (0: whole numbers only)
+  /// A comparison: above 0, equal / not_equal count |a − b| < tolerance as equal (LinuxCNC);
+  /// below 0, operands that differ by no more than |tolerance| relative are refused, because the
+  /// control compares them with a relative tolerance of its own (SINUMERIK); 0: exactly. A
+  /// numbered parameter: a number within it of a whole number is that number (0: whole only).
   double tolerance = 0;
   std::string prefix;    ///< a numbered parameter's family: "#", "R", "Q", "QL", "QR"
   std::string name;      ///< a named parameter

@@ -12,6 +12,8 @@
 /// | 7 – 9 | `AND`, then `XOR`, then `OR` (logical: 1 or 0) |
 /// | 11 (last) | `==` `<>` `>` `<` `>=` `<=` |
 /// so that `R1 == 1 AND R2 == 2` compares with `1 AND R2`: write brackets, as the manual does.
+/// The control compares within a relative tolerance: two operands that differ by 1e-12 or
+/// less, relative, are refused (`comparison_tolerance`).
 /// Functions: `SIN COS TAN ASIN ACOS ATAN2(y, x) SQRT ABS POT` (the square) `TRUNC` (toward 0)
 /// `ROUND` (halves away from 0) `LN EXP MINVAL(a, b) MAXVAL(a, b)`, angles in degrees.
 /// Parameters: `R0`, `R1`, … and names (`_F_CUT`, `DEPTH`; read in upper case); a system
@@ -26,6 +28,12 @@
 
 namespace kin5::program::siemens {
 
+/// The control compares for relative equality (840D sl NC programming 12/2019, §3.1.3.4
+/// "Precision correction on comparison errors"); operands that differ by no more than this,
+/// relative, are refused (`interp::node::tolerance` below 0), since which way such a comparison
+/// goes is the control's.
+inline constexpr double comparison_tolerance = -1e-12;
+
 namespace detail {
 using interp::binary_op;
 using interp::function_kind;
@@ -36,8 +44,9 @@ inline constexpr operator_spelling expression_operators[] = {
     {"MOD", binary_op::remainder, 10},   {"+", binary_op::add, 9},         {"-", binary_op::subtract, 9},
     {"B_AND", binary_op::bit_and, 8},    {"B_XOR", binary_op::bit_xor, 7}, {"B_OR", binary_op::bit_or, 6},
     {"AND", binary_op::logical_and, 5},  {"XOR", binary_op::logical_xor, 4}, {"OR", binary_op::logical_or, 3},
-    {"==", binary_op::equal, 1},         {"<>", binary_op::not_equal, 1},  {">=", binary_op::greater_equal, 1},
-    {"<=", binary_op::less_equal, 1},    {">", binary_op::greater, 1},     {"<", binary_op::less, 1},
+    {"==", binary_op::equal, 1, comparison_tolerance},         {"<>", binary_op::not_equal, 1, comparison_tolerance},
+    {">=", binary_op::greater_equal, 1, comparison_tolerance}, {"<=", binary_op::less_equal, 1, comparison_tolerance},
+    {">", binary_op::greater, 1, comparison_tolerance},        {"<", binary_op::less, 1, comparison_tolerance},
 };
 
 inline constexpr function_spelling expression_functions[] = {
