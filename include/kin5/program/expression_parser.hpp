@@ -20,7 +20,6 @@
 #include <string_view>
 #include <utility>
 
-#include "interp/evaluate.hpp"
 #include "interp/expression.hpp"
 #include "lexing.hpp"
 #include "number.hpp"

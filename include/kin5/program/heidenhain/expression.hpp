@@ -24,6 +24,7 @@
 #include <string_view>
 
 #include "../expression_parser.hpp"
+#include "../interp/parameter_store.hpp"
 
 namespace kin5::program::heidenhain {
 

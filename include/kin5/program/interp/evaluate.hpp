@@ -23,12 +23,6 @@
 
 namespace kin5::program::interp {
 
-/// Why an expression has no value, and the node where that was found.
-struct expression_error {
-  span where;
-  std::string message;
-};
-
 /// An expression's value, or its error.
 struct evaluation {
   double value = 0;

@@ -42,6 +42,12 @@ struct span {
   friend bool operator==(const span&, const span&) = default;
 };
 
+/// Why an expression cannot be read or has no value, and where: the text or the node.
+struct expression_error {
+  span where;
+  std::string message;
+};
+
 enum class unary_op : unsigned char {
   negate,       ///< `-x`, Heidenhain `NEG x`
   plus,         ///< `+x`
