@@ -4,6 +4,7 @@
 // forms; the nesting bound; the parameter store's scopes and refusals.
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
@@ -108,6 +109,44 @@ TEST_CASE("expressions evaluate as the manuals define them, in every spelling") 
   rc::prop("FANUC macro B", [] { law(spelling::fanuc); });
   rc::prop("SINUMERIK", [] { law(spelling::siemens); });
   rc::prop("Heidenhain formulas", [] { law(spelling::heidenhain); });
+}
+
+TEST_CASE("any text: an expression or an error inside the text, never a crash") {
+  rc::prop("random text over each spelling's characters", [] {
+    const auto pieces = *rc::gen::container<std::vector<std::string>>(rc::gen::oneOf(
+        rc::gen::element<std::string>("[", "]", "(", ")", "#", "<", ">", "=", "+", "-", "*", "/", "^", "%", ",", " ",
+                                      "1", "0.5", ".", "Q1", "QL2", "R1", "_V", "$A", "#<a>", "SIN", "ATAN", "SQ",
+                                      "NOT", "B_NOT", "MOD", "DIV", "AND", "EQ", "**", "==", "<>", "EXISTS", "PI",
+                                      "FN 1:", "Q5 =", "LEN"),
+        rc::gen::map(rc::gen::character<char>(), [](char c) { return std::string(1, c); })));
+    std::string text;
+    for (const std::string& p : pieces) text += p;
+    RC_LOG() << text << "\n";
+    const interp::parameter_store stores[] = {interp::parameter_store(linuxcnc::parameter_rules()),
+                                              interp::parameter_store(iso::macro_parameter_rules()),
+                                              interp::parameter_store(siemens::parameter_rules()),
+                                              interp::parameter_store(heidenhain::parameter_rules())};
+    const parsed_expression parsed[] = {linuxcnc::read_value(text), parse_expression(iso::macro_spelling, text),
+                                        parse_expression(siemens::spelling, text),
+                                        parse_expression(heidenhain::spelling, text),
+                                        heidenhain::read_assignment(text).value};
+    for (std::size_t k = 0; k < std::size(parsed); ++k) {
+      const parsed_expression& e = parsed[k];
+      RC_ASSERT(e.end <= text.size());
+      if (!e.ok()) {
+        RC_ASSERT(e.error->where.line == 1u);
+        RC_ASSERT(e.error->where.column >= 1u);
+        RC_ASSERT(e.error->where.column <= text.size() + 1);
+        RC_ASSERT(!e.error->message.empty());
+        RC_ASSERT(e.tree.root == interp::no_node);
+        continue;
+      }
+      RC_ASSERT(e.tree.depth() <= interp::max_expression_depth);
+      const interp::evaluation v = interp::evaluate(e.tree, stores[std::min<std::size_t>(k, 3)]);
+      if (v.ok()) RC_ASSERT(std::isfinite(v.value));
+      else RC_ASSERT(!v.error->message.empty());
+    }
+  });
 }
 
 TEST_CASE("Heidenhain FN 0 to FN 8 compute what the manual says") {
@@ -294,6 +333,7 @@ TEST_CASE("parameters: scopes of calls, defaults, the control's ranges") {
   CHECK(f.read({"#", 100}).why == "parameter #100 is read before it is assigned: its value is the machine's");
   CHECK(f.read({"#", 5021}).why.find("system variable") != std::string::npos);
   CHECK(f.read({"#", 50}).why == "parameter #50 does not exist in this dialect");
+  CHECK(f.read({"#", 0}).why.find("null variable") != std::string::npos);
   REQUIRE(f.enter_call());
   REQUIRE_FALSE(f.assign({"#", 1}, 1));  // a G65 argument A
   CHECK(f.read({"#", 1}).value == 1);

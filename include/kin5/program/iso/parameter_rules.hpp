@@ -1,9 +1,9 @@
 /// @file program/iso/parameter_rules.hpp
 /// FANUC Custom Macro B variables for the interpreter (../interp/parameter_store.hpp; FANUC
 /// Operator's Manuals, "Custom Macro", "Types of variables"): #1–#33 local to a `G65` call (its
-/// arguments) and to the main program, #100–#199 and #500–#999 common (global); #0 and a
-/// variable never assigned are "vacant", whose arithmetic kin5 does not model, so reading one the
-/// program has not assigned is refused, naming it. #1000 and up are system variables (offsets,
+/// arguments) and to the main program, #100–#199 and #500–#999 common (global); #0 (always) and a
+/// variable never assigned are "vacant", whose arithmetic kin5 does not model, so reading #0, or
+/// a variable the program has not assigned, is refused, naming it. #1000 and up are system variables (offsets,
 /// positions, the clock): the machine's, refused; other numbers do not exist. The same ranges
 /// the reader lets a program set (reader_state.hpp, `unassignable`).
 #pragma once
@@ -16,6 +16,7 @@ inline interp::parameter_rules macro_parameter_rules() {
   using interp::parameter_scope;
   interp::parameter_rules r;
   r.numbered = {
+      {"#", 0, 0, parameter_scope::reserved, false, "the null variable, always vacant, whose arithmetic kin5 does not model"},
       {"#", 1, 33, parameter_scope::local},
       {"#", 100, 199, parameter_scope::global},
       {"#", 500, 999, parameter_scope::global},
