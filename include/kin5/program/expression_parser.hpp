@@ -340,7 +340,8 @@ class expression_parser {
       if (!failed() && take(s_.separator)) {
         second = level(0);
         if (!failed() && !take(s_.close))
-          return fail(position(), position() + 1, std::string("expected '") + s_.close + "' after the arguments of " + std::string(f.name));
+          return fail(position(), position() + 1,
+                      std::string("expected '") + s_.close + "' after the arguments of " + std::string(f.name));
       } else if (!failed() && take(s_.close) && s_.slash_second_argument) {
         second = slash_argument(f, at);
       } else if (!failed()) {
@@ -361,7 +362,10 @@ class expression_parser {
 
   interp::node_id slash_argument(const function_spelling& f, std::size_t at) {
     skip();
-    if (!take('/')) return fail(at, i_, std::string(f.name) + " takes two arguments: " + std::string(f.name) + s_.open + "y" + s_.close + "/" + s_.open + "x" + s_.close);
+    if (!take('/')) {
+      const std::string name(f.name);
+      return fail(at, i_, name + " takes two arguments: " + name + s_.open + "y" + s_.close + "/" + s_.open + "x" + s_.close);
+    }
     skip();
     if (i_ >= text_.size() || text_[i_] != s_.open) return fail(i_, i_ + 1, std::string("expected '") + s_.open + "' after '/'");
     return bracketed(i_);

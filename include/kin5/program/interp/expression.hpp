@@ -11,10 +11,11 @@
 /// deeper than `max_expression_depth` is refused by the parsers and by `evaluate`, so that a
 /// hostile program cannot exhaust the stack.
 /// @code
-///   kin5::program::interp::expression e;
-///   const auto one = e.number(1, {1, 5, 1});
-///   e.root = e.binary(kin5::program::interp::binary_op::add, one, e.numbered_parameter("#", e.number(3, {1, 10, 1}), {1, 9, 2}), {1, 7, 1});
-///   // [1 + #3]
+///   namespace ip = kin5::program::interp;
+///   ip::expression e;                                                    // [1 + #3] on line 1
+///   const auto one = e.number(1, {1, 2, 1});
+///   const auto p3 = e.numbered_parameter("#", e.number(3, {1, 7, 1}), {1, 6, 2});
+///   e.root = e.binary(ip::binary_op::add, one, p3, {1, 4, 1});
 /// @endcode
 #pragma once
 

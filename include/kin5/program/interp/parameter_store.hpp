@@ -130,7 +130,8 @@ class parameter_store {
 
   kind_of classify(const parameter_key& p) const {
     if (!p.name.empty()) {
-      if (!rules_.named_scope) return {parameter_scope::reserved, false, "parameter " + p.name + " is not a parameter of this dialect"};
+      if (!rules_.named_scope)
+        return {parameter_scope::reserved, false, "parameter " + p.name + " is not a parameter of this dialect"};
       const parameter_scope s = rules_.named_scope(p.name);
       if (s == parameter_scope::reserved)
         return {s, false, "parameter " + p.name + " is set by the control: its value is the machine's"};

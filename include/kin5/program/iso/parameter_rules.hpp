@@ -9,20 +9,20 @@
 #pragma once
 
 #include "../interp/parameter_store.hpp"
+#include "macro_variables.hpp"
 
 namespace kin5::program::iso {
 
 inline interp::parameter_rules macro_parameter_rules() {
   using interp::parameter_scope;
   interp::parameter_rules r;
-  r.numbered = {
-      {"#", 0, 0, parameter_scope::reserved, false, "the null variable, always vacant, whose arithmetic kin5 does not model"},
-      {"#", 1, 33, parameter_scope::local},
-      {"#", 100, 199, parameter_scope::global},
-      {"#", 500, 999, parameter_scope::global},
-      {"#", 1000, 999999999, parameter_scope::reserved, false,
-       "a system variable (#1000 and up: the control's offsets, positions and signals), not a value of this program"},
-  };
+  r.numbered = {{"#", 0, 0, parameter_scope::reserved, false,
+                  "the null variable, always vacant, whose arithmetic kin5 does not model"}};
+  for (const macro_variable_range& v : program_variables)
+    r.numbered.push_back({"#", v.first, v.last, v.local ? parameter_scope::local : parameter_scope::global});
+  r.numbered.push_back({"#", first_system_variable, 999999999, parameter_scope::reserved, false,
+                        "a system variable (#1000 and up: the control's offsets, positions and signals), not a value "
+                        "of this program"});
   return r;
 }
 
