@@ -6,6 +6,7 @@
 // 1e-9 (relative above 1), and where kin5 refuses an expression rs274 must stop with an error.
 // Where the two are known to differ (trigonometry at exact multiples of 90° and of huge angles,
 // model.hpp `trig_differs_from_radians`; docs/dialects/linuxcnc.md) the expression is left out.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -119,4 +120,41 @@ TEST_CASE("LinuxCNC expressions: kin5 computes what rs274 computes") {
     }
     RC_ASSERT((r.status != 0) == (!refused.empty() && !absorbed));  // rs274 stops at the refused one
   });
+}
+
+TEST_CASE("LinuxCNC expressions at the edges: kin5 computes what rs274 computes") {
+  // signs, levels, the EQ tolerance's edge, rounding of negatives, indirection, EXISTS, ATAN's quadrants
+  const char* const cases[] = {
+      "[-2**2]",          "[2**3**2]",          "[2*-3**2]",          "[2**-2]",          "[0 OR 1 AND 0]",
+      "[1 + 2 EQ 3.00009]", "[1 EQ 1.0001]",    "[0 EQ 0.0001]",      "[1 NE 1.00005]",   "[1 GE 1.00001]",
+      "[-7 MOD 3]",       "[7 MOD -3]",         "[7.5 MOD 2]",        "[fix[-0.5]]",      "[fup[-0.5]]",
+      "[round[-2.5]]",    "[round[2.5]]",       "[fix[2.999]]",       "[#[1.00005]]",     "[##2]",
+      "[exists[#<nope>]]", "[exists[#<_rate>]]", "[atan[1]/[-1]]",    "[atan[-1]/[-1]]",  "[atan[0]/[0]]",
+      "[asin[-1]]",       "[acos[-1]]",         "[sqrt[2] * sqrt[2]]", "[ln[exp[2.5]]]",  "[1 XOR 1 + 1]",
+      "[3 - 2 - 1]",      "[12 / 3 / 2]",       "[sin[30] + cos[60]]", "[tan[45.5]]",     "[abs[-3] ** 0.5]",
+  };
+  interp::parameter_store store(linuxcnc::parameter_rules());
+  REQUIRE_FALSE(store.assign({"#", 1}, 7));
+  REQUIRE_FALSE(store.assign({"#", 2}, 1));
+  REQUIRE_FALSE(store.assign({"", 0, "#<_rate>"}, 100));
+  std::string program = "#1 = 7\n#2 = 1\n#<_rate> = 100\nF100\n";
+  std::vector<double> ours;
+  for (const char* text : cases) {
+    const parsed_expression e = linuxcnc::read_value(text);
+    REQUIRE(e.ok());
+    const interp::evaluation v = interp::evaluate(e.tree, store);
+    INFO(text);
+    REQUIRE(v.ok());
+    ours.push_back(v.value);
+    program += std::string("#100 = ") + text + "\nG1 X#100 Y[fix[#100*10000]] Z[[#100*10000 - fix[#100*10000]]*100000]\n";
+  }
+  program += "M2\n";
+  const run_output r = run_rs274(program);
+  INFO(r.text);
+  REQUIRE(r.feeds.size() == std::size(cases));
+  for (std::size_t k = 0; k < ours.size(); ++k) {
+    INFO(cases[k] << ": kin5 " << ours[k]);
+    const double theirs = (r.feeds[k][1] + r.feeds[k][2] / 1e5) / 1e4;
+    CHECK(std::abs(theirs - ours[k]) <= 1e-9 * std::max(1.0, std::abs(ours[k])));
+  }
 }
