@@ -18,12 +18,14 @@
 #include "../number.hpp"
 #include "../parameters.hpp"
 #include "../text.hpp"
+#include "control_q.hpp"
 
 namespace kin5::program::heidenhain::detail {
 
 /// The Q parameters of a file: Q100-Q199 are the control's (e.g. Q120-Q122 set by PLANE … STAY).
 inline parameter_table q_parameters() {
-  return parameter_table("Q", {{100, 199, "set by the control (Q100-Q199), not a constant of this file"}});
+  return parameter_table(
+      "Q", {{first_control_q, last_control_q, "set by the control (Q100-Q199), not a constant of this file"}});
 }
 
 /// `s` (one statement, block number removed) after the keywords `FN <n>:` — the FN number and

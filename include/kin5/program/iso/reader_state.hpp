@@ -15,6 +15,7 @@
 
 #include "../block.hpp"
 #include "lexer.hpp"
+#include "macro_variables.hpp"
 
 namespace kin5::program::iso::detail {
 
@@ -72,7 +73,7 @@ struct no_own_words {
   std::optional<lex_problem> line(std::string_view, std::size_t, std::size_t) { return std::nullopt; }
   static std::string unassignable(const std::string&) { return ""; }
   static std::string unassignable(long n) {
-    if ((n >= 1 && n <= 33) || (n >= 100 && n <= 199) || (n >= 500 && n <= 999)) return "";
+    if (is_program_variable(n)) return "";
     return "setting parameter #" + std::to_string(n) + " is not supported: only #1-#33, #100-#199 and #500-#999 "
            "hold the program's own values (the others are the control's)";
   }

@@ -36,6 +36,7 @@
 #include "../modal.hpp"
 #include "../transmission.hpp"
 #include "lexer.hpp"
+#include "predefined_parameters.hpp"
 #include "vocabulary.hpp"
 
 namespace kin5::program::linuxcnc::detail {
@@ -80,7 +81,7 @@ class own_words {
   /// Why the program may not set parameter `#n`: #1–#5000 are the program's (#31–#5000 the
   /// G-code user parameters), the rest the control's (probe results, G28/G30 homes, offsets).
   static std::string unassignable(long n) {
-    if (n >= 1 && n <= 5000) return "";
+    if (n >= 1 && n <= last_program_parameter) return "";
     return "setting parameter #" + std::to_string(n) + " is not supported: only #1-#5000 hold the program's own "
            "values (the others are the control's: probe results, homes, offsets)";
   }
@@ -92,18 +93,7 @@ class own_words {
   /// `#<_ini[…]…>` and `#<_hal[…]>`, are read-only (User Manual, "Predefined Named Parameters",
   /// "HAL pins and INI values").
   static std::string unassignable(const std::string& name) {
-    static constexpr std::string_view predefined[] = {
-        "_vmajor", "_vminor", "_line", "_motion_mode", "_plane", "_ccomp", "_metric", "_imperial", "_absolute",
-        "_incremental", "_inverse_time", "_units_per_minute", "_units_per_rev", "_coord_system", "_tool_offset",
-        "_retract_r_plane", "_retract_old_z", "_spindle_rpm_mode", "_spindle_css_mode", "_ijk_absolute_mode",
-        "_lathe_diameter_mode", "_lathe_radius_mode", "_spindle_on", "_spindle_cw", "_mist", "_flood",
-        "_speed_override", "_feed_override", "_adaptive_feed", "_feed_hold", "_feed", "_rpm", "_x", "_y", "_z",
-        "_a", "_b", "_c", "_u", "_v", "_w", "_abs_x", "_abs_y", "_abs_z", "_abs_a", "_abs_b", "_abs_c", "_abs_u",
-        "_abs_v", "_abs_w", "_current_tool", "_current_pocket", "_selected_tool", "_selected_pocket", "_value",
-        "_value_returned", "_task", "_call_level", "_remap_level"};
-    const std::string_view inner = std::string_view(name).substr(2, name.size() - 3);
-    bool read_only = inner.find('[') != std::string_view::npos;
-    for (std::string_view p : predefined) read_only = read_only || inner == p;
+    const bool read_only = is_predefined_parameter(std::string_view(name).substr(2, name.size() - 3));
     if (!read_only) return "";
     return "setting parameter " + name + " is not supported: LinuxCNC sets it (a read-only predefined parameter)";
   }
