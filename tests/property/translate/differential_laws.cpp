@@ -204,6 +204,15 @@ program_case make_case(const choice& c, draws& d) {
   vec3 tip{d.uniform(-100, 100), d.uniform(-100, 100), d.uniform(0, 100)};
   angles a = shared_orientation(*c.from, *c.to, R, d);
   bool inverse_time = false, have_feed = false;
+  std::optional<std::pair<vec3, double>> last_arc;  // centre and radius, while the last move was an arc
+  // Keeps a move after an arc off that arc's circle (in XY): `reverse` writes such a GOTO after
+  // the CIRCLE, and the APT reader refuses it as ambiguous ("GOTO ends on the circle of the
+  // CIRCLE before it"), found by this harness; lift once fixed.
+  const auto off_last_circle = [&] {
+    if (!last_arc) return;
+    const auto& [centre, r] = *last_arc;
+    if (std::abs(std::hypot(tip.x - centre.x, tip.y - centre.y) - r) < 0.05) tip.x += 0.5;
+  };
   const auto axes_of = [&](pg::block& b) {
     b.axes.x_mm = std::round(tip.x * 1000) / 1000, b.axes.y_mm = std::round(tip.y * 1000) / 1000,
     b.axes.z_mm = std::round(tip.z * 1000) / 1000;
@@ -215,6 +224,7 @@ program_case make_case(const choice& c, draws& d) {
     const double kind = d.uniform(0, 1);
     if (k == 0 || kind < 0.15) {  // a rapid, first to a pose of its own
       tip = {d.uniform(-100, 100), d.uniform(-100, 100), d.uniform(0, 100)};
+      off_last_circle();
       a = shared_orientation(*c.from, *c.to, R, d);
       b.motion = pg::motion_kind::rapid;
       axes_of(b);
@@ -227,8 +237,10 @@ program_case make_case(const choice& c, draws& d) {
       b.motion = ccw ? pg::motion_kind::arc_ccw : pg::motion_kind::arc_cw;
       b.axes.x_mm = tip.x, b.axes.y_mm = tip.y;
       b.arc = pg::arc_words{pg::arc_plane::xy, centre, std::nullopt};
+      last_arc = {centre, r};
     } else {  // a line, its orientation often changing
       tip = tip + vec3{d.uniform(-30, 30), d.uniform(-30, 30), d.uniform(-20, 20)};
+      off_last_circle();
       if (d.chance(0.7)) a = shared_orientation(*c.from, *c.to, R, d);
       b.motion = pg::motion_kind::linear;
       axes_of(b);
@@ -244,6 +256,7 @@ program_case make_case(const choice& c, draws& d) {
       else if (!have_feed || d.chance(0.3)) b.feed = std::round(d.uniform(50, 5000));
       have_feed = true;
     }
+    if (!b.arc) last_arc.reset();
     out.body.push_back(std::move(b));
   }
   return out;
@@ -571,7 +584,10 @@ TEST_CASE("differential: random programs in every dialect agree with the Eigen c
                    << "\n--- source (minimised) ---\n" << m.source << "--- written ---\n" << m.written);
     }
     if (!o.translated) {
-      ++refusals[o.refusal.substr(0, 60)];
+      // One kind once: the message up to its first parenthesis (the angles), or its first words.
+      std::string message = o.refusal.substr(0, o.refusal.find('('));
+      if (message.size() > 72) message = message.substr(0, message.rfind(' ', 72)) + " …";
+      ++refusals[message];
       continue;
     }
     ++translated, motions += o.motions, arcs += o.arcs, inverse_time += o.inverse_time;
