@@ -199,7 +199,10 @@ program_case make_case(const choice& c, draws& d) {
   const bool arcs = pg::capabilities_of(c.source).arcs && pg::capabilities_of(c.target).arcs;
   // Not under --feed inverse-time: a source G94 word is written beside the G93 feed there
   // (`G1 G94 X… F40.5`, the time's inverse read as mm/min), found by this harness; lift once fixed.
-  const bool inverse_time_source = pg::capabilities_of(c.source).inverse_time_feed && c.feed == feed_policy::tcp;
+  // Not from CL data (post): after FEDRAT/INVERS the NC output writes `G93 F…` alone and the
+  // moves without F, as issue 26 reports of a G93 move without F; lift with that fix.
+  const bool inverse_time_source =
+      pg::capabilities_of(c.source).inverse_time_feed && c.feed == feed_policy::tcp && !cl_source;
   const std::size_t n = 1 + d.below(14);
   vec3 tip{d.uniform(-100, 100), d.uniform(-100, 100), d.uniform(0, 100)};
   angles a = shared_orientation(*c.from, *c.to, R, d);
@@ -341,7 +344,9 @@ std::vector<motion> motions_of(const pg::program& p, const machine_model& m, boo
     mv.rapid = mode == pg::motion_kind::rapid || b.feed_rapid;
     mv.kind = mode;
     if (b.arc) mv.centre_mm = b.arc->centre_mm, mv.plane = b.arc->plane;
-    mv.feed = feed;
+    // In inverse time each NC feed move gives its own F (G93 F is not modal: RS274/NGC, Fanuc);
+    // APT's FEDRAT/INVERS is a statement of its own that holds for the moves after it.
+    mv.feed = inverse_time && !b.feed && !cl_data ? std::nullopt : feed;
     mv.inverse_time = inverse_time;
     mv.rotary_deg = abc;
     out.push_back(mv);
