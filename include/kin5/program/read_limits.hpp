@@ -42,6 +42,20 @@ constexpr bool starts_word(char previous, char c) {
   return true;
 }
 
+/// Whether every run of bytes between two LFs (or an end) in `text` is at most `most` bytes
+/// long. One look per `most` + 1 bytes, from the end of that window back to its last LF: a
+/// run within a window that holds an LF is no longer than the window, so the text costs about
+/// `text.size() / most` short searches, not one per line.
+constexpr bool lf_runs_within(std::string_view text, std::size_t most) {
+  std::size_t start = 0;  // the start of a run
+  while (text.size() - start > most) {
+    const std::size_t lf = text.substr(start, most + 1).rfind('\n');
+    if (lf == std::string_view::npos) return false;
+    start += lf + 1;
+  }
+  return true;
+}
+
 /// The first place where `text` breaks `limits`, as an error naming the limit and the option
 /// that raises it; none when it keeps them all. In file order: a NUL byte (binary data, refused
 /// whatever the limits), a line longer than `max_line_bytes` (at its first byte past it), a
@@ -57,6 +71,10 @@ inline std::optional<diagnostic> check_limits(std::string_view text, const read_
   const void* const nul = std::memchr(first, '\0', text.size());
   const std::size_t nul_at = nul ? static_cast<std::size_t>(static_cast<const char*>(nul) - first) : text.size();
   const std::size_t scan_to = nul_at < limits.max_file_bytes ? nul_at : limits.max_file_bytes;
+  // Lines no longer than the words limit need no count of their words (a word takes a byte),
+  // and a line holds no LF: when every run between LFs is that short, nothing is broken.
+  if (scan_to == text.size() && lf_runs_within(text, std::min(limits.max_line_bytes, limits.max_block_words)))
+    return found;
   std::size_t stop_line = 1, stop_line_offset = 0;  // the line the stop falls in, and where it starts
   for_each_line(text, [&](const text_line& line) {
     const auto offset = static_cast<std::size_t>(line.text.data() - first);

@@ -191,17 +191,18 @@ stream_result stream_text(block_translator& t, std::string text, program::dialec
   const program::number_resolution resolution = program::scan_resolution(text, source_language);
   t.source_resolution(resolution);
   const block_source read = [&](program::read_result& diagnostics, const program::block_sink& on_block) {
-    if (auto broken = program::check_limits(text, t.limits(), file)) {  // before anything looks into it
-      diagnostics.add_error(std::move(*broken));
-      std::string().swap(text);
-      return;
-    }
-    const auto guessed = program::capabilities_of(source_language).cl_data ? program::guess_dialect(text) : std::nullopt;
+    const bool cl_data = program::capabilities_of(source_language).cl_data;
+    if (cl_data)  // the limits before the markers are looked for (read_blocks checks them too)
+      if (auto broken = program::check_limits(text, t.limits(), file)) {
+        diagnostics.add_error(std::move(*broken));
+        std::string().swap(text);
+        return;
+      }
+    const auto guessed = cl_data ? program::guess_dialect(text) : std::nullopt;
     if (guessed && *guessed != source_language) {  // NC given as CL data: refused before reading
       diagnostics.errors.push_back(translate_detail::file_error(file, not_cl_data(0, guessed)));
       return;
     }
-    const bool cl_data = program::capabilities_of(source_language).cl_data;
     std::size_t moving = 0;
     const program::block_sink counting = [&](program::block&& b) {
       moving += b.moves() ? 1 : 0;
