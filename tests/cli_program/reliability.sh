@@ -19,6 +19,12 @@ KIN5_RUN_ENV=--default-signal
 example="$examples/table1-sajo.mpf"
 translate="translate --from sajo-12000p --to dmu-80p --work-offset-map G54=1"  # the example's G54: preset 1
 
+# limited run ...: `run` within 1 GB of address space (the memory bound of the input limits),
+# except under AddressSanitizer, whose shadow memory alone takes more.
+limited() {
+  if ldd "$exe" 2>/dev/null | grep -q libasan; then "$@"; else (ulimit -v 1000000 && "$@"; exit "$fail") || fail=1; fi
+}
+
 # no_temporary: no temporary file of kin5's is left in the directory.
 no_temporary() { [ "$(ls -A | grep -c 'kin5-')" = 0 ] || report "temporary files left: $(ls -A | grep 'kin5-')"; }
 
@@ -418,6 +424,78 @@ case "$name" in
     grep -q 'each may move by up to 0.005 mm' err || { report "no warning for --digits 2"; show err; }
     run 0 $translate --digits 3 -o o.h "$example"
     grep -q -- '--digits' err && { report "a warning for --digits 3"; show err; }
+    ;;
+  binary-input)
+    # NUL bytes are refused at the first one, before the input is read to its end: 50 MB of
+    # them (each a lexer word of about 100 bytes, and the tool read any number of bytes) once
+    # ended in std::bad_alloc and SIGABRT under a few GB of address space.
+    head -c 50000000 /dev/zero >zero.mpf
+    limited run 2 $translate -o o.h - <zero.mpf
+    grep -q '^<stdin>:1:1: error: a NUL byte (0x00): binary data, not an NC program' err || { report "stdin"; show err; }
+    limited run 2 $translate -o o.h /dev/zero
+    grep -q '^/dev/zero:1:1: error: a NUL byte' err || { report "/dev/zero"; show err; }
+    limited run 2 $translate -o o.h /dev/urandom
+    grep -q '^/dev/urandom:[0-9]*:[0-9]*: error: a NUL byte' err || { report "/dev/urandom"; show err; }
+    # A NUL byte inside a program: at its line and column; nothing else of the file is read.
+    printf 'N10 TRAORI\nN20 G1 X1\0 Y2\nN30 TRAFOOF\nN40 M30\n' >nul.mpf
+    run 2 $translate -o o.h nul.mpf
+    [ "$(grep -c ': error: ' err)" = 1 ] || { report "more than the one error"; show err; }
+    grep -q '^nul.mpf:2:10: error: a NUL byte' err || { report "nul.mpf"; show err; }
+    [ ! -e o.h ] || report "o.h written"
+    ;;
+  endless-input)
+    # A FIFO that never ends stops at the file-size limit, at the line where the limit falls.
+    mkfifo endless
+    yes 'G1 X1 Y2' >endless &
+    limited run 2 $translate --max-file-bytes 1MB -o o.h - <endless
+    kill $! 2>/dev/null
+    grep -q '^<stdin>:111112:2: error: the input goes on past the file-size limit of 1000000 bytes; --max-file-bytes raises it' err ||
+      { report "no file-size refusal"; show err; }
+    [ ! -e o.h ] || report "o.h written"
+    # A file within the limit is read.
+    run 0 $translate --max-file-bytes 4KiB -o o.h "$example"
+    run 2 $translate --max-file-bytes 100 -o o.h "$example"
+    grep -q "$(basename "$example"):3:62: error: the input goes on past the file-size limit of 100 bytes" err || { report "example"; show err; }
+    ;;
+  long-line)
+    # A line longer than --max-line-bytes is refused at its line, at the first byte past the
+    # limit; raised, the same line (a 2 MiB comment) is translated within a bounded address space.
+    # long LENGTH: a program whose line 2 is LENGTH bytes.
+    long() {
+      printf 'N10 TRAORI\nN20 G1 X1 Y2 Z3 A-10 B20 F100 ; '
+      head -c "$(($1 - 32))" /dev/zero | tr '\0' c
+      printf '\nN30 G1 X2 Y2 Z3\nN40 TRAFOOF\nN50 M30\n'
+    }
+    long 2097152 >long.mpf
+    run 2 $translate --max-line-bytes 1MiB -o o.h long.mpf
+    grep -q '^long.mpf:2:1048577: error: a line longer than the line-length limit of 1048576 bytes; --max-line-bytes raises it' err ||
+      { report "1MiB"; show err; }
+    [ ! -e o.h ] || report "o.h written"
+    limited run 0 $translate --max-line-bytes 2MiB -o o.h long.mpf
+    grep -q '5 blocks read, 5 written' err || { report "summary"; show err; }
+    run 1 $translate --max-line-bytes 0 -o o.h long.mpf
+    # The default, 16 MiB (the dialect given: recognising it would scan the long line too).
+    long 16777217 >long.mpf
+    run 2 $translate --from-dialect siemens -o o.h long.mpf
+    grep -q '^long.mpf:2:16777217: error: a line longer than the line-length limit of 16777216 bytes' err ||
+      { report "default line limit"; show err; }
+    ;;
+  block-words)
+    # More words in one line than --max-block-words: refused at the first word past the limit,
+    # before any lexer keeps a word (a 60 MiB line of `X1 ` took 4.3 GB).
+    { printf 'N10 TRAORI\nG1'; awk 'BEGIN { while (n++ < 2000) printf " X1" }'; printf '\nN30 M30\n'; } >words.mpf
+    run 2 $translate --max-block-words 1000 -o o.h words.mpf
+    grep -q '^words.mpf:2:3001: error: more words in one line than the words-per-block limit of 1000; --max-block-words raises it' err ||
+      { report "1000 words"; show err; }
+    run 2 $translate -o o.h words.mpf  # within the default: the reader's own errors (X repeated)
+    grep -q 'words-per-block' err && report "refused by the default limit"
+    # The default, 100,000: a line of 150,000 words (and 900 kB) is refused at the 100,001st,
+    # within a bounded address space.
+    { printf 'G1'; awk 'BEGIN { while (n++ < 150000) printf " X1.2." }'; printf '\nM30\n'; } >many.mpf
+    limited run 2 $translate -o o.h many.mpf
+    grep -q '^many.mpf:1:599998: error: more words in one line than the words-per-block limit of 100000' err ||
+      { report "default"; show err; }
+    [ ! -e o.h ] || report "o.h written"
     ;;
   *)
     echo "reliability.sh: unknown test '$name'" >&2

@@ -35,6 +35,7 @@
 #include <kin5/translate/setup.hpp>
 
 #include "format.hpp"
+#include "input_text.hpp"
 #include "machine_option.hpp"
 
 namespace kin5::tool {
@@ -50,6 +51,7 @@ struct match_arguments {
   std::vector<double> work_offset_mm;  ///< X, Y, Z of the workpiece frame on the target, or empty
   std::vector<std::string> work_offset_map;  ///< --work-offset-map entries, as `translate` takes them
   std::vector<std::string> tool_map;         ///< --tool-map entries, as `translate` takes them
+  prog::read_limits limits;                  ///< what the program may hold, as `translate` takes them
 };
 
 run_inputs target_inputs(const match_arguments& a) {
@@ -60,37 +62,6 @@ run_inputs target_inputs(const match_arguments& a) {
 
 /// Whether --work-offset says where the part sits: then the slides' ends are checked.
 bool placed(const match_arguments& a) { return a.work_offset_mm.size() == 3; }
-
-/// The bytes of `path` ('-': stdin); nothing, with `error` set, when it cannot be read to its end
-/// (a directory, a read error such as /proc/self/mem's). Read with stdio, whose errors are
-/// return values: an input stream's iterator throws on a read error.
-std::optional<std::string> read_file(const std::string& path, std::string& error) {
-  std::FILE* f = stdin;
-  if (path != "-") {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-      error = "is a directory";
-      return std::nullopt;
-    }
-    f = std::fopen(path.c_str(), "rb");
-    if (!f) {
-      error = std::strerror(errno);
-      return std::nullopt;
-    }
-  }
-  std::string bytes;
-  char chunk[1 << 16];
-  std::size_t got = 0;
-  while ((got = std::fread(chunk, 1, sizeof chunk, f)) > 0) bytes.append(chunk, got);
-  const bool failed = std::ferror(f) != 0;
-  const int saved = errno;
-  if (f != stdin) std::fclose(f);
-  if (failed) {
-    error = std::strerror(saved);
-    return std::nullopt;
-  }
-  return bytes;
-}
 
 void print(const std::string& text) { std::fwrite(text.data(), 1, text.size(), stdout); }
 
@@ -108,14 +79,14 @@ int pair_only(const machine_model& from, const machine_model& to, const match_ar
 int with_program(const machine_model& from, const machine_model& to, const match_arguments& a) {
   const std::string name = a.program == "-" ? "<stdin>" : kin5::program::printable(a.program);
   std::string error;
-  const auto bytes = read_file(a.program, error);
+  const auto bytes = read_input(a.program, a.limits, error);
   if (!bytes) {
     std::fprintf(stderr, "kin5 match: cannot read %s: %s\n", name.c_str(), error.c_str());
     return exit_codes::input_error;
   }
   const prog::dialect d = a.from_dialect.empty() ? prog::default_dialect(from.geometry.id).value_or(prog::dialect{})
                                                  : *prog::parse_dialect(a.from_dialect);
-  const prog::read_result in = prog::read(d, *bytes, name);
+  const prog::read_result in = prog::read(d, *bytes, name, a.limits);
   if (!in.ok()) {
     for (const auto& e : in.errors) std::fprintf(stderr, "%s\n", e.to_string().c_str());
     std::fprintf(stderr, "kin5 match: %zu errors in %s; no report\n", in.error_count(), name.c_str());
@@ -226,6 +197,7 @@ void add_match_command(CLI::App& app, int& exit_code) {
   sub->add_option("--tool-map", a->tool_map,
                   "A tool the program calls by name as tool number N (NAME=N, once per tool), as translate takes it")
       ->allow_extra_args(false);
+  add_limit_options(sub, a->limits);
   sub->footer("Exit codes: 0 every block reachable (or no program), 1 bad arguments, 2 the program cannot be read,\n"
               "3 blocks unreachable under the pair's default setup, or with --work-offset a slide past its travel\n"
               "(the report says which, and a setup that helps).");

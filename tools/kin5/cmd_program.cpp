@@ -48,6 +48,7 @@
 
 #include "commands.hpp"
 #include "format.hpp"
+#include "input_text.hpp"
 #include "machine_option.hpp"
 #include "output_file.hpp"
 #include "same_file.hpp"
@@ -67,40 +68,6 @@ std::vector<std::string_view> nc_dialect_names() {
 
 /// The name diagnostics use for IN: the path as given, or `<stdin>` for '-'.
 std::string display_name(const std::string& path) { return path == "-" ? "<stdin>" : prog::printable(path); }
-
-/// The bytes of `path` ('-': stdin), read in binary mode; nothing, with `error` set, on failure.
-std::optional<std::string> read_bytes(const std::string& path, std::string& error) {
-  std::FILE* f = stdin;
-  if (path != "-") {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-      error = "is a directory";
-      return std::nullopt;
-    }
-    f = std::fopen(path.c_str(), "rb");
-    if (!f) {
-      error = std::strerror(errno);
-      return std::nullopt;
-    }
-  }
-  std::string bytes;
-  constexpr std::size_t chunk = 1 << 20;
-  for (;;) {
-    const std::size_t old = bytes.size();
-    bytes.resize(old + chunk);
-    const std::size_t got = std::fread(bytes.data() + old, 1, chunk, f);
-    bytes.resize(old + got);
-    if (got < chunk) break;
-  }
-  const bool failed = std::ferror(f) != 0;
-  const int saved = errno;
-  if (f != stdin) std::fclose(f);
-  if (failed) {
-    error = std::strerror(saved);
-    return std::nullopt;
-  }
-  return bytes;
-}
 
 // ---- reporting ----------------------------------------------------------------------------
 
@@ -209,6 +176,7 @@ struct job {
   std::function<std::unique_ptr<block_translator>(prog::dialect, const std::string&)> make;
   /// The writer settings the user chose (--tcp-word); the decimals come from the translation.
   prog::write_settings writer_choices;
+  prog::read_limits limits;  ///< what IN may hold (the translator checks the same)
 };
 
 /// The report file (--report) of a run, written when the run ends, whatever its exit code, as
@@ -392,7 +360,7 @@ int execute(const job& j) {
     return finish(exit_codes::input_error);
   }
   std::string error;
-  auto bytes = read_bytes(j.input_path, error);
+  auto bytes = read_input(j.input_path, j.limits, error);
   if (!bytes) {
     file_failure(a, prefix, a.input, "cannot read '" + j.input_path + "': " + error);
     return finish(exit_codes::input_error);
@@ -450,6 +418,7 @@ struct common_arguments {
   std::string tool_table;   ///< --tool-table FILE
   std::string tcp_word;     ///< --tcp-word: translate and post into Heidenhain; empty: M128
   std::optional<long long> program_number;  ///< --program-number: translate and post into ISO
+  prog::read_limits limits;  ///< --max-file-bytes, --max-line-bytes, --max-block-words
 };
 
 std::optional<std::vector<double>> parse_list(std::string_view text, std::size_t count);
@@ -554,6 +523,7 @@ std::optional<common_options> parse_common(std::string_view command, const commo
     return std::nullopt;
   }
   c.digits = a.digits;
+  c.limits = a.limits;
   for (const auto& entry : a.tool_map)
     if (!c.tool_numbers.add(entry)) {
       std::cerr << "kin5 " << command << ": --tool-map: '" << entry
@@ -634,6 +604,7 @@ void add_tcp_word_option(CLI::App* sub, common_arguments& a) {
 
 /// Adds the options of `common_arguments` to `sub`.
 void add_common_options(CLI::App* sub, common_arguments& a) {
+  add_limit_options(sub, a.limits);
   sub->add_option("--angle-tolerance", a.angle_tolerance_deg,
                   "Degrees a rotary value may lie past a travel or reach edge and count as on it (default: half a "
                   "unit of the program's last angle decimal, at most 0.0005)");
@@ -782,6 +753,7 @@ int run_translate(const translate_arguments& a) {
   j.target = std::string(to_model.geometry.id);
   j.from_id = std::string(from_model.geometry.id), j.to_id = j.target;
   j.report_path = a.common.report;
+  j.limits = a.common.limits;
   j.verbose = a.verbose;
   translate_options options;
   options.setup = parse_setup(a, from_model, to_model);
@@ -832,6 +804,7 @@ int run_reverse(const machine_arguments& a) {
   j.target = "APT CL data";
   j.from_id = std::string(model.geometry.id);
   j.report_path = a.common.report;
+  j.limits = a.common.limits;
   j.verbose = a.verbose;
   int common_error = exit_codes::usage;
   const auto common = parse_common("reverse", a.common, common_error);
@@ -862,6 +835,7 @@ int run_post(const machine_arguments& a) {
   j.target = std::string(model.geometry.id);
   j.to_id = j.target;
   j.report_path = a.common.report;
+  j.limits = a.common.limits;
   j.verbose = a.verbose;
   const prog::dialect out = j.output_dialect;
   int common_error = exit_codes::usage;

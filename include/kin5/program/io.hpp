@@ -25,14 +25,23 @@
 
 #include "block.hpp"
 #include "dialect.hpp"
+#include "read_limits.hpp"
 #include "text.hpp"
 
 namespace kin5::program {
 
 /// Reads `text` (the bytes of a file, any line endings) as a program in dialect `d`.
-/// `file_name` is only used in the locations of blocks and diagnostics.
+/// `file_name` is only used in the locations of blocks and diagnostics. A text that breaks
+/// `limits` (read_limits.hpp) is not read: its one error names the place and the limit.
 template <class List = dialects>
-read_result read(dialect d, std::string_view text, std::string file_name) {
+read_result read(dialect d, std::string_view text, std::string file_name, const read_limits& limits = {}) {
+  if (auto broken = check_limits(text, limits, file_name)) {
+    read_result refused;
+    refused.parsed.language = d;
+    refused.parsed.file = std::move(file_name);
+    refused.add_error(std::move(*broken));
+    return refused;
+  }
   return visit_dialect<List>(
       d, [&]<class D>(std::type_identity<D>) { return read_whole(d, text, std::move(file_name), &D::read_blocks); },
       [] { return read_result{}; });
@@ -40,9 +49,14 @@ read_result read(dialect d, std::string_view text, std::string file_name) {
 
 /// Reads `text` in dialect `d` block by block: `on_block` receives each block in file order as soon
 /// as it is read, and errors and warnings go to `diagnostics` (its `parsed` is not touched). This
-/// is `read` without the program: memory stays constant, however long the text.
+/// is `read` without the program: memory stays constant, however long the text. A text that
+/// breaks `limits` gives no block and one error, as `read`.
 inline void read_blocks(dialect d, std::string_view text, const std::string& file_name, read_result& diagnostics,
-                        const block_sink& on_block) {
+                        const block_sink& on_block, const read_limits& limits = {}) {
+  if (auto broken = check_limits(text, limits, file_name)) {
+    diagnostics.add_error(std::move(*broken));
+    return;
+  }
   visit_dialect(
       d,
       [&]<class D>(std::type_identity<D>) {

@@ -27,6 +27,7 @@
 #include "../kinematics/tool_table.hpp"
 #include "../program/block.hpp"
 #include "../program/dialect.hpp"
+#include "../program/read_limits.hpp"
 #include "allowances.hpp"
 #include "diagnostic_list.hpp"
 #include "feed.hpp"
@@ -77,6 +78,9 @@ struct common_options {
   std::optional<tool_table> tools;
   /// Whether `placement` / `source_placement` give a tool length, not only a work offset.
   bool placement_has_length = true, source_placement_has_length = true;
+  /// What the streaming driver reads of a program's text (`stream_text`): the file, line and
+  /// words-per-line sizes, and no NUL byte (program/read_limits.hpp).
+  program::read_limits limits;
 };
 
 /// How to translate.

@@ -63,10 +63,13 @@ class block_translator {
   /// How finely the program writes its numbers, for the default angle tolerance
   /// (angle_tolerance.hpp); before the first `plan`. Not given: 0.0005°.
   void source_resolution(const program::number_resolution& r) { resolution_ = r; }
+  /// What `stream_text` reads of a text (`common_options::limits`).
+  const program::read_limits& limits() const { return limits_; }
 
  protected:
   translation result_;
   program::number_resolution resolution_;
+  program::read_limits limits_;
 };
 
 /// Whether a `block_translator`'s second pass reads the source text of `b`: not for a block it
@@ -111,6 +114,7 @@ class two_pass_translator final : public block_translator {
         second_(std::move(source_side)) {
     result_.output.language = output_language;
     result_.output.file = file;
+    limits_ = common_.limits;
     if (refusal) result_.errors.push_back(file_error(file, std::move(*refusal)));
   }
 

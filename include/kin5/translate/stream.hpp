@@ -15,7 +15,9 @@
 /// are not APT) is an input error too, not a program of comments. `stream_text` scans the text
 /// for its resolution first (`program::scan_resolution`), for the default angle tolerance and
 /// the output's decimals (precision.hpp); a caller of `stream_blocks` gives it to the translator
-/// (`block_translator::source_resolution`). The `kin5` tool and the laws run this same code.
+/// (`block_translator::source_resolution`). A text that breaks the translator's
+/// `read_limits` (`common_options::limits`) is refused with one error at its place, before any
+/// reader runs. The `kin5` tool and the laws run this same code.
 /// @code
 ///   auto t = kin5::make_translator<From, To>(source_language, "part.mpf", options);
 ///   kin5::string_sink out;  // or the tool's output file: any `text_sink`
@@ -109,12 +111,14 @@ inline std::string not_cl_data(std::size_t not_understood, std::optional<program
 
 /// The NC dialect whose reader finds the fewest errors in `text`, fewer than `cl_errors` (the
 /// first in `program::dialects` on a tie); none when no NC reader does better than APT's.
-inline std::optional<program::dialect> closest_nc_dialect(std::string_view text, std::size_t cl_errors) {
+/// `limits`: the ones the text was read within.
+inline std::optional<program::dialect> closest_nc_dialect(std::string_view text, std::size_t cl_errors,
+                                                          const program::read_limits& limits = {}) {
   std::optional<program::dialect> best;
   std::size_t fewest = cl_errors;
   for (const program::dialect d : program::nc_dialect_ids()) {
     program::read_result r;
-    program::read_blocks(d, text, "", r, [](program::block&&) {});
+    program::read_blocks(d, text, "", r, [](program::block&&) {}, limits);
     if (r.error_count() < fewest) fewest = r.error_count(), best = d;
   }
   return best;
@@ -187,20 +191,26 @@ stream_result stream_text(block_translator& t, std::string text, program::dialec
   const program::number_resolution resolution = program::scan_resolution(text, source_language);
   t.source_resolution(resolution);
   const block_source read = [&](program::read_result& diagnostics, const program::block_sink& on_block) {
-    const auto guessed = program::capabilities_of(source_language).cl_data ? program::guess_dialect(text) : std::nullopt;
+    const bool cl_data = program::capabilities_of(source_language).cl_data;
+    if (cl_data)  // the limits before the markers are looked for (read_blocks checks them too)
+      if (auto broken = program::check_limits(text, t.limits(), file)) {
+        diagnostics.add_error(std::move(*broken));
+        std::string().swap(text);
+        return;
+      }
+    const auto guessed = cl_data ? program::guess_dialect(text) : std::nullopt;
     if (guessed && *guessed != source_language) {  // NC given as CL data: refused before reading
       diagnostics.errors.push_back(translate_detail::file_error(file, not_cl_data(0, guessed)));
       return;
     }
-    const bool cl_data = program::capabilities_of(source_language).cl_data;
     std::size_t moving = 0;
     const program::block_sink counting = [&](program::block&& b) {
       moving += b.moves() ? 1 : 0;
       on_block(std::move(b));
     };
-    program::read_blocks(source_language, text, file, diagnostics, cl_data ? counting : on_block);
+    program::read_blocks(source_language, text, file, diagnostics, cl_data ? counting : on_block, t.limits());
     if (cl_data && moving == 0 && !diagnostics.ok()) {  // NC without markers: one error, not one per line
-      if (const auto nc = closest_nc_dialect(text, diagnostics.error_count())) {
+      if (const auto nc = closest_nc_dialect(text, diagnostics.error_count(), t.limits())) {
         diagnostics = {};
         diagnostics.errors.push_back(translate_detail::file_error(file, not_cl_data(0, nc, nc_evidence::reader)));
       }
