@@ -364,7 +364,11 @@ class writer {
                     ": tool-tip tracking switched on before any tool change: no tool gives its length offset H");
       if (*b.tcp && h) words_.push_back(code('H', *h));
     }
-    if (b.state.length_compensation && !b.tcp) {  // without tool-tip tracking: G43 [H n] / G49
+    // Without tool-tip tracking: G43 [H n] / G49. Another dialect's length switched on under
+    // tracking (Siemens D1 under TRAORI) is the tracking's own, G43.4 H n's: nothing to write.
+    const bool tracked_length = !same_ && tcp_on_ && b.state.length_compensation == true &&
+                                (!b.state.length_register || b.state.length_register == active_tool_);
+    if (b.state.length_compensation && !b.tcp && !tracked_length) {
       words_.push_back(*b.state.length_compensation ? "G43" : "G49");
       const auto h = b.state.length_register ? b.state.length_register : active_tool_;
       if (*b.state.length_compensation && !same_ && !h)
