@@ -173,13 +173,14 @@ TEST_CASE("units: an inch program without a header of its own is framed BEGIN PG
 }
 
 namespace {
-/// Each move of `blocks`: its point and its feed, in the model's mm and mm/min.
+/// Each move of `blocks`: the point it moves to and its feed, in the model's mm and mm/min.
 std::vector<std::vector<double>> moves_mm(const std::vector<block>& blocks) {
   std::vector<std::vector<double>> out;
-  double feed = 0;
+  double x = 0, y = 0, z = 0, feed = 0;
   for (const block& b : blocks) {
+    x = b.axes.x_mm.value_or(x), y = b.axes.y_mm.value_or(y), z = b.axes.z_mm.value_or(z);
     if (b.feed) feed = *b.feed;
-    if (b.moves()) out.push_back({b.axes.x_mm.value_or(NAN), b.axes.y_mm.value_or(NAN), b.axes.z_mm.value_or(NAN), feed});
+    if (b.moves()) out.push_back({x, y, z, feed});
   }
   return out;
 }
@@ -188,7 +189,8 @@ std::vector<std::vector<double>> moves_mm(const std::vector<block>& blocks) {
 // A Siemens program may switch units anywhere (G700 / G710, from its block on); ISO, Haas and
 // LinuxCNC take a unit only before the first move, a TNC only in BEGIN PGM. Those writers write
 // the whole program in the unit said before the first move, the blocks after a switch converted
-// from the model's millimetres, and their own readers read back the same moves.
+// from the model's millimetres (a switch back to that unit is written: it changes nothing), and
+// their own readers read back the same moves.
 TEST_CASE("units: a Siemens unit switch after motion is written in the program's unit, and reads back") {
   const std::string text = "%_N_P_MPF\nG710\nG1 X1 Y2 Z3 F100\nG700 X2 F10\nG1 Y1.2345 Z0.5\nG710 X20 F254\nM30\n";
   const read_result source = read(id_of<siemens::dialect>(), text, "t");
@@ -201,11 +203,11 @@ TEST_CASE("units: a Siemens unit switch after motion is written in the program's
   };
   const std::vector<row> table{
       {id_of<iso::dialect>(),
-       "%\nO0001 (P)\nG21\nG1 X1. Y2. Z3. F100.\nX50.8 F254.\nG1 Y31.356 Z12.7\nX20. F254.\nM30\n%\n"},
+       "%\nO0001 (P)\nG21\nG1 X1. Y2. Z3. F100.\nX50.8 F254.\nG1 Y31.356 Z12.7\nG21 X20. F254.\nM30\n%\n"},
       {id_of<haas::dialect>(),
-       "%\nO0001 (P)\nG21\nG1 X1. Y2. Z3. F100.\nX50.8 F254.\nG1 Y31.356 Z12.7\nX20. F254.\nM30\n%\n"},
+       "%\nO0001 (P)\nG21\nG1 X1. Y2. Z3. F100.\nX50.8 F254.\nG1 Y31.356 Z12.7\nG21 X20. F254.\nM30\n%\n"},
       {id_of<linuxcnc::dialect>(),
-       "%\n(P)\nG21\nG1 X1 Y2 Z3 F100\nX50.8 F254\nG1 Y31.356 Z12.7\nX20 F254\nM30\n%\n"},
+       "%\n(PROGRAM P)\nG21\nG1 X1 Y2 Z3 F100\nX50.8 F254\nG1 Y31.356 Z12.7\nG21 X20 F254\nM30\n%\n"},
       {id_of<heidenhain::dialect>(),
        "0 BEGIN PGM P MM\n1 ;G710\n2 L X+1 Y+2 Z+3 F100\n3 L X+50.8 F254\n4 L Y+31.356 Z+12.7\n"
        "5 L X+20 F254\n6 M30\n7 END PGM P MM\n"},
