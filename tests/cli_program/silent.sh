@@ -437,6 +437,29 @@ case "$name" in
     has_line a.ngc 'N30 G1 X10 .*\(- MSG, hello\)'
     run 0 translate --from xyzac-trt --to xyzac-trt --from-dialect linuxcnc -o b.ngc a.ngc  # reads back
     ;;
+  # A Siemens unit switch after motion (G700 after G710) was written as G20 after motion, which
+  # ISO, Haas and LinuxCNC refuse, and refused by the Heidenhain writer: each now writes the
+  # program in its first unit, the blocks after the switch converted, and reads it back.
+  unit-switch)
+    printf '%s\n' 'N10 G710 G90 G17' 'N20 T1 M6' 'N30 TRAORI' 'N40 G1 X0 Y0 Z50 A-30 B10 F500' \
+      'N50 G700 X1 F20' 'N60 Y0.5' 'N70 TRAFOOF' 'N80 M30' >u.mpf
+    for d in iso haas linuxcnc heidenhain; do
+      run 0 translate --from sajo-12000p --to sajo-12000p --to-dialect "$d" -o "u.$d" u.mpf
+      no_line "u.$d" '.*G20.*'
+      run 0 reverse --machine sajo-12000p --dialect "$d" -o "u-$d.apt" "u.$d"
+    done
+    has_line u.iso 'N50 X25\.4 Y0\. Z50\. A-30\. B10\. F508\.'
+    has_line u.heidenhain '[0-9]+ L X\+25\.4 Y\+0 Z\+50 A-30 B\+10 F508( M128)?'
+    ;;
+  # ISO G49 is Siemens D0, which kin5 read as a word it could not translate (into APT: refused).
+  g49-siemens)
+    printf '%s\n' '%' 'O1' 'G21 G90 G17' 'T1 M6' 'G43.4 H1' 'G1 X0. Y0. Z50. A-30. B10. F500.' 'G49' 'M30' '%' >g.nc
+    run 0 translate --from sajo-12000p --to sajo-12000p --from-dialect iso --to-dialect siemens -o g.mpf g.nc
+    has_line g.mpf 'TRAFOOF D0'
+    run 0 reverse --machine sajo-12000p --dialect siemens -o g.apt g.mpf
+    run 0 translate --from sajo-12000p --to sajo-12000p --to-dialect iso -o g2.nc g.mpf
+    has_line g2.nc 'G49( \(siemens: D0\))?'
+    ;;
   *)
     echo "silent.sh: unknown row '$name'" >&2
     exit 2

@@ -341,6 +341,11 @@ class source_walker {
                     "before machine-coordinate motion"));
       return false;
     }
+    if (modal_.tcp && modal_.length_compensation == false) {  // Siemens D0, then TRAORI
+      to.fail(at(b, "motion under tool-tip tracking while tool length compensation is off (D0): the point "
+                    "programmed is the spindle's gauge point, not the tool tip; switch compensation on (D1) first"));
+      return false;
+    }
     if (const auto plane = modal_.working_plane; plane && *plane != program::arc_plane::xy &&
         program::controller_of(context_.language).plane_turns_tool_length && modal_.length_compensation != false) {
       to.fail(at(b, std::string("motion under ") + (*plane == program::arc_plane::zx ? "G18" : "G19") +

@@ -165,16 +165,68 @@ TEST_CASE("units: inch programs between dialects keep their inch values") {
              "0 BEGIN PGM P INCH\n1 ;G700\n2 L X+1.2345 Y+2 Z+3 F100\n3 M30\n4 END PGM P INCH\n");
 }
 
-TEST_CASE("units: a unit Heidenhain cannot say is refused by its writer") {
-  // An inch program without a header of its own is framed BEGIN PGM … INCH; a unit change
-  // after BEGIN PGM cannot be said.
+TEST_CASE("units: an inch program without a header of its own is framed BEGIN PGM … INCH") {
   const read_result iso_inch = read(id_of<iso::dialect>(), "G20\nG1 X1. F10.\n", "t");
   REQUIRE(iso_inch.ok());
   CHECK(write(id_of<heidenhain::dialect>(), iso_inch.parsed) ==
         "0 BEGIN PGM PGM INCH\n1 ;G20\n2 L X+1 F100\n3 END PGM PGM INCH\n");
-  const read_result switched = read(id_of<siemens::dialect>(), "%_N_P_MPF\nG710\nG1 X1 F10\nG700 X2\nM30\n", "t");
-  REQUIRE(switched.ok());
-  CHECK_THROWS_WITH(write(id_of<heidenhain::dialect>(), switched.parsed),
-                    "t:4: block cannot be written in heidenhain: a change of units to inch inside the program: a "
-                    "TNC program has one unit, its BEGIN PGM's (MM)");
+}
+
+namespace {
+/// Each move of `blocks`: the point it moves to and its feed, in the model's mm and mm/min.
+std::vector<std::vector<double>> moves_mm(const std::vector<block>& blocks) {
+  std::vector<std::vector<double>> out;
+  double x = 0, y = 0, z = 0, feed = 0;
+  for (const block& b : blocks) {
+    x = b.axes.x_mm.value_or(x), y = b.axes.y_mm.value_or(y), z = b.axes.z_mm.value_or(z);
+    if (b.feed) feed = *b.feed;
+    if (b.moves()) out.push_back({x, y, z, feed});
+  }
+  return out;
+}
+}  // namespace
+
+// A Siemens program may switch units anywhere (G700 / G710, from its block on); ISO, Haas and
+// LinuxCNC take a unit only before the first move, a TNC only in BEGIN PGM. Those writers write
+// the whole program in the unit said before the first move, the blocks after a switch converted
+// from the model's millimetres (a switch back to that unit is written: it changes nothing), and
+// their own readers read back the same moves.
+TEST_CASE("units: a Siemens unit switch after motion is written in the program's unit, and reads back") {
+  const std::string text = "%_N_P_MPF\nG710\nG1 X1 Y2 Z3 F100\nG700 X2 F10\nG1 Y1.2345 Z0.5\nG710 X20 F254\nM30\n";
+  const read_result source = read(id_of<siemens::dialect>(), text, "t");
+  REQUIRE(source.ok());
+  const auto expected = moves_mm(source.parsed.blocks);
+  REQUIRE(expected.size() == 4);
+  struct row {
+    dialect to;
+    std::string written;
+  };
+  const std::vector<row> table{
+      {id_of<iso::dialect>(),
+       "%\nO0001 (P)\nG21\nG1 X1. Y2. Z3. F100.\nX50.8 F254.\nG1 Y31.356 Z12.7\nG21 X20. F254.\nM30\n%\n"},
+      {id_of<haas::dialect>(),
+       "%\nO0001 (P)\nG21\nG1 X1. Y2. Z3. F100.\nX50.8 F254.\nG1 Y31.356 Z12.7\nG21 X20. F254.\nM30\n%\n"},
+      {id_of<linuxcnc::dialect>(),
+       "%\n(PROGRAM P)\nG21\nG1 X1 Y2 Z3 F100\nX50.8 F254\nG1 Y31.356 Z12.7\nG21 X20 F254\nM30\n%\n"},
+      {id_of<heidenhain::dialect>(),
+       "0 BEGIN PGM P MM\n1 ;G710\n2 L X+1 Y+2 Z+3 F100\n3 L X+50.8 F254\n4 L Y+31.356 Z+12.7\n"
+       "5 L X+20 F254\n6 M30\n7 END PGM P MM\n"},
+  };
+  for (const row& r : table) {
+    INFO("into " << name(r.to));
+    const std::string out = write(r.to, source.parsed);
+    CHECK(out == r.written);
+    const read_result again = read(r.to, out, "t");
+    REQUIRE(again.ok());
+    const auto moves = moves_mm(again.parsed.blocks);
+    REQUIRE(moves.size() == expected.size());
+    for (std::size_t k = 0; k < moves.size(); ++k)
+      for (std::size_t c = 0; c < 4; ++c) CHECK(std::abs(moves[k][c] - expected[k][c]) <= 0.0005);
+  }
+  // An inch program switching to mm is written in inches throughout.
+  const read_result inch = read(id_of<siemens::dialect>(), "G700\nG1 X1 Y2 Z3 F10\nG710 X25.4 F254\nM30\n", "t");
+  REQUIRE(inch.ok());
+  const std::string out = write(id_of<iso::dialect>(), inch.parsed);
+  CHECK(out == "%\nO0001\nG20\nG1 X1. Y2. Z3. F10.\nX1. F10.\nM30\n%\n");
+  REQUIRE(read(id_of<iso::dialect>(), out, "t").ok());
 }

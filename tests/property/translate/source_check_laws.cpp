@@ -435,9 +435,7 @@ TEST_CASE("across dialects, a kept word whose effect a comment would lose is ref
       {iso, "G04 X1.5\n", ""},  // X of a G4 is its time, not a position
       {iso, "G43 H1\n", ""},  // read into the model: the writers translate or refuse it
       {siemens, "T=\"BALL\"\n", ""},  // read into the model (check_tool_name)
-      {siemens, "D0\n",
-       "t:1:1: error: D0: tool length compensation off (D0) of siemens is not translated into heidenhain yet (it "
-       "would become a comment)"},
+      {siemens, "D0\n", ""},  // read into the model as well (state.length_compensation): the writers translate it
       {iso, "G17 G40 G80 G90 G05.1 Q1\n", ""},
       {siemens, "G17 G40 G90 SOFT D1\n", ""},
       // Edge 2's length is not tool 1's own: H1 (TOOL CALL 1) would apply another length.

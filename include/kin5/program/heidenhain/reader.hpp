@@ -177,7 +177,8 @@ class block_reader : public word_checks {
     } else if (!name.empty()) {
       b_.program_end = name;
       if (state_.begin_name && *state_.begin_name != name)
-        warning(p, "END PGM name '" + name + "' differs from BEGIN PGM '" + *state_.begin_name + "'");
+        error(p, "END PGM name " + name + " differs from BEGIN PGM's " + *state_.begin_name +
+                     ": the control pairs them by name; give both the same");
     }
     only_comment_after(ue);
   }

@@ -74,9 +74,7 @@ class writer {
       begin_name_ = program_name(b_mm.program_begin);
       begin_unit(!b_mm.metric.value_or(options_.program_metric.value_or(true)));
       add("BEGIN PGM " + *begin_name_ + unit_word());
-    } else if (b_mm.metric) {
-      unit_change(b_mm, !*b_mm.metric, bi);
-    }
+    }  // a later unit word says nothing: every block is written in BEGIN PGM's unit (`in_program_unit`)
     const block b = in_program_unit(b_mm);
     length_check(b, bi);
     radius_check(b, bi);
@@ -211,16 +209,10 @@ class writer {
   }
   std::string unit_word() const { return inch_.value_or(false) ? " INCH" : " MM"; }
 
-  /// A unit word after BEGIN PGM: the same unit says nothing; another cannot be written, since a
-  /// TNC program has one unit, its BEGIN PGM's.
-  void unit_change(const block& b, bool inch, std::size_t bi) const {
-    if (inch == inch_.value_or(false)) return;
-    fail(b, bi, std::string("a change of units to ") + (inch ? "inch" : "millimetres") +
-                    " inside the program: a TNC program has one unit, its BEGIN PGM's (" + (inch_.value_or(false) ? "INCH" : "MM") + ")");
-  }
-
   /// `b` with its lengths and F in the program's unit (inches and 1/10 inch/min after BEGIN PGM
-  /// … INCH).
+  /// … INCH). A TNC program has one unit, its BEGIN PGM's: a block of another dialect that
+  /// changes the unit (Siemens `G700` after motion) is written in it too, exactly, since the
+  /// model holds millimetres.
   block in_program_unit(const block& b) const {
     block u = b;
     if (!inch_.value_or(false)) return u;

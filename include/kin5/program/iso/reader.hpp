@@ -159,12 +159,21 @@ class basic_reader {
   /// First pass over the G words: what kind of block this is; false after "two motion words".
   bool classify(line_words& l) {
     bool g52 = false;
+    const word* length_word = nullptr;  // G43, G43.4, G43.5 or G49
     for (const word& w : words_) {
       if (w.letter != 'G') continue;
       const int g = g_code(w.value);
       if (g == 280 || g == 300) l.homing = true;
       if (g == 435) l.g43_5 = true;
       if (g == 430 || g == 434 || g == 435) l.g43 = &w;
+      if (g == 430 || g == 434 || g == 435 || g == 490) {  // modal group 08: one per block
+        if (length_word && g_code(length_word->value) != g)
+          return error(w.column, std::string(length_word->text) + " and " + std::string(w.text) +
+                                     " in one block: two tool length codes of one modal group (08), which "
+                                     "cannot both apply; write the one meant"),
+                 false;
+        length_word = &w;
+      }
       if (g == 400 || g == 410 || g == 420) {  // the same word twice says it once
         const word* said = l.g41 ? l.g41 : l.g40;
         if (said && g_code(said->value) != g)

@@ -7,7 +7,9 @@
 /// (`%` of LinuxCNC, Siemens `;$PATH=`) is never copied, and a block after its end is refused
 /// unless it is only a comment (program_end.hpp). A program read as ISO is written as read.
 /// After a block that says inch (`metric == false`, written G20) lengths and per-minute feeds are
-/// written in inches with one decimal more. Every coordinate, angle, I J K, R and F has a decimal
+/// written in inches with one decimal more. The unit said before the first move is the program's:
+/// a later change of unit (Siemens `G700` after motion), which ISO controls and kin5's reader
+/// refuse, is not written, and the blocks after it are written in the program's unit. Every coordinate, angle, I J K, R and F has a decimal
 /// point (`X10.`, `write_options::decimal_point`). A block ISO cannot express (a tool-axis vector outside
 /// G43.5 or with an arc)
 /// throws `std::invalid_argument` naming the block's `file:line`. A control built on Fanuc's G code
@@ -148,9 +150,13 @@ class writer {
     words_.clear();
     tail_.clear();
     notes_.clear();
-    if (b.metric) inch_ = !*b.metric;
-    if (b.feed_mode) inverse_time_ = *b.feed_mode == feed_unit::inverse_time;
     block in_unit = b;
+    // The unit is the program's from its first move on: another dialect's later switch (Siemens
+    // G700 / G710) is written in it, exactly, since the model holds millimetres.
+    if (b.metric && moved_ && *b.metric == inch_) in_unit.metric.reset();
+    else if (b.metric) inch_ = !*b.metric;
+    moved_ = moved_ || b.moves();
+    if (b.feed_mode) inverse_time_ = *b.feed_mode == feed_unit::inverse_time;
     if (inch_) mm_to_inches(in_unit, !inverse_time_);
     const bool loads = std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
     const bool change = !same_ && loads;
@@ -199,6 +205,7 @@ class writer {
   std::optional<long long> selected_tool_;  // the last T written
   std::optional<long long> active_tool_;    // the tool of the last change written
   bool inch_ = false;          // G20 written: lengths in inches
+  bool moved_ = false;         // a block with axis words written: the unit is the program's
   bool inverse_time_ = false;  // G93 written: F is not a length
   arc_plane plane_ = arc_plane::xy;
   std::optional<double> last_[3];
@@ -360,7 +367,11 @@ class writer {
                     ": tool-tip tracking switched on before any tool change: no tool gives its length offset H");
       if (*b.tcp && h) words_.push_back(code('H', *h));
     }
-    if (b.state.length_compensation && (!b.tcp || length_ends_tcp)) {  // without tracking: G43 [H n] / G49
+    // Without tool-tip tracking: G43 [H n] / G49. Another dialect's length switched on under
+    // tracking (Siemens D1 under TRAORI) is the tracking's own, G43.4 H n's: nothing to write.
+    const bool tracked_length = !b.tcp && !same_ && tcp_on_ && b.state.length_compensation == true &&
+                                (!b.state.length_register || b.state.length_register == active_tool_);
+    if (b.state.length_compensation && (!b.tcp || length_ends_tcp) && !tracked_length) {
       if (length_ends_tcp) vector_tcp_ = false;
       words_.push_back(*b.state.length_compensation ? "G43" : "G49");
       const auto h = b.state.length_register ? b.state.length_register : active_tool_;

@@ -158,12 +158,15 @@ class own_words {
   /// `G41`/`G42` without D take the radius of the tool loaded now (LinuxCNC User Manual, "G-Codes",
   /// "G41, G42 Cutter Compensation": the D word is optional, without it the loaded tool's radius
   /// is used; the line's M6 runs first): its number is the register. Before any M6 the tool in
-  /// the spindle is not known: refused.
+  /// the spindle is not known, and after `T0 M6` there is none: refused.
   template <class Error>
   void loaded_radius(block& b, const line_words& l, Error&& error) const {
     if (!l.g41 || l.d) return;
     const std::optional<long long> loaded = !l.m6 ? loaded_ : l.t ? std::optional<long long>(static_cast<long long>(l.t->value)) : selected_;
-    if (loaded) b.state.radius_register = *loaded;
+    if (loaded && *loaded == 0)  // T0 M6 empties the spindle: no tool, no radius (the writers' D takes 1 or more)
+      error(l.g41->column, std::string(l.g41->text) + " without D while tool 0 is loaded: the spindle holds no tool "
+                                                      "whose radius it could apply (load a tool, or G41 D n names one)");
+    else if (loaded) b.state.radius_register = *loaded;
     else error(l.g41->column, std::string(l.g41->text) + " without D before any M6: the radius of the tool in the "
                                                          "spindle is not known (G41 D n names the tool)");
   }

@@ -43,10 +43,10 @@ struct dialect {
   /// Catalog machines whose controller reads it (Tian 2010's SAJO 12000P; the usual one for the rest).
   static constexpr std::array<std::string_view, 4> default_for{"sajo-12000p", "ac-trunnion", "ac-head",
                                                                "b-head-a-tilted-table"};
-  /// Kept words a comment would lose: compensation off with D0, another edge than D1.
-  static constexpr std::array<kept_word_effect, 2> lost_as_comment{
-      {{"D0", kept_word_effect::match::whole, "tool length compensation off (D0)"},
-       {"D1", kept_word_effect::match::other_code,
+  /// Kept words a comment would lose: another edge than D1 (D0 is read as length compensation
+  /// off, `state.length_compensation`, which every writer says its own way).
+  static constexpr std::array<kept_word_effect, 1> lost_as_comment{
+      {{"D1", kept_word_effect::match::other_code,
         "another cutting edge's length and radius than the first's (D1, the tool's own)"}}};
   using write_options = siemens::write_options;
   using writer = siemens::writer;

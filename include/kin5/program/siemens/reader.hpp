@@ -101,8 +101,12 @@ inline void compensation(line_parse& p, modal_state& state, std::optional<motion
   const auto error = [&](std::size_t column, std::string m) {
     errors.push_back({{b.where.file, b.where.line, column + 1}, std::move(m)});
   };
-  if (changes_tool(b)) state.edge.reset();
+  if (changes_tool(b)) state.edge.reset(), state.tool_loaded = true;
   if (p.edge) state.edge = *p.edge;
+  // D0 switches the tool length off; D n on, with edge n of the tool loaded (before any tool
+  // change there is none: the D is a kept word only). The D stays a kept word, for the Siemens
+  // writer; `lost_as_comment` refuses another edge than D1 in other dialects.
+  if (p.edge && (*p.edge == 0 || state.tool_loaded)) b.state.length_compensation = *p.edge != 0;
   const auto kind = b.motion ? b.motion : before;
   const bool arc = is_arc(kind) && (b.motion || b.moves());
   if (!p.radius_word) {

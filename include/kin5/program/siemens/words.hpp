@@ -175,6 +175,14 @@ class word_reader {
       if (duplicate(out_.b.tool.has_value() || out_.b.tool_name.has_value(), start, "T")) return;
       const std::string_view name = w.text.substr(1, w.text.size() >= 2 ? w.text.size() - 2 : 0);  // inside the quotes
       if (name.empty()) return error(start, "T=\"\": a tool name is empty");
+      // What the writer can write back in T="…" (1 to 32 characters, no control character).
+      for (std::size_t k = 0; k < name.size(); ++k)
+        if (static_cast<unsigned char>(name[k]) < 0x20)
+          return error(w.open_column + 1 + k, "control character " + lexing::hex_byte(name[k], false) +
+                                                  " in a tool name (T=\"…\" takes printable characters)");
+      if (name.size() > 32)
+        return error(start, "a tool name of " + std::to_string(name.size()) +
+                                " characters: T=\"…\" takes at most 32 (840D sl tool management)");
       out_.b.tool_name = std::string(name);
       out_.has_content = true;
       return;

@@ -64,13 +64,12 @@ TEST_CASE("heidenhain: the writer names the block it cannot write") {
   b.axes.x_mm = 1;
   b.metric = false;
   p.blocks.push_back(b);
-  // An inch program without a header of its own is framed BEGIN PGM … INCH; a later unit change
-  // cannot be said.
+  // An inch program without a header of its own is framed BEGIN PGM … INCH; a block after a
+  // later unit change is written in that unit too.
   CHECK(heidenhain::write(p) == "0 BEGIN PGM PGM INCH\n1 L X+0.0394\n2 END PGM PGM INCH\n");
   p.blocks.push_back(b);
   p.blocks[1].metric = true;
-  CHECK_THROWS_WITH(heidenhain::write(p), "part.nc:12: block cannot be written in heidenhain: a change of units to "
-                                          "millimetres inside the program: a TNC program has one unit, its BEGIN PGM's (INCH)");
+  CHECK(heidenhain::write(p) == "0 BEGIN PGM PGM INCH\n1 L X+0.0394\n2 L X+0.0394\n3 END PGM PGM INCH\n");
   p.blocks.pop_back();
   p.blocks[0].metric.reset();
   p.blocks[0].feed_mode = feed_unit::inverse_time;

@@ -75,6 +75,7 @@ struct state {
   std::array<std::optional<double>, 3> position;
   std::optional<std::string> name;
   bool inverse_time = false;  // G93: every feed move is drawn with its F (the reader carries one into a move without)
+  bool tool_loaded = false;    // an M6 drawn
 };
 
 struct line {
@@ -326,6 +327,11 @@ drawn_program draw_program() {
   std::string ending;
   for (int i = 0; i < n; ++i) {
     line l = draw_line(s);
+    // D n is edge n's length switched on once a tool is loaded (an M6 here or before); D0 none.
+    if (changes_tool(l.expected)) s.tool_loaded = true;
+    for (const std::string& w : l.expected.kept_words)
+      if (w.size() > 1 && w[0] == 'D' && w.find_first_not_of("0123456789", 1) == std::string::npos &&
+          (w == "D0" || s.tool_loaded)) l.expected.state.length_compensation = w != "D0";
     // D and H are read after the other kept words (the order the writer uses).
     auto& kept = l.expected.kept_words;
     std::stable_partition(kept.begin(), kept.end(), [](const std::string& w) { return !(w[0] == 'D' || w[0] == 'H'); });
