@@ -218,7 +218,8 @@ inline std::optional<toml_bound_violation> toml_bounds_violation(std::string_vie
           if (c.peek() != ' ' && c.peek() != '\t') last = c.peek();
           c.next();
         } else c.skip_string(), last = '"';
-        if (c.i - start > toml_bounds::max_key_bytes) return toml_bound_violation{line, column, toml_bounds_detail::too_long("a key")};
+        const bool blank = c.text[c.i - 1] == ' ' || c.text[c.i - 1] == '\t';  // blanks before '=' are no key
+        if (!blank && c.i - start > toml_bounds::max_key_bytes) return toml_bound_violation{line, column, toml_bounds_detail::too_long("a key")};
         if (nesting + parts > toml_bounds::max_nesting) return toml_bound_violation{line, column, toml_bounds_detail::too_deep()};
       }
       if (!c.done() && c.peek() == '=') c.next();
