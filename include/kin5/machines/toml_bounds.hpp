@@ -20,6 +20,7 @@
 /// @endcode
 #pragma once
 
+#include <cctype>
 #include <cerrno>
 #include <cstddef>
 #include <cstdio>
@@ -134,7 +135,7 @@ constexpr bool opens_string(char ch, char prev) {
 }
 
 inline std::string non_ascii() {
-  return "a non-ASCII character outside a string or comment (a quote glued to a word opens none), or first "
+  return "a non-ASCII character outside a string or comment (a quote or bracket glued to a word opens nothing), or first "
          "after a backslash in a string: TOML reads only ASCII there";
 }
 
@@ -161,6 +162,8 @@ inline std::optional<toml_bound_violation> toml_bounds_violation(std::string_vie
   bool expect_key = true;             // at a line's start outside any value, or after '{' or ','
   bool line_start = true;
   char prev = '\n';                   // the last byte on this line but blanks; '\n' at its start
+  bool glued = false;                 // a quote or bracket glued to a word on this line: toml++
+                                      // reads on from there to report it, strings or not
   const auto non_ascii_here = [&] {
     return toml_bound_violation{c.line, c.column, toml_bounds_detail::non_ascii()};
   };
@@ -170,7 +173,7 @@ inline std::optional<toml_bound_violation> toml_bounds_violation(std::string_vie
     const char ch = c.peek();
     if (ch == '\n') {
       c.next();
-      line_start = true, prev = '\n';
+      line_start = true, prev = '\n', glued = false;
       if (brackets.empty()) expect_key = true, pending = 0;
       continue;
     }
@@ -181,6 +184,17 @@ inline std::optional<toml_bound_violation> toml_bounds_violation(std::string_vie
     if (ch == '#') {
       c.skip_comment();
       continue;
+    }
+    if (static_cast<unsigned char>(ch) >= 0x80 && glued) return non_ascii_here();
+    if (!glued && c.i > 0 && (ch == '"' || ch == '\'' || ch == '[' || ch == '{') && !expect_key) {
+      const char before = c.text[c.i - 1];
+      glued = std::isalnum(static_cast<unsigned char>(before)) || before == '_' || before == '-' || before == '+' ||
+              before == '.' || before == ':';
+      if (glued) {
+        prev = ch;
+        c.next();
+        continue;
+      }
     }
     const bool at_line_start = line_start;
     line_start = false;
@@ -218,7 +232,8 @@ inline std::optional<toml_bound_violation> toml_bounds_violation(std::string_vie
           if (c.peek() != ' ' && c.peek() != '\t') last = c.peek();
           c.next();
         } else c.skip_string(), last = '"';
-        if (c.i - start > toml_bounds::max_key_bytes) return toml_bound_violation{line, column, toml_bounds_detail::too_long("a key")};
+        const bool blank = c.text[c.i - 1] == ' ' || c.text[c.i - 1] == '\t';  // blanks before '=' are no key
+        if (!blank && c.i - start > toml_bounds::max_key_bytes) return toml_bound_violation{line, column, toml_bounds_detail::too_long("a key")};
         if (nesting + parts > toml_bounds::max_nesting) return toml_bound_violation{line, column, toml_bounds_detail::too_deep()};
       }
       if (!c.done() && c.peek() == '=') c.next();
@@ -227,7 +242,7 @@ inline std::optional<toml_bound_violation> toml_bounds_violation(std::string_vie
       expect_key = false;
       continue;
     }
-    if (opens_string(ch, prev) && prev != '.') {  // a value's string (a dot belongs to a key)
+    if (opens_string(ch, prev) && prev != '.' && !glued) {  // a value's string (a dot belongs to a key)
       c.skip_string();
       prev = '"';
       continue;
