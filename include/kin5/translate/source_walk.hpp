@@ -574,7 +574,14 @@ class source_walker {
       to.fail(at(b, "rotary move without tool-tip tracking needs more than 100000 pieces to stay within --tolerance"));
       return false;
     }
-    for (std::size_t k = 1; k < *n; ++k) s.pieces.push_back(move.at(m, in, double(k) / double(*n)));
+    // And no piece turning an axis by `sweep_angle` or more, which a target's least move would
+    // take the other way round (a turn about an axis through the tip keeps the tip within any
+    // tolerance): each piece's tool axis then says its turn.
+    double largest_deg = 0.0;
+    for (std::size_t i = 0; i < s.rotary_count; ++i)
+      largest_deg = std::max(largest_deg, std::abs(to_degrees(move.end[i] - move.start[i]).value));
+    const std::size_t count = std::max(*n, static_cast<std::size_t>(largest_deg / sweep_angle.value) + 1);
+    for (std::size_t k = 1; k < count; ++k) s.pieces.push_back(move.at(m, in, double(k) / double(count)));
     return true;
   }
 
