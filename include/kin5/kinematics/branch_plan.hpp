@@ -423,8 +423,10 @@ class basic_rotary_planner {
   }
 
   /// One DP step: the cheapest way to each candidate of block k from the last reachable block,
-  /// following the block's source `sweep` where it can.
+  /// following the block's source `sweep` where it can: when that block is the one before (after
+  /// an unreachable block, the move planned is not the source's, and that block is refused).
   void step(std::size_t k, std::span<const vec3> sweep) {
+    if (last_ != none && last_ + 1 != k) sweep = {};
     const std::uint32_t begin = first_[k], end = static_cast<std::uint32_t>(candidates_.size());
     std::vector<cell>& next = next_;  // reused: no allocation per block
     next.assign(end - begin, cell{});

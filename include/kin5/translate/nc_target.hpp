@@ -20,6 +20,7 @@
 /// @endcode
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -183,8 +184,8 @@ class nc_target {
 
   /// The source's commanded angles at fraction `t` of motion step `s` (1: its end; between, the
   /// control's linear move from its start), as the target's angles, when they are the target's:
-  /// the target names the same axes in the same order, the angles lie within its travel, and
-  /// they give its tool axis `u_target` there. A target whose axes are the source's then runs
+  /// the target names the same axes in the same order, the angles lie within its travel (one
+  /// within the slack past a limit taken as on it), and they give its tool axis `u_target` there. A target whose axes are the source's then runs
   /// the source's own moves, branch and sweeps included.
   std::optional<kin5::rotary_values> source_angles(const source_step& s, double t, const vec3& u_target) const {
     if (s.rotary_count != to_.rotary_count || (t < 1.0 && !s.rotary_start_deg)) return std::nullopt;
@@ -193,7 +194,10 @@ class nc_target {
       if (s.rotary_letters[i] != to_char(to_.rotary(i).letter)) return std::nullopt;
       const double start_deg = s.rotary_start_deg ? (*s.rotary_start_deg)[i] : 0.0;
       angles[i] = to_radians(degrees{t < 1.0 ? start_deg + t * (s.rotary_source_deg[i] - start_deg) : s.rotary_source_deg[i]});
-      if (!to_.rotary(i).travel.contains(angles[i], travel_slack_)) return std::nullopt;
+      const rotary_travel& travel = to_.rotary(i).travel;
+      if (!travel.contains(angles[i], travel_slack_)) return std::nullopt;
+      if (!travel.continuous)  // within the slack past a limit: on it, as `inverse` clamps
+        angles[i] = radians{std::clamp(angles[i].value, to_radians(travel.lower).value, to_radians(travel.upper).value)};
     }
     if (!(angle_between(tool_axis(to_, angles), u_target).value <= reach_tolerance_.value)) return std::nullopt;
     return angles;
@@ -485,17 +489,16 @@ class nc_target {
       on_report(std::move(report));
       return false;
     }
-    if (path_.sweep_lost[j]) {
-      out.errors.push_back(at(b, sweep_refusal(s)));
-      on_report(std::move(report));
-      return false;
-    }
     if (!s.principal) {
       report.match = matchability::other_branch;
       report.why = "the source pose is on the second solution branch of the source machine (K3); a closed-form "
                    "translation on the principal branch would turn the table 180° off (E6)";
     }
     on_report(std::move(report));
+    if (path_.sweep_lost[j]) {  // reached, but not along the source's path
+      out.errors.push_back(at(b, sweep_refusal(s)));
+      return false;
+    }
     return true;
   }
 
