@@ -180,7 +180,13 @@ void check_round_trip() {
     back_options.output_dialect = program::id_of<program::siemens::dialect>();
     back_options.common.angle_tolerance = exact_program_tolerance;
     const auto back = translate<To, From>(t.output, back_options);
-    RC_ASSERT(back.ok());
+    // The target's least move may turn a bounded axis by 180° or more (the only way there): a
+    // sweep of the program written, which the source machine may be unable to follow back.
+    if (!back.ok()) {
+      for (const auto& e : back.errors)
+        RC_ASSERT(e.message.find("cannot follow this block's rotary sweep") != std::string::npos);
+      RC_SUCCEED("a sweep of the target refused on the way back");
+    }
     RC_ASSERT(back.blocks_written == source.blocks.size());
     const auto m = motions(back.output);
     const auto mid = motions(t.output);
