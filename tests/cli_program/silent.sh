@@ -460,6 +460,48 @@ case "$name" in
     run 0 translate --from sajo-12000p --to sajo-12000p --to-dialect iso -o g2.nc g.mpf
     has_line g2.nc 'G49( \(siemens: D0\))?'
     ;;
+  # A translation to the same machine is the identity: the plan once broke a tie of rotary
+  # travel toward branch 0 (ac-trunnion A10 C0 became A-10 C180; bc-trunnion B-20 C10, B20 C-170).
+  same-machine-branch)
+    printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A10 C0 F500' 'N30 G1 X10 A20 C30' 'N40 TRAFOOF' 'N50 M30' >ac.mpf
+    run 0 translate --from ac-trunnion --to ac-trunnion --to-dialect siemens -o ac-out.mpf ac.mpf
+    has_line ac-out.mpf 'N20 G1 X0 Y0 Z50 A10 C0 F500'
+    has_line ac-out.mpf 'N30 G1 X10 Y0 Z50 A20 C30'
+    printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 B-20 C10 F500' 'N30 TRAFOOF' 'N40 M30' >bc.mpf
+    run 0 translate --from bc-trunnion --to bc-trunnion --to-dialect siemens -o bc-out.mpf bc.mpf
+    has_line bc-out.mpf 'N20 G1 X0 Y0 Z50 B-20 C10 F500'
+    ;;
+  # A rotary sweep of 180° or more under tool-tip tracking keeps its travel: the control turns
+  # the axes linearly, so B0 then B350 sweeps the tool round the part, where B-10 (least travel)
+  # swept it 10° the other way, and a full turn became no motion.
+  sweep-same-machine)
+    printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A-30 B0 F500' 'N30 G1 X10 B350' 'N40 G1 X20 B710' 'N50 TRAFOOF' 'N60 M30' >s.mpf
+    run 0 translate --from sajo-12000p --to sajo-12000p -o s-out.mpf s.mpf
+    has_line s-out.mpf 'N30 G1 X10 Y0 Z50 A-30 B350'
+    has_line s-out.mpf 'N40 G1 X20 Y0 Z50 A-30 B710'
+    no_line err '.*warning.*'
+    ;;
+  # Into the DMU 80P, whose C table turns about the SAJO's B axis under the paper's setup, the
+  # sweep is followed by C; into the DMU 50V, whose axes cannot turn the tool round the SAJO's
+  # Y axis, the block is refused where the sweep is.
+  sweep-other-machine)
+    printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A-30 B0 F500' 'N30 G1 X10 B350' 'N40 TRAFOOF' 'N50 M30' >s.mpf
+    run 0 translate --from sajo-12000p --to dmu-80p --to-dialect siemens -o d.mpf s.mpf
+    has_line d.mpf 'N20 G1 X0 Y50 Z0 B90 C54.736 F500'
+    has_line d.mpf 'N30 G1 X-10 Y50 Z0 B90 C404.736'
+    run 2 translate --from sajo-12000p --to dmu-50v -o v.h s.mpf
+    error_at "s.mpf:3:1: error: dmu-50v cannot follow this block's rotary sweep (B turns by 350.000° from B=0.000)"
+    nothing v.h
+    ;;
+  # Into APT CL data, where one GOTO says only where the tool axis ends, a full turn of B is
+  # written as GOTO points along it (8 per half turn), not as no turn at all.
+  sweep-reverse)
+    printf '%s\n' 'N10 TRAORI' 'N20 G1 X0 Y0 Z50 A-30 B0 F500' 'N30 G1 X16 B360' 'N40 TRAFOOF' 'N50 M30' >s.mpf
+    run 0 reverse --machine sajo-12000p -o s.apt s.mpf
+    count_is s.apt 'GOTO/.*' 17
+    has_line s.apt 'GOTO/8,0,50,-?0,0\.5,-0\.866[0-9]*'
+    has_line s.apt 'GOTO/16,0,50,-?0,0\.5,0\.866[0-9]*'
+    ;;
   *)
     echo "silent.sh: unknown row '$name'" >&2
     exit 2

@@ -21,7 +21,10 @@ TEST_CASE("matchability scan: classes and gaps of SAJO poses on the DMU 80P") {
   auto p = kin5::test::tcp_program(kin5::program::id_of<kin5::program::siemens::dialect>(), "scan.mpf");
   std::vector<double> a_values, b_values;
   for (int k = -1200; k <= 300; ++k) {
-    const double a = k / 10.0, b = b_deg(random);
+    // B anywhere, each move the least way round (B is endless): a move of 180° or more is a
+    // sweep, which the DMU 80P follows only where its axes turn the tool the same way.
+    const double a = k / 10.0, drawn = b_deg(random);
+    const double b = b_values.empty() ? drawn : b_values.back() + std::remainder(drawn - b_values.back(), 360.0);
     a_values.push_back(a), b_values.push_back(b);
     kin5::test::add_motion(p, {1.0 * k, 2.0, 3.0, a, b, std::nullopt, 500.0});
   }

@@ -6,14 +6,17 @@
 /// GOTO is the whole of its source block, so 1/(block time) means the same time. TCP switches
 /// become comments (CL data is tool-tip data). An arc keeps its plane, direction and centre (found
 /// from a signed radius where the source gives one: `arc_centre_mm`), which the APT writer
-/// writes as CIRCLE and the GOTO of its end. Blocks that are
-/// not motion are copied, their dialect text carried over (`carry_over.hpp`).
+/// writes as CIRCLE and the GOTO of its end. A rotary sweep of 180° or more under tool-tip
+/// tracking, which one GOTO cannot say, becomes GOTO points along it (`swept_into`). Blocks that
+/// are not motion are copied, their dialect text carried over (`carry_over.hpp`).
 /// @code
 ///   kin5::translate_detail::cl_target target(source_language);
 ///   target.write(block, step, result, emit, on_report);  // GOTO/tip_source_mm, u_source
 /// @endcode
 #pragma once
 
+#include <optional>
+#include <string>
 #include <utility>
 
 #include "../kinematics/matchability.hpp"
@@ -70,6 +73,7 @@ class cl_target {
       out.errors.push_back(at(b, "feed move without tool-tip tracking whose rotary axes move: its time is not known"));
       return;
     }
+    if (!s.sweep.empty() && !s.untracked && !swept_into(b, s, out, emit)) return;
     const double pieces_per_min = timed ? double(s.pieces.size() + 1) / *s.block_time_min : 0.0;
     for (const tool_pose& piece : s.pieces) {  // the pieces before the block's end
       program::block p;
@@ -88,6 +92,8 @@ class cl_target {
     o.motion = program::is_arc(s.motion) ? s.motion : s.rapid ? program::motion_kind::rapid : program::motion_kind::linear;
     if (s.rapid) o.feed.reset();
     o.feed_mode.reset();
+    if (swept_inverse_per_min_) feed_in(o, *swept_inverse_per_min_, program::feed_unit::inverse_time);
+    swept_inverse_per_min_.reset();
     if (timed) feed_in(o, pieces_per_min, program::feed_unit::inverse_time);
     else if (!s.rapid) restore_unit(o, s.feed_mm_per_min);
     emit(std::move(o));
@@ -97,6 +103,47 @@ class cl_target {
   program::dialect source_language_;
   bool inverse_time_ = false;         // FEDRAT/INVERS in effect in the output
   bool source_inverse_time_ = false;  // and in the source
+
+  std::optional<double> swept_inverse_per_min_;  // the F of the end of a swept block in inverse time
+
+  /// A sweep of the source (`source_step::sweep`: a rotary axis turning by 180° or more under
+  /// tool-tip tracking), which one GOTO cannot say (its tool axis would turn the least way, a
+  /// full turn not at all): a GOTO at each sample before the block's end, the tip where the
+  /// control has it then, on the straight line from the start at the same fraction, each piece
+  /// at the block's F (CL feed is tip feed), or in inverse time with its share of the block's
+  /// time, n/T. False, with an error at block `b`, when its start is not known or it also says
+  /// words whose moment among the pieces would be a guess.
+  template <class Emit>
+  bool swept_into(const program::block& b, const source_step& s, translation& out, Emit& emit) {
+    const char* words = words_of_a_whole_block(b);
+    if (!s.start_source_mm || words || program::is_arc(s.motion)) {
+      out.errors.push_back(at(b, std::string("rotary sweep of 180° or more, which APT CL data says only as GOTO points "
+                                             "along it, ") +
+                                     (words ? std::string("in a block that also says ") + words + ": give it a block of its own"
+                                      : program::is_arc(s.motion) ? "in a circular move"
+                                                                  : "from an unknown start point")));
+      return false;
+    }
+    const double n = double(s.sweep.size() + 1);
+    const bool inverse = !s.rapid && s.feed_mode == program::feed_unit::inverse_time;
+    if (inverse && !(b.feed && *b.feed > 0.0)) {
+      out.errors.push_back(at(b, "inverse-time rotary sweep without its own F: the time of its GOTO points is not known"));
+      return false;
+    }
+    for (std::size_t j = 0; j < s.sweep.size(); ++j) {
+      const vec3 tip_mm = *s.start_source_mm + (double(j + 1) / n) * (s.tip_source_mm - *s.start_source_mm);
+      program::block p;
+      p.where = b.where;
+      p.motion = s.rapid ? program::motion_kind::rapid : program::motion_kind::linear;
+      p.axes.x_mm = tip_mm.x, p.axes.y_mm = tip_mm.y, p.axes.z_mm = tip_mm.z;
+      p.axes.tool_axis = s.sweep[j];
+      if (inverse) feed_in(p, n * *b.feed, program::feed_unit::inverse_time);
+      ++out.blocks_added;
+      emit(std::move(p));
+    }
+    if (inverse) swept_inverse_per_min_ = n * *b.feed;
+    return true;
+  }
 
   /// The arc of motion step `s` into `o` (the source frame is CL data's): plane and centre, the
   /// centre of a signed radius found from its start and end; false, with an error at block `b`,

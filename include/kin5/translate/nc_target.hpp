@@ -20,12 +20,15 @@
 /// @endcode
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <span>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "../core/rigid.hpp"
 #include "../kinematics/branch_plan.hpp"
@@ -66,6 +69,7 @@ class nc_target {
     const radians at_least{tolerance.value > 1e-9 ? tolerance.value : 1e-9};  // inverse's own rounding
     options.reach_tolerance = at_least;
     options.travel_slack = at_least;
+    reach_tolerance_ = travel_slack_ = at_least;
     planner_ = rotary_planner_values(to_, options);
   }
 
@@ -101,11 +105,19 @@ class nc_target {
     return why == nullptr;
   }
 
-  /// First pass: the step of every block, in order.
+  /// First pass: the step of every block, in order. With each tool axis the planner is told
+  /// the source's angles where they are the target's (`source_angles`) and the source's sweep.
   void plan(const source_step& s) {
     if (s.what != source_step::kind::motion) return;
-    for (const tool_pose& piece : s.pieces) planner_.add(normalized(target_T_source_.map_direction(piece.axis)));
-    planner_.add(normalized(target_T_source_.map_direction(s.u_source)));
+    const double n = double(s.pieces.size() + 1);
+    for (std::size_t k = 0; k < s.pieces.size(); ++k) {
+      const vec3 u_target = normalized(target_T_source_.map_direction(s.pieces[k].axis));
+      planner_.add(u_target, {source_angles(s, double(k + 1) / n, u_target), {}});
+    }
+    const vec3 u_target = normalized(target_T_source_.map_direction(s.u_source));
+    sweep_target_.clear();
+    for (const vec3& u_source : s.sweep) sweep_target_.push_back(normalized(target_T_source_.map_direction(u_source)));
+    planner_.add(u_target, {source_angles(s, 1.0, u_target), sweep_target_});
   }
   void finish_plan() { path_ = planner_.finish(); }
 
@@ -151,6 +163,7 @@ class nc_target {
   bool switch_tcp_on_;
   rotary_planner_values planner_;
   rotary_path_values path_;
+  radians reach_tolerance_{1e-9}, travel_slack_{1e-9};  // the planner's (set_tool_axis_tolerance)
   std::optional<run_inputs> placement_;
   bool machine_mode_ = false;  // motion written in machine coordinates (machine_output.hpp)
   bool length_switched_on_ = false;  // machine coordinates: length compensation said for `post`
@@ -166,6 +179,29 @@ class nc_target {
   int branch_off_pole_ = -1;                    // branch of the last written motion off a pole
   source_step previous_step_;                   // its step
   std::size_t next_motion_ = 0;                 // motion index of the next motion block
+
+  std::vector<vec3> sweep_target_;  // the sweep of the block planned last, target frame
+
+  /// The source's commanded angles at fraction `t` of motion step `s` (1: its end; between, the
+  /// control's linear move from its start), as the target's angles, when they are the target's:
+  /// the target names the same axes in the same order, the angles lie within its travel (one
+  /// within the slack past a limit taken as on it), and they give its tool axis `u_target` there. A target whose axes are the source's then runs
+  /// the source's own moves, branch and sweeps included.
+  std::optional<kin5::rotary_values> source_angles(const source_step& s, double t, const vec3& u_target) const {
+    if (s.rotary_count != to_.rotary_count || (t < 1.0 && !s.rotary_start_deg)) return std::nullopt;
+    kin5::rotary_values angles{};
+    for (std::size_t i = 0; i < to_.rotary_count; ++i) {
+      if (s.rotary_letters[i] != to_char(to_.rotary(i).letter)) return std::nullopt;
+      const double start_deg = s.rotary_start_deg ? (*s.rotary_start_deg)[i] : 0.0;
+      angles[i] = to_radians(degrees{t < 1.0 ? start_deg + t * (s.rotary_source_deg[i] - start_deg) : s.rotary_source_deg[i]});
+      const rotary_travel& travel = to_.rotary(i).travel;
+      if (!travel.contains(angles[i], travel_slack_)) return std::nullopt;
+      if (!travel.continuous)  // within the slack past a limit: on it, as `inverse` clamps
+        angles[i] = radians{std::clamp(angles[i].value, to_radians(travel.lower).value, to_radians(travel.upper).value)};
+    }
+    if (!(angle_between(tool_axis(to_, angles), u_target).value <= reach_tolerance_.value)) return std::nullopt;
+    return angles;
+  }
 
   /// A block that is not motion: an arc centre on its own is mapped; feed and TCP words follow
   /// the policy.
@@ -459,7 +495,25 @@ class nc_target {
                    "translation on the principal branch would turn the table 180° off (E6)";
     }
     on_report(std::move(report));
+    if (path_.sweep_lost[j]) {  // reached, but not along the source's path
+      out.errors.push_back(at(b, sweep_refusal(s)));
+      return false;
+    }
     return true;
+  }
+
+  /// Why block step `s`, whose source sweeps (`source_step::sweep`), is refused: no move of the
+  /// target's axes turns its tool axis along the source's path.
+  std::string sweep_refusal(const source_step& s) const {
+    std::size_t axis = 0;
+    const std::array<double, 2> start_deg = s.rotary_start_deg.value_or(s.rotary_source_deg);
+    for (std::size_t i = 1; i < s.rotary_count; ++i)
+      if (std::abs(s.rotary_source_deg[i] - start_deg[i]) > std::abs(s.rotary_source_deg[axis] - start_deg[axis])) axis = i;
+    const std::string letter(1, s.rotary_letters[axis]);
+    return std::string(to_.geometry.id) + " cannot follow this block's rotary sweep (" + letter + " turns by " +
+           fixed(s.rotary_source_deg[axis] - start_deg[axis], 3) + "° from " + letter + "=" + fixed(start_deg[axis], 3) +
+           "): its axes would turn the tool along another path through the part; program the sweep as moves of "
+           "less than " + fixed(sweep_angle.value, 0) + "° each";
   }
 
   /// With a placement, the slides X, Y, Z (G7) of the source tip `tip_source_mm` with the planned angles:
@@ -588,11 +642,14 @@ class nc_target {
   }
 
   /// Warnings at motion `j` (rotary_move.hpp): a change of solution branch from the last motion
-  /// off a pole (pole blocks in between, where both branches meet, included), else a sudden turn.
+  /// off a pole (pole blocks in between, where both branches meet, included), else a sudden turn;
+  /// none for the source's own move or a move along its sweep, which the source made itself.
   void warn_rotary_move(const program::block& b, std::size_t j, translation& out) {
     const int before = branch_off_pole_;
     if (!path_.pole[j]) branch_off_pole_ = path_.branch[j];
     if (!previous_motion_) return;
+    if (path_.source[j] && path_.source[*previous_motion_]) return;  // the source's own move
+    if (path_.swept[j]) return;  // along the source's sweep, which the source made
     std::optional<branch_change> change;
     if (!path_.pole[j] && before >= 0 && before != path_.branch[j])
       change = branch_change{before, path_.branch[j], (path_.branches[*previous_motion_] & path_.branches[j]) != 0};

@@ -72,6 +72,13 @@ struct source_step {
   std::array<double, 2> rotary_source_deg{};  ///< source commanded angles, machine order (K16)
   std::size_t rotary_count = 0;               ///< how many of `rotary_source_deg` (0: a vector)
   std::array<char, 2> rotary_letters{};       ///< the letters of `rotary_source_deg`
+  /// The source's commanded angles before the block (degrees, machine order), when all are known.
+  std::optional<std::array<double, 2>> rotary_start_deg;
+  /// Under tool-tip tracking, when a rotary axis turns by `sweep_angle` or more from
+  /// `rotary_start_deg`: the tool axis (source frame, unit) at s = j/n, j = 1 … n−1, of the
+  /// control's linear move of the angles, n = `sweep_samples` (the path a least move of the
+  /// target would not take: the other way round, or none for a full turn).
+  std::vector<vec3> sweep;
   bool principal = true;                      ///< set when classified (the second pass)
   program::motion_kind motion = program::motion_kind::linear;
   bool rapid = false;
@@ -94,6 +101,36 @@ struct source_step {
   /// it can keep the side (docs/dialects/compensation.md).
   bool compensated = false;
 };
+
+/// A rotary move of this much or more in one tracked block is a sweep (`source_step::sweep`):
+/// a least move of the target's axes would go the other way round.
+inline constexpr degrees sweep_angle{180.0};
+
+/// How many equal steps `source_step::sweep` cuts a move of `largest` degrees into: 8 per half
+/// turn (steps of at most 22.5°), so that each step is far from a half turn.
+inline std::size_t sweep_samples(double largest_deg) {
+  return 8 * static_cast<std::size_t>(std::max(1.0, std::ceil(largest_deg / 180.0)));
+}
+
+/// The tool axes of machine `m` (unit) at s = j/n, j = 1 … n−1, as its commanded angles move
+/// linearly from `start_deg` to `end_deg` (degrees, machine order), when one of them moves by
+/// `sweep_angle` or more; empty otherwise.
+inline std::vector<vec3> sweep_of(const machine_model& m, const std::array<double, 2>& start_deg,
+                                  const std::array<double, 2>& end_deg) {
+  double largest_deg = 0.0;
+  for (std::size_t i = 0; i < m.rotary_count; ++i) largest_deg = std::max(largest_deg, std::abs(end_deg[i] - start_deg[i]));
+  if (largest_deg < sweep_angle.value) return {};
+  const std::size_t n = sweep_samples(largest_deg);
+  std::vector<vec3> axes;
+  axes.reserve(n - 1);
+  for (std::size_t j = 1; j < n; ++j) {
+    kin5::rotary_values angles{};
+    for (std::size_t i = 0; i < m.rotary_count; ++i)
+      angles[i] = to_radians(degrees{start_deg[i] + double(j) / double(n) * (end_deg[i] - start_deg[i])});
+    axes.push_back(tool_axis(m, angles));
+  }
+  return axes;
+}
 
 /// The source pose of a motion step as a report shows it: "A=-77.954 B=3.536" (degrees, letters
 /// in alphabetical order), or "I=… J=… K=…" for a tool-axis vector.
@@ -142,9 +179,9 @@ struct nc_source {
   bool check(const program::block& b, const source_context& ctx) const { return check_source_axes(from, b, ctx); }
   /// `kinematics`: whether to compute the tool axis and the branch (else only the angles).
   /// `notes`: refusals, by name (a rotary axis with no value yet: `unset-rotary`).
-  std::optional<std::string> pose(const program::modal_state& modal, source_step& s, std::string& warned,
-                                  std::vector<program::diagnostic>& notes, const program::block& b,
-                                  bool kinematics) const {
+  std::optional<std::string> pose(const program::modal_state& before, const program::modal_state& modal,
+                                  source_step& s, std::string& warned, std::vector<program::diagnostic>& notes,
+                                  const program::block& b, bool kinematics) const {
     if (modal.tool_axis) {  // a tool-axis vector written in the program (G43.5 IJK, LN TX TY TZ)
       s.u_source = *modal.tool_axis;
       s.rotary_count = 0;
@@ -167,9 +204,18 @@ struct nc_source {
       s.rotary_source_deg[i] = v_deg.value_or(0.0);
       angles[i] = to_radians(degrees{s.rotary_source_deg[i]});
     }
+    std::array<double, 2> start_deg{};
+    bool start_known = true;
+    for (std::size_t i = 0; i < from.rotary_count; ++i) {
+      const auto v_deg = before.value(s.rotary_letters[i]);
+      start_known = start_known && v_deg.has_value();
+      start_deg[i] = v_deg.value_or(0.0);
+    }
+    if (start_known) s.rotary_start_deg = start_deg;
     if (!kinematics) return std::nullopt;
     s.u_source = tool_axis(from, angles);
     s.principal = on_principal_branch(from, angles, s.u_source);
+    if (start_known && modal.tcp) s.sweep = sweep_of(from, start_deg, s.rotary_source_deg);
     return std::nullopt;
   }
 };
@@ -182,8 +228,8 @@ struct cl_source {
   std::size_t rounded_values() const { return 1; }
   /// CL data names no machine axes: nothing to check against a machine.
   bool check(const program::block&, const source_context&) const { return true; }
-  std::optional<std::string> pose(const program::modal_state& modal, source_step& s, std::string&,
-                                  std::vector<program::diagnostic>&, const program::block&, bool) const {
+  std::optional<std::string> pose(const program::modal_state&, const program::modal_state& modal, source_step& s,
+                                  std::string&, std::vector<program::diagnostic>&, const program::block&, bool) const {
     s.u_source = modal.tool_axis.value_or(unit_z);
     if (!(norm(s.u_source) > 0.5)) return std::string("tool-axis vector of zero length");
     return std::nullopt;
@@ -280,7 +326,7 @@ class source_walker {
     }
     std::vector<program::diagnostic> notes;
     // A compensated move's tool axis is checked in both passes, so both give the same steps.
-    if (auto error = source_.pose(modal_, s, warned_letters_, notes, b, kinematics || s.compensated)) {
+    if (auto error = source_.pose(before, modal_, s, warned_letters_, notes, b, kinematics || s.compensated)) {
       to.fail(at(b, *error));
       return s;
     }
@@ -533,7 +579,14 @@ class source_walker {
       to.fail(at(b, "rotary move without tool-tip tracking needs more than 100000 pieces to stay within --tolerance"));
       return false;
     }
-    for (std::size_t k = 1; k < *n; ++k) s.pieces.push_back(move.at(m, in, double(k) / double(*n)));
+    // And no piece turning an axis by `sweep_angle` or more, which a target's least move would
+    // take the other way round (a turn about an axis through the tip keeps the tip within any
+    // tolerance): each piece's tool axis then says its turn.
+    double largest_deg = 0.0;
+    for (std::size_t i = 0; i < s.rotary_count; ++i)
+      largest_deg = std::max(largest_deg, std::abs(to_degrees(move.end[i] - move.start[i]).value));
+    const std::size_t count = std::max(*n, static_cast<std::size_t>(largest_deg / sweep_angle.value) + 1);
+    for (std::size_t k = 1; k < count; ++k) s.pieces.push_back(move.at(m, in, double(k) / double(count)));
     return true;
   }
 

@@ -1,5 +1,10 @@
-// Round trips: reverse∘post = identity on CL paths for every catalog machine, and
-// translate A→B→A = identity on the reachable set for several machine pairs.
+// Round trips: reverse∘post = identity on CL paths for every catalog machine, translate A→B→A
+// = identity on the reachable set for several machine pairs, translate A→A = identity (sweeps,
+// whole turns and poles included), and a sweep into another machine followed or refused.
+#include <algorithm>
+#include <cmath>
+#include <set>
+
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
@@ -90,7 +95,14 @@ TEST_CASE("reverse after post is the identity on reachable CL paths, every catal
       const auto back = reverse<M>(nc.output);
       RC_ASSERT(back.ok());
       RC_ASSERT(back.output.language == program::id_of<program::apt::dialect>());
-      const auto m = motions(back.output);
+      // Where post's least move turns a bounded axis by 180° or more (the only way there), that
+      // move is a sweep, which reverse writes as GOTO points along it before the block's own:
+      // the last GOTO of each block is the block.
+      std::vector<const program::block*> m;
+      for (const program::block* b : motions(back.output)) {
+        if (!m.empty() && m.back()->where.line == b->where.line) m.pop_back();
+        m.push_back(b);
+      }
       RC_ASSERT(m.size() == tips.size());
       for (std::size_t k = 0; k < m.size(); ++k) {
         RC_ASSERT(*m[k]->axes.x_mm == tips[k].x);
@@ -123,9 +135,18 @@ std::vector<test::pose<From>> reachable_path(const rigid_transform& target_T_sou
     const auto target = *test::angles_within<To>(1.0);
     const vec3 u_s = source_T_target.map_direction(tool_axis<To>(target));
     const auto solutions = inverse<From>(u_s);
+    // Each move the least way round, and none of 180° or more on a bounded axis either: such a
+    // move is a sweep, which a target other than the source may be unable to follow (refused;
+    // the sweep laws below).
     std::vector<rotary_angles<From>> within;
-    for (const auto& s : solutions)
-      if (s.within_travel) within.push_back(s.angles);
+    for (const auto& s : solutions) {
+      if (!s.within_travel) continue;
+      const rotary_angles<From> a = path.empty() ? s.angles : unwrap_continuous<From>(s.angles, path.back().angles);
+      bool sweeps = false;
+      for (std::size_t i = 0; !path.empty() && i < rotary_count<From>; ++i)
+        sweeps = sweeps || std::abs(a[i].value - path.back().angles[i].value) >= pi;
+      if (!sweeps) within.push_back(a);
+    }
     RC_PRE(!within.empty());
     const auto pick = *rc::gen::inRange<std::size_t>(0, within.size());
     path.push_back({*test::tip(), within[pick]});
@@ -159,7 +180,13 @@ void check_round_trip() {
     back_options.output_dialect = program::id_of<program::siemens::dialect>();
     back_options.common.angle_tolerance = exact_program_tolerance;
     const auto back = translate<To, From>(t.output, back_options);
-    RC_ASSERT(back.ok());
+    // The target's least move may turn a bounded axis by 180° or more (the only way there): a
+    // sweep of the program written, which the source machine may be unable to follow back.
+    if (!back.ok()) {
+      for (const auto& e : back.errors)
+        RC_ASSERT(e.message.find("cannot follow this block's rotary sweep") != std::string::npos);
+      RC_SUCCEED("a sweep of the target refused on the way back");
+    }
     RC_ASSERT(back.blocks_written == source.blocks.size());
     const auto m = motions(back.output);
     const auto mid = motions(t.output);
@@ -200,4 +227,130 @@ TEST_CASE("translate A -> B -> A is the identity on the reachable set") {
   check_round_trip<dmu_50v, ac_head>();
   check_round_trip<b_head_a_tilted_table, ac_trunnion>();
   check_round_trip<ac_head, b_head_a_tilted_table>();
+}
+
+namespace {
+
+/// A source pose of M within travel, its continuous axes up to two whole turns either way; one
+/// time in four at a pole of M (when one lies within travel), its free angle kept random.
+template <machine M>
+rotary_angles<M> swept_pose() {
+  rotary_angles<M> a = *test::angles_within<M>(0.5);
+  if constexpr (rotary_count<M> == 2) {
+    if (*rc::gen::inRange(0, 4) == 0) {
+      const vec3 p = (*rc::gen::arbitrary<bool>() ? 1.0 : -1.0) * M::model.orientation.p;
+      for (const auto& s : inverse<M>(p))
+        if (s.within_travel) {
+          a[1] = s.angles[1];
+          break;
+        }
+    }
+  }
+  for (std::size_t i = 0; i < rotary_count<M>; ++i)
+    if (M::rotary[i].travel.continuous) a[i].value += 2.0 * pi * *rc::gen::inRange(-2, 3);
+  return a;
+}
+
+/// Machine `m`'s commanded angles (radians, machine order) from a block's words; 0 when missing.
+kin5::rotary_values angles_of(const machine_model& m, const program::axis_words& w) {
+  kin5::rotary_values out{};
+  for (std::size_t i = 0; i < m.rotary_count; ++i) {
+    const char letter = to_char(m.rotary(i).letter);
+    const auto& word = letter == 'A' ? w.a_deg : letter == 'B' ? w.b_deg : w.c_deg;
+    out[i] = to_radians(degrees{word.value_or(0.0)});
+  }
+  return out;
+}
+
+/// The largest angle (radians) between machine `to`'s tool axis, its angles moving linearly from
+/// `to_start` to `to_end`, and machine `from`'s mapped by `target_T_source`, its angles moving
+/// from `from_start` to `from_end`, at 64 points of the move.
+double largest_axis_deviation(const machine_model& from, const kin5::rotary_values& from_start,
+                              const kin5::rotary_values& from_end, const machine_model& to,
+                              const kin5::rotary_values& to_start, const kin5::rotary_values& to_end,
+                              const rigid_transform& target_T_source) {
+  double worst = 0.0;
+  for (int j = 1; j < 64; ++j) {
+    const double s = j / 64.0;
+    kin5::rotary_values a{}, b{};
+    for (std::size_t i = 0; i < 2; ++i) {
+      a[i] = radians{from_start[i].value + s * (from_end[i].value - from_start[i].value)};
+      b[i] = radians{to_start[i].value + s * (to_end[i].value - to_start[i].value)};
+    }
+    worst = std::max(worst, angle_between(tool_axis(to, b), target_T_source.map_direction(tool_axis(from, a))).value);
+  }
+  return worst;
+}
+
+/// Exact doubles, no rounding to absorb: the angle tolerance of the round-trip law above.
+translate_options exact_options() {
+  translate_options o;
+  o.output_dialect = program::id_of<program::siemens::dialect>();
+  o.common.angle_tolerance = degrees{2.5e-8};
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("a translation to the same machine is the identity, sweeps, whole turns and poles included") {
+  machines::for_each_machine([]<class M>() {
+    rc::prop(std::string(M::id) + " -> " + std::string(M::id) + " keeps every word", [] {
+      const auto n = *rc::gen::inRange<std::size_t>(1, 9);
+      std::vector<test::pose<M>> path;
+      for (std::size_t k = 0; k < n; ++k) path.push_back({*test::tip(), swept_pose<M>()});
+      const auto source = nc_program<M>(path);
+      const auto t = translate<M, M>(source, exact_options());
+      RC_ASSERT(t.ok());
+      RC_ASSERT(t.warnings.empty());  // the source's own moves: no branch switch, no sudden turn
+      const auto m = motions(t.output);
+      RC_ASSERT(m.size() == n);
+      for (std::size_t k = 0; k < n; ++k) {
+        RC_ASSERT(norm(vec3{*m[k]->axes.x_mm, *m[k]->axes.y_mm, *m[k]->axes.z_mm} - path[k].tip_mm) <= 1e-9);
+        const auto out = test::rotary_of<M>(m[k]->axes);
+        for (std::size_t i = 0; i < rotary_count<M>; ++i)
+          RC_ASSERT(std::abs(to_degrees(out[i]).value - to_degrees(path[k].angles[i]).value) <= 1e-9);
+      }
+    });
+  });
+}
+
+TEST_CASE("a sweep of 180 degrees or more into another machine is followed or refused at its block") {
+  machines::for_each_machine([]<class M>() {
+    rc::prop(std::string("sweeps of ") + std::string(M::id) + " on a random machine", [] {
+      const machine_model& to =
+          *machines::catalog_models[*rc::gen::inRange<std::size_t>(0, machines::catalog_models.size())];
+      const auto n = *rc::gen::inRange<std::size_t>(2, 7);
+      std::vector<test::pose<M>> path;
+      for (std::size_t k = 0; k < n; ++k) path.push_back({*test::tip(), swept_pose<M>()});
+      const auto source = nc_program<M>(path);
+      const rigid_transform d_T_s = default_setup(M::id, to.geometry.id);
+      const auto t = translate(M::model, to, source, exact_options());
+      std::set<std::size_t> swept_lines, refused_lines;
+      for (std::size_t k = 1; k < n; ++k) {
+        double largest = 0.0;
+        for (std::size_t i = 0; i < rotary_count<M>; ++i)
+          largest = std::max(largest, std::abs(path[k].angles[i].value - path[k - 1].angles[i].value));
+        if (largest >= pi) swept_lines.insert(source.blocks[k + 1].where.line);
+      }
+      for (const auto& e : t.errors)
+        if (e.message.find("cannot follow this block's rotary sweep") != std::string::npos)
+          refused_lines.insert(e.where.line);
+      RC_ASSERT(std::includes(swept_lines.begin(), swept_lines.end(), refused_lines.begin(), refused_lines.end()));
+      RC_CLASSIFY(t.ok(), "written");
+      if (!t.ok()) return;
+      const auto m = motions(t.output);
+      RC_ASSERT(m.size() == n);
+      for (std::size_t k = 1; k < n; ++k) {
+        if (!swept_lines.count(source.blocks[k + 1].where.line)) continue;
+        kin5::rotary_values from_start{}, from_end{};
+        for (std::size_t i = 0; i < rotary_count<M>; ++i)
+          from_start[i] = path[k - 1].angles[i], from_end[i] = path[k].angles[i];
+        // Each sample within the planner's sweep tolerance; between them within what a chord
+        // of 22.5° of turn strays (the law samples 64 points, the planner 8 per half turn).
+        const double deviation = largest_axis_deviation(M::model, from_start, from_end, to, angles_of(to, m[k - 1]->axes),
+                                                        angles_of(to, m[k]->axes), d_T_s);
+        RC_ASSERT(deviation <= 1e-5);
+      }
+    });
+  });
 }

@@ -173,7 +173,9 @@ TEST_CASE("the angle tolerance counts a tool axis as on the target's reach withi
     const double ratio = *rc::gen::suchThat(test::uniform(0.01, 4.0), [](double r) { return std::abs(r - 2.0) > 0.05; });
     auto p = test::tcp_program(program::id_of<program::siemens::dialect>(), "reach.mpf");
     test::add_motion(p, {0.0, 0.0, 50.0, -30.0, 10.0, std::nullopt, 500.0});
-    test::add_motion(p, {1.0, 0.0, 50.0, ratio * t, *test::uniform(-180.0, 180.0), std::nullopt, std::nullopt});
+    // B within 179° of the first block's: a move of 180° or more is a sweep, which the DMU 80P
+    // may be unable to follow (round_trip_laws.cpp).
+    test::add_motion(p, {1.0, 0.0, 50.0, ratio * t, *test::uniform(-169.0, 189.0), std::nullopt, std::nullopt});
     auto options = test::options();
     options.common.angle_tolerance = degrees{t};
     const auto r = translate<machines::sajo_12000p, machines::dmu_80p>(p, options);
