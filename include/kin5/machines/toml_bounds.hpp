@@ -161,7 +161,7 @@ inline std::optional<toml_bound_violation> toml_bounds_violation(std::string_vie
   std::size_t pending = 0;            // parts of the key whose value comes next
   bool expect_key = true;             // at a line's start outside any value, or after '{' or ','
   bool line_start = true;
-  char prev = '\n';                   // the last byte on this line but blanks; '\n' at its start
+  bool value_start = false;           // at the start of a value: after a key's '=', '[', ',' in an array
   bool glued = false;                 // a quote or bracket glued to a word on this line: toml++
                                       // reads on from there to report it, strings or not
   const auto non_ascii_here = [&] {
@@ -173,7 +173,8 @@ inline std::optional<toml_bound_violation> toml_bounds_violation(std::string_vie
     const char ch = c.peek();
     if (ch == '\n') {
       c.next();
-      line_start = true, prev = '\n', glued = false;
+      line_start = true, glued = false;
+      value_start = !brackets.empty() && brackets.back() == '[';
       if (brackets.empty()) expect_key = true, pending = 0;
       continue;
     }
@@ -186,15 +187,10 @@ inline std::optional<toml_bound_violation> toml_bounds_violation(std::string_vie
       continue;
     }
     if (static_cast<unsigned char>(ch) >= 0x80 && glued) return non_ascii_here();
-    if (!glued && c.i > 0 && (ch == '"' || ch == '\'' || ch == '[' || ch == '{') && !expect_key) {
-      const char before = c.text[c.i - 1];
-      glued = std::isalnum(static_cast<unsigned char>(before)) || before == '_' || before == '-' || before == '+' ||
-              before == '.' || before == ':';
-      if (glued) {
-        prev = ch;
-        c.next();
-        continue;
-      }
+    if (!expect_key && (ch == '"' || ch == '\'' || ch == '[' || ch == '{') && !(value_start || (ch == '[' && line_start))) {
+      glued = true;  // a quote or bracket where no value begins: toml++ stops there and reads on
+      c.next();
+      continue;
     }
     const bool at_line_start = line_start;
     line_start = false;
@@ -217,7 +213,6 @@ inline std::optional<toml_bound_violation> toml_bounds_violation(std::string_vie
       }
       nesting = parts;
       expect_key = false;  // the rest of the line: a closing bracket and a comment
-      prev = ']';
       continue;
     }
     if (expect_key && ch != '}' && ch != ',') {  // a key, up to its '='
@@ -237,14 +232,14 @@ inline std::optional<toml_bound_violation> toml_bounds_violation(std::string_vie
         if (nesting + parts > toml_bounds::max_nesting) return toml_bound_violation{line, column, toml_bounds_detail::too_deep()};
       }
       if (!c.done() && c.peek() == '=') c.next();
-      prev = '=';
+      value_start = true;
       pending = parts;
       expect_key = false;
       continue;
     }
-    if (opens_string(ch, prev) && prev != '.' && !glued) {  // a value's string (a dot belongs to a key)
+    if (ch == '"' || ch == '\'') {  // a value's string: value_start (else `glued`, above)
       c.skip_string();
-      prev = '"';
+      value_start = false;
       continue;
     }
     if (static_cast<unsigned char>(ch) >= 0x80) return non_ascii_here();  // bare keys, numbers, words: ASCII
@@ -255,7 +250,7 @@ inline std::optional<toml_bound_violation> toml_bounds_violation(std::string_vie
       nesting += adds;
       pending = 0;
       expect_key = ch == '{';
-      prev = ch;
+      value_start = ch == '[';
       c.next();
       continue;
     }
@@ -265,18 +260,18 @@ inline std::optional<toml_bound_violation> toml_bounds_violation(std::string_vie
         levels.pop_back(), brackets.pop_back();
       }
       pending = 0;
-      prev = ch;
+      value_start = false;
       c.next();
       continue;
     }
     if (ch == ',') {
       pending = 0;
       expect_key = !brackets.empty() && brackets.back() == '{';
-      prev = ch;
+      value_start = !brackets.empty() && brackets.back() == '[';
       c.next();
       continue;
     }
-    prev = ch;
+    value_start = false;
     c.next();  // a number, a date, true or false, or a stray byte: toml++ judges it
   }
   if (c.after_line_end)

@@ -329,6 +329,7 @@ TEST_CASE("machine files and tool tables nest at most 32 deep and keep keys shor
                                            std::tuple{std::string("\xcc\xaa"), 1u, 1u},
                                            std::tuple{std::string("1=-c1'\xcc\x87'"), 1u, 7u},
                                            std::tuple{std::string("A=9['\xc7\x9c/"), 1u, 6u},
+                                           std::tuple{std::string("7=7=\".\xef\xbb\xbb"), 1u, 7u},
                                            std::tuple{std::string("\"\"\"\\\xef\xbb\xa2\x10"), 1u, 5u},
                                            std::tuple{std::string("s = \"\"\"\\\n\xc2\xa7\"\"\"\n"), 2u, 1u}}) {
     const auto v = toml_bounds_violation(text);
