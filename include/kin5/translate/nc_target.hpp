@@ -111,8 +111,15 @@ class nc_target {
 
   /// Second pass: block `b` (whose step is `s`) → `emit`; reports to `on_report`.
   template <class Emit, class Report>
-  void write(const program::block& b, const source_step& s, translation& out, Emit&& emit, Report&& on_report) {
+  void write(const program::block& read, const source_step& s, translation& out, Emit&& emit, Report&& on_report) {
     if (s.what == source_step::kind::failed) return;
+    // CL data: the FEDRAT/INVERS in effect is each feed move's own F, as inverse time in NC needs.
+    const bool cl_source = program::capabilities_of(source_language_).cl_data;
+    std::optional<program::block> timed;
+    if (cl_source && s.what == source_step::kind::motion && !s.rapid &&
+        s.feed_mode == program::feed_unit::inverse_time && !read.feed && s.feed_inverse_per_min)
+      timed = read, timed->feed = s.feed_inverse_per_min;
+    const program::block& b = timed ? *timed : read;
     if (s.what == source_step::kind::passthrough) {
       emit(carried_over(b, source_language_, output_language_));
       if (!b.framing) ++out.passed_through;  // a tape mark: the writer frames its own program
@@ -129,6 +136,7 @@ class nc_target {
     }
     carry_over(o, source_language_, output_language_);
     if (b.feed_mode) source_inverse_time_ = *b.feed_mode == program::feed_unit::inverse_time;
+    if (cl_source && source_inverse_time_ && s.what == source_step::kind::copy) o.feed.reset();  // on each move
     if (source_inverse_time_ && !supports_inverse_time(output_language_)) {
       // Each move's time is kept by a per-minute F (write_feed); G93 itself has no equivalent,
       // and an F without a move takes effect on the next move, where it is converted.
