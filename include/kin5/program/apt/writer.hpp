@@ -80,12 +80,12 @@ class writer {
       }
     }
     if (b.passthrough) {
-      if (same_) out += b.text + '\n';
+      if (same_) out += b.text + '\n', ended_.reset();  // a statement: it ends an arc's record
       else out += "$$ " + flat(b.text) + '\n';
       if (b.comment && !same_) out += "$$ " + one_line(b, *b.comment) + '\n';
       return;
     }
-    if (b.state.dwell_s) return dwell(out, b);
+    if (b.state.dwell_s) return ended_.reset(), dwell(out, b);
     if (b.tool_name)
       fail(b, "a tool by name (\"" + one_line(b, *b.tool_name) +
                   "\") has no APT form (LOADTL takes a number; --tool-map NAME=n gives one)");
@@ -120,7 +120,11 @@ class writer {
       else lines_.back() += " $$ " + one_line(b, *b.comment);
     }
     if (lines_.empty() && !b.text.empty() && !same_) lines_.push_back("$$ " + flat(b.text));
-    for (const std::string& l : lines_) out += l + '\n';
+    for (const std::string& l : lines_) {
+      out += l + '\n';
+      if (l.rfind("GOTO/", 0) != 0 && l.rfind("$$", 0) != 0) ended_.reset();  // a statement ends the arc's record
+      else if (l.rfind("GOTO/", 0) == 0) ended_ = goto_ended_;
+    }
   }
 
  private:
@@ -138,6 +142,7 @@ class writer {
   std::optional<bool> fedrat_inverse_;  // whether the last FEDRAT written was INVERS
   std::string fedrat_;                  // the last FEDRAT written
   std::optional<detail::circle_state::circle> ended_;  // the circle the last GOTO ended an arc on
+  std::optional<detail::circle_state::circle> goto_ended_;  // that of this block's GOTO, if an arc's
   std::vector<std::string> lines_;  // the block's statements up to its GOTO
   std::vector<std::string> after_;  // those after it: the M functions that act at the block's end
   bool foreign_note_ = false;       // something without an APT form: carry the block's text
@@ -274,7 +279,7 @@ class writer {
         std::fabs(detail::radius_in_plane_mm(ended_->plane, ended_->centre_mm, end) - ended_->radius_mm) <= tolerance;
     if (!on_circle || detail::radius_in_plane_mm(ended_->plane, *at_, end) <= tolerance) return;
     for (const std::string& l : lines_)
-      if (l.rfind("FEDRAT/", 0) == 0) return;  // the block's own FEDRAT ends the record
+      if (l.rfind("$$", 0) != 0) return;  // a statement of the block's own before it ends the record
     if (!fedrat_.empty()) lines_.push_back(fedrat_);
   }
 
@@ -338,12 +343,11 @@ class writer {
       }
       lines_.push_back(std::move(go));
       rapid_pending_ = false;
+      goto_ended_.reset();
       if (arc) {
         const arc_plane plane = b.arc->plane;
-        ended_ = detail::circle_state::circle{plane, false, *b.arc->centre_mm,
-                                              detail::radius_in_plane_mm(plane, *b.arc->centre_mm, end)};
-      } else {
-        ended_.reset();
+        goto_ended_ = detail::circle_state::circle{plane, false, *b.arc->centre_mm,
+                                                   detail::radius_in_plane_mm(plane, *b.arc->centre_mm, end)};
       }
       at_ = end;
       if (b.axes.tool_axis) axis_ = *b.axes.tool_axis;
