@@ -502,6 +502,44 @@ case "$name" in
     has_line s.apt 'GOTO/8,0,50,-?0,0\.5,-0\.866[0-9]*'
     has_line s.apt 'GOTO/16,0,50,-?0,0\.5,0\.866[0-9]*'
     ;;
+  # --feed inverse-time copied a source G94 beside the G93 feed: `G1 G94 … F40.5`, the time's
+  # inverse read as mm/min. The output's feed mode is the policy's, in every dialect with G93.
+  inverse-time-no-source-g94)
+    printf '%s\n' 'T1 M6' 'G43 M428' 'G0 X80 Y50 Z60 B160 C-20' \
+      'G1 X87.774 Y60.348 Z54.153 B160.985 C-26.687 F3577' \
+      'G1 G94 X130.708 Y-10.422 Z34.038 B143.485 C132.564 F3449' 'M429' 'M30' >g.ngc
+    for d in haas iso linuxcnc siemens; do
+      run 0 translate --from bc-nutating-table --from-dialect linuxcnc --to dmu-50v --to-dialect "$d" \
+        --feed inverse-time -o "g-$d.nc" g.ngc
+      no_line "g-$d.nc" '.*G94.*'
+      has_line "g-$d.nc" '(G1 )?G93 (G1 )?X87\.774 .* F[0-9.]+'
+      has_line "g-$d.nc" 'G1 X130\.708 Y-10\.422 Z34\.038 .* F40\.5'
+    done
+    ;;
+  # `reverse` wrote the GOTO of a straight move ending elsewhere on the circle of the arc before
+  # it straight after that arc's CIRCLE, which kin5's APT reader refuses as ambiguous.
+  circle-then-chord)
+    printf '%s\n' '%' 'O0001' 'G21 G90 G17' 'T1 M6' 'G234 H1' 'G0 X30. Y0. Z99.475 B0 C0' 'G1 Z99. F500' \
+      'G2 X0. Y-30. I-30. J0.' 'G1 X-30. Y0. Z90.' 'G49' 'M30' '%' >c.nc
+    run 0 reverse --machine xyzbc-trt --dialect haas -o c.apt c.nc
+    run 0 post --machine xyzbc-trt --dialect haas -o c2.nc c.apt
+    has_line c2.nc 'G2 X0\. Y-30\. I-30\. J0\.'
+    has_line c2.nc 'G1 X-30\. Y0\. Z90\. .*'
+    ;;
+  # `post` wrote FEDRAT/INVERS as `G93 F12.3` on its own line and the moves after it without F,
+  # where every inverse-time NC move needs its own; into Heidenhain the second move was refused.
+  post-fedrat-invers)
+    printf '%s\n' 'UNIT/MM' 'LOADTL/1' 'RAPID' 'GOTO/0,0,50,0,0,1' 'FEDRAT/MMPM,500' 'GOTO/10,0,50,0,0,1' \
+      'FEDRAT/INVERS,12.3' 'GOTO/20,0,50,0,0.1,0.995' 'GOTO/30,0,50,0,0.2,0.98' 'FEDRAT/MMPM,600' \
+      'GOTO/40,0,50,0,0.2,0.98' 'FINI' >f.apt
+    for d in iso linuxcnc siemens; do
+      run 0 post --machine dmu-50v --dialect "$d" -o "f-$d.nc" f.apt
+      no_line "f-$d.nc" 'G93 F.*'
+      count_is "f-$d.nc" 'G1 X[23]0\.? .* F12\.3' 2
+    done
+    run 0 post --machine dmu-50v --dialect heidenhain -o f.h f.apt
+    count_is f.h '[0-9]+ L X\+[23]0 .* F123' 2
+    ;;
   *)
     echo "silent.sh: unknown row '$name'" >&2
     exit 2

@@ -123,8 +123,15 @@ class nc_target {
 
   /// Second pass: block `b` (whose step is `s`) → `emit`; reports to `on_report`.
   template <class Emit, class Report>
-  void write(const program::block& b, const source_step& s, translation& out, Emit&& emit, Report&& on_report) {
+  void write(const program::block& read, const source_step& s, translation& out, Emit&& emit, Report&& on_report) {
     if (s.what == source_step::kind::failed) return;
+    // CL data: the FEDRAT/INVERS in effect is each feed move's own F, as inverse time in NC needs.
+    const bool cl_source = program::capabilities_of(source_language_).cl_data;
+    std::optional<program::block> timed;
+    if (cl_source && s.what == source_step::kind::motion && !s.rapid &&
+        s.feed_mode == program::feed_unit::inverse_time && !read.feed && s.feed_inverse_per_min)
+      timed = read, timed->feed = s.feed_inverse_per_min;
+    const program::block& b = timed ? *timed : read;
     if (s.what == source_step::kind::passthrough) {
       emit(carried_over(b, source_language_, output_language_));
       if (!b.framing) ++out.passed_through;  // a tape mark: the writer frames its own program
@@ -141,6 +148,7 @@ class nc_target {
     }
     carry_over(o, source_language_, output_language_);
     if (b.feed_mode) source_inverse_time_ = *b.feed_mode == program::feed_unit::inverse_time;
+    if (cl_source && source_inverse_time_ && s.what == source_step::kind::copy) o.feed.reset();  // on each move
     if (source_inverse_time_ && !supports_inverse_time(output_language_)) {
       // Each move's time is kept by a per-minute F (write_feed); G93 itself has no equivalent,
       // and an F without a move takes effect on the next move, where it is converted.
@@ -237,6 +245,7 @@ class nc_target {
       o.feed.reset();
       o.feed_mode.reset();
     }
+    if (feed_ == feed_policy::inverse_time && o.feed_mode) output_inverse_time_ = true;  // a G93 of its own
     if (tcp_switched_on_ && output_tcp_ && b.program_end && !o.tcp) o.tcp = false;
     if (o.tcp) output_tcp_ = *o.tcp;
     emit(std::move(o));
@@ -264,6 +273,9 @@ class nc_target {
     for (std::size_t k = 0; k < s.pieces.size(); ++k)
       if (!piece_reachable(b, s, first + k, s.pieces[k].tip_mm, out)) return;
     if (!report_motion(b, s, j, out, on_report)) return;
+    // Under --feed inverse-time the output's feed mode is the policy's, never the source's word:
+    // a source G94 beside the G93 feed would read the time's inverse as mm/min.
+    if (feed_ == feed_policy::inverse_time) o.feed_mode.reset();
     for (std::size_t k = 0; k < s.pieces.size(); ++k) write_piece(b, s, k, first + k, o, out, emit);
     const kin5::rotary_values& angles_target = *path_.angles[j];
     const vec3 tip_target_mm = target_T_source_.map_point(s.tip_source_mm);
@@ -575,6 +587,8 @@ class nc_target {
     } else if (s.feed_mode == program::feed_unit::inverse_time) {
       // Already inverse time: the block time is kept by construction, or by a per-minute F.
       if (!supports_inverse_time(output_language_)) per_minute_keeping_time(b, s, o, out);
+      else if (feed_ == feed_policy::inverse_time && !output_inverse_time_)
+        o.feed_mode = program::feed_unit::inverse_time, output_inverse_time_ = true;
     } else if (feed_ == feed_policy::block_time && s.feed_mm_per_min) {
       o.feed = block_time_feed_mm_per_min(*s.feed_mm_per_min, source_length(s), target_length(tip_target_mm, angles_target_deg));
     } else if (feed_ == feed_policy::inverse_time && s.feed_mm_per_min) {

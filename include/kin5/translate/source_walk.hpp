@@ -275,6 +275,8 @@ class source_walker {
     const report to{out, &allow_};
     if constexpr (Source::needs_tcp)
       if (b.tcp && *b.tcp != modal_.tcp) rebase_on_switch(*b.tcp);
+    // APT's FEDRAT/INVERS holds for the moves after it, where an NC move in G93 needs its own F.
+    if (program::capabilities_of(context_.language).cl_data) modal_.inverse_time_feed_used = false;
     const program::modal_state before = modal_;
     modal_.apply(b);
     source_step s;

@@ -197,25 +197,15 @@ program_case make_case(const choice& c, draws& d) {
     out.opening.push_back(s);
   }
   const bool arcs = pg::capabilities_of(c.source).arcs && pg::capabilities_of(c.target).arcs;
-  // Not under --feed inverse-time: a source G94 word is written beside the G93 feed there
-  // (`G1 G94 X… F40.5`, the time's inverse read as mm/min), found by this harness; lift once fixed.
-  // Not from CL data (post): after FEDRAT/INVERS the NC output writes `G93 F…` alone and the
-  // moves without F, as issue 26 reports of a G93 move without F; lift with that fix.
+  // G93 and G94 words in the source under every policy but --feed block-time, a per-minute
+  // policy the check holds inverse time out of.
   const bool inverse_time_source =
-      pg::capabilities_of(c.source).inverse_time_feed && c.feed == feed_policy::tcp && !cl_source;
+      pg::capabilities_of(c.source).inverse_time_feed && c.feed != feed_policy::block_time;
   const std::size_t n = 1 + d.below(14);
   vec3 tip{d.uniform(-100, 100), d.uniform(-100, 100), d.uniform(0, 100)};
   angles a = shared_orientation(*c.from, *c.to, R, d);
   bool inverse_time = false, have_feed = false;
   std::optional<std::pair<vec3, double>> last_arc;  // centre and radius, while the last move was an arc
-  // Keeps a move after an arc off that arc's circle (in XY): `reverse` writes such a GOTO after
-  // the CIRCLE, and the APT reader refuses it as ambiguous ("GOTO ends on the circle of the
-  // CIRCLE before it"), found by this harness; lift once fixed.
-  const auto off_last_circle = [&] {
-    if (!last_arc) return;
-    const auto& [centre, r] = *last_arc;
-    if (std::abs(std::hypot(tip.x - centre.x, tip.y - centre.y) - r) < 0.05) tip.x += 0.5;
-  };
   const auto axes_of = [&](pg::block& b) {
     b.axes.x_mm = std::round(tip.x * 1000) / 1000, b.axes.y_mm = std::round(tip.y * 1000) / 1000,
     b.axes.z_mm = std::round(tip.z * 1000) / 1000;
@@ -227,7 +217,6 @@ program_case make_case(const choice& c, draws& d) {
     const double kind = d.uniform(0, 1);
     if (k == 0 || kind < 0.15) {  // a rapid, first to a pose of its own
       tip = {d.uniform(-100, 100), d.uniform(-100, 100), d.uniform(0, 100)};
-      off_last_circle();
       a = shared_orientation(*c.from, *c.to, R, d);
       b.motion = pg::motion_kind::rapid;
       axes_of(b);
@@ -242,20 +231,26 @@ program_case make_case(const choice& c, draws& d) {
       b.arc = pg::arc_words{pg::arc_plane::xy, centre, std::nullopt};
       last_arc = {centre, r};
     } else {  // a line, its orientation often changing
-      tip = tip + vec3{d.uniform(-30, 30), d.uniform(-30, 30), d.uniform(-20, 20)};
-      off_last_circle();
+      if (last_arc && d.chance(0.3)) {  // a chord: to another point of the arc's circle, at another Z
+        const auto& [centre, r] = *last_arc;
+        const double at = d.uniform(-pi, pi);
+        tip = {centre.x + r * std::cos(at), centre.y + r * std::sin(at), tip.z + d.uniform(-20, 20)};
+      } else {
+        tip = tip + vec3{d.uniform(-30, 30), d.uniform(-30, 30), d.uniform(-20, 20)};
+      }
       if (d.chance(0.7)) a = shared_orientation(*c.from, *c.to, R, d);
       b.motion = pg::motion_kind::linear;
       axes_of(b);
     }
     if (b.motion != pg::motion_kind::rapid) {
-      // G93 takes F in every block (issue 26: a G93 move without F is known to be accepted).
       if (inverse_time_source && d.chance(0.15)) {
         inverse_time = !inverse_time;
         b.feed_mode = inverse_time ? pg::feed_unit::inverse_time : pg::feed_unit::per_minute;
         have_feed = false;
       }
-      if (inverse_time) b.feed = std::round(d.uniform(0.5, 60) * 100) / 100;
+      // G93 takes F in every NC block; APT's FEDRAT/INVERS holds for the moves after it.
+      if (inverse_time && (!cl_source || !have_feed || d.chance(0.5)))
+        b.feed = std::round(d.uniform(0.5, 60) * 100) / 100;
       else if (!have_feed || d.chance(0.3)) b.feed = std::round(d.uniform(50, 5000));
       have_feed = true;
     }

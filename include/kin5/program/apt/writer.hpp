@@ -80,12 +80,12 @@ class writer {
       }
     }
     if (b.passthrough) {
-      if (same_) out += b.text + '\n';
+      if (same_) out += b.text + '\n', ended_.reset();  // a statement: it ends an arc's record
       else out += "$$ " + flat(b.text) + '\n';
       if (b.comment && !same_) out += "$$ " + one_line(b, *b.comment) + '\n';
       return;
     }
-    if (b.state.dwell_s) return dwell(out, b);
+    if (b.state.dwell_s) return ended_.reset(), dwell(out, b);
     if (b.tool_name)
       fail(b, "a tool by name (\"" + one_line(b, *b.tool_name) +
                   "\") has no APT form (LOADTL takes a number; --tool-map NAME=n gives one)");
@@ -120,7 +120,11 @@ class writer {
       else lines_.back() += " $$ " + one_line(b, *b.comment);
     }
     if (lines_.empty() && !b.text.empty() && !same_) lines_.push_back("$$ " + flat(b.text));
-    for (const std::string& l : lines_) out += l + '\n';
+    for (const std::string& l : lines_) {
+      out += l + '\n';
+      if (l.rfind("GOTO/", 0) != 0 && l.rfind("$$", 0) != 0) ended_.reset();  // a statement ends the arc's record
+      else if (l.rfind("GOTO/", 0) == 0) ended_ = goto_ended_;
+    }
   }
 
  private:
@@ -136,6 +140,9 @@ class writer {
   bool inch_ = false;          // UNITS/INCHES written: lengths in inches
   bool inverse_time_ = false;  // inverse-time feed in effect (this block's or an earlier one's)
   std::optional<bool> fedrat_inverse_;  // whether the last FEDRAT written was INVERS
+  std::string fedrat_;                  // the last FEDRAT written
+  std::optional<detail::circle_state::circle> ended_;  // the circle the last GOTO ended an arc on
+  std::optional<detail::circle_state::circle> goto_ended_;  // that of this block's GOTO, if an arc's
   std::vector<std::string> lines_;  // the block's statements up to its GOTO
   std::vector<std::string> after_;  // those after it: the M functions that act at the block's end
   bool foreign_note_ = false;       // something without an APT form: carry the block's text
@@ -262,6 +269,20 @@ class writer {
            format_number(n.z, 0) + "," + format_number(r, decimals);
   }
 
+  /// Before the GOTO of a straight feed move to `end` right after an arc: when it ends elsewhere
+  /// on that arc's circle, a reader takes it for a further point of the arc (circle.hpp), so the
+  /// FEDRAT in effect is said again, which ends the arc's record and changes no feed.
+  void separate_from_arc(const vec3& end) {
+    if (!ended_ || !at_) return;
+    const double tolerance = detail::circle_tolerance_mm / (inch_ ? mm_per_inch : 1.0);
+    const bool on_circle =
+        std::fabs(detail::radius_in_plane_mm(ended_->plane, ended_->centre_mm, end) - ended_->radius_mm) <= tolerance;
+    if (!on_circle || detail::radius_in_plane_mm(ended_->plane, *at_, end) <= tolerance) return;
+    for (const std::string& l : lines_)
+      if (l.rfind("$$", 0) != 0) return;  // a statement of the block's own before it ends the record
+    if (!fedrat_.empty()) lines_.push_back(fedrat_);
+  }
+
   /// FEDRAT/MMPM,f or FEDRAT/INVERS,f.
   void feed(const block& b) {
     if (b.feed) {
@@ -269,6 +290,7 @@ class writer {
       const int inch = inch_ ? 1 : 0;
       const int decimals = rate_decimals(*b.feed, options_.feed_decimals + inch, options_.finest_feed_decimals + inch);
       lines_.push_back(std::string("FEDRAT/") + mode + format_number(*b.feed, decimals));
+      fedrat_ = lines_.back();
       fedrat_inverse_ = inverse_time_;
     } else if (b.feed_mode) {
       foreign_note_ = true;  // the unit goes with the next FEDRAT (`motion` refuses a feed move without one)
@@ -311,6 +333,7 @@ class writer {
                     "a value");
       const int linear = options_.linear_decimals + (inch_ ? 1 : 0);
       if (arc) lines_.push_back(circle(b, end, linear));
+      else if (!rapid) separate_from_arc(end);
       std::string go = "GOTO/" + format_number(*b.axes.x_mm, linear) + "," + format_number(*b.axes.y_mm, linear) +
                        "," + format_number(*b.axes.z_mm, linear);
       if (b.axes.tool_axis) {
@@ -320,6 +343,12 @@ class writer {
       }
       lines_.push_back(std::move(go));
       rapid_pending_ = false;
+      goto_ended_.reset();
+      if (arc) {
+        const arc_plane plane = b.arc->plane;
+        goto_ended_ = detail::circle_state::circle{plane, false, *b.arc->centre_mm,
+                                                   detail::radius_in_plane_mm(plane, *b.arc->centre_mm, end)};
+      }
       at_ = end;
       if (b.axes.tool_axis) axis_ = *b.axes.tool_axis;
     } else if (rapid) {
