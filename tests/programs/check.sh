@@ -128,7 +128,7 @@ case $name in
   apt/hub_inch_inverse.cls)
     expect 2 "6:1: error: M7: an M function of apt" post --machine dmu-80p
     expect 0 - post --machine sajo-12000p
-    has '^G700$' '^G93 F' ;;
+    has '^G700$' '^G93$' '^G1 X1\.0375 .* F95\.5$' ;;
   apt/drill_cycle_refused.cls)
     expect 2 "9:1: error: CYCLE/DRILL: fixed cycles are not supported" post --machine dmu-80p ;;
   apt/loadtool_creo.cls)

@@ -136,6 +136,30 @@ angles shared_orientation(const machine_model& from, const machine_model& to, co
   return angles_within(from, d);
 }
 
+/// The next pose's angles, drawn as `shared_orientation` draws them, such that no rotary axis turns
+/// by 180° or more from `previous` (a continuous axis takes the value nearest its last): under
+/// tool-tip tracking such a turn is a sweep, which the plan keeps or refuses and `reverse` cuts into
+/// GOTO points (their own laws, translate_laws' sweep laws), so a block would no longer be one
+/// written block. After a few draws, the previous angles (no rotary motion).
+angles next_orientation(const machine_model& from, const machine_model& to, const mat3& to_R_from, draws& d,
+                        const angles& previous) {
+  constexpr double half_turn_deg = 179.0;
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    angles a = shared_orientation(from, to, to_R_from, d);
+    bool near = true;
+    for (std::size_t i = 0; i < from.rotary_count; ++i) {
+      double delta_deg = to_degrees(a[i]).value - to_degrees(previous[i]).value;
+      if (from.rotary(i).travel.continuous) {
+        delta_deg -= 360.0 * std::round(delta_deg / 360.0);
+        a[i] = to_radians(degrees{to_degrees(previous[i]).value + delta_deg});
+      }
+      near = near && std::abs(delta_deg) < half_turn_deg;
+    }
+    if (near) return a;
+  }
+  return previous;
+}
+
 /// How a case runs: `translate` NC → NC between two machines, `reverse` NC → APT CL data on one,
 /// `post` APT CL data → NC on one.
 enum class route { translate, reverse, post };
@@ -217,7 +241,7 @@ program_case make_case(const choice& c, draws& d) {
     const double kind = d.uniform(0, 1);
     if (k == 0 || kind < 0.15) {  // a rapid, first to a pose of its own
       tip = {d.uniform(-100, 100), d.uniform(-100, 100), d.uniform(0, 100)};
-      a = shared_orientation(*c.from, *c.to, R, d);
+      a = next_orientation(*c.from, *c.to, R, d, a);
       b.motion = pg::motion_kind::rapid;
       axes_of(b);
     } else if (arcs && kind < 0.3 && !cl_source) {  // an arc in XY under the same orientation
@@ -238,7 +262,7 @@ program_case make_case(const choice& c, draws& d) {
       } else {
         tip = tip + vec3{d.uniform(-30, 30), d.uniform(-30, 30), d.uniform(-20, 20)};
       }
-      if (d.chance(0.7)) a = shared_orientation(*c.from, *c.to, R, d);
+      if (d.chance(0.7)) a = next_orientation(*c.from, *c.to, R, d, a);
       b.motion = pg::motion_kind::linear;
       axes_of(b);
     }
