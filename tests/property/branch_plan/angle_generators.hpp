@@ -3,6 +3,7 @@
 /// limits) and per machine. Kinematics only: no program or translation header.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include <rapidcheck.h>
@@ -36,6 +37,27 @@ rc::Gen<rotary_angles<M>> angles_within(double margin_deg = 0.5) {
   } else {
     return rc::gen::map(commanded(M::rotary[0], margin_deg), [](radians a) { return rotary_angles<M>{a}; });
   }
+}
+
+/// Commanded angles of M within travel, its continuous axes up to two whole turns either way;
+/// with `poles`, one time in four at a pole of M (when one lies within travel), its free angle
+/// kept random. Drawn inside a property (`*` on generators).
+template <machine M>
+rotary_angles<M> angles_with_turns(bool poles) {
+  rotary_angles<M> a = *angles_within<M>(0.5);
+  if constexpr (rotary_count<M> == 2) {
+    if (poles && *rc::gen::inRange(0, 4) == 0) {
+      const vec3 p = (*rc::gen::arbitrary<bool>() ? 1.0 : -1.0) * M::model.orientation.p;
+      for (const auto& s : inverse<M>(p))
+        if (s.within_travel) {
+          a[1] = s.angles[1];
+          break;
+        }
+    }
+  }
+  for (std::size_t i = 0; i < rotary_count<M>; ++i)
+    if (M::rotary[i].travel.continuous) a[i].value += 2.0 * pi * *rc::gen::inRange(-2, 3);
+  return a;
 }
 
 }  // namespace kin5::test

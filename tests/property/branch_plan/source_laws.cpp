@@ -20,26 +20,6 @@ namespace {
 
 using namespace kin5;
 
-/// A pose of M within travel, its continuous axes up to two whole turns either way; one time in
-/// four at a pole of M (when one lies within travel), its free angle kept random.
-template <machine M>
-rotary_angles<M> source_pose(bool poles) {
-  rotary_angles<M> a = *test::angles_within<M>(0.5);
-  if constexpr (rotary_count<M> == 2) {
-    if (poles && *rc::gen::inRange(0, 4) == 0) {
-      const vec3 p = (*rc::gen::arbitrary<bool>() ? 1.0 : -1.0) * M::model.orientation.p;
-      for (const auto& s : inverse<M>(p))
-        if (s.within_travel) {
-          a[1] = s.angles[1];
-          break;
-        }
-    }
-  }
-  for (std::size_t i = 0; i < rotary_count<M>; ++i)
-    if (M::rotary[i].travel.continuous) a[i].value += 2.0 * pi * *rc::gen::inRange(-2, 3);
-  return a;
-}
-
 /// The tool axes at s = j/n, j = 1 … n−1, of M's angles moving linearly from `from` to `to`,
 /// n = 8 per half turn of the largest move, when one axis moves by 180° or more; else none.
 template <machine M>
@@ -80,7 +60,7 @@ TEST_CASE("a target whose axes are the source's keeps the source's own angles") 
     rc::prop(std::string("the source's path planned on ") + std::string(M::id), [] {
       const auto n = *rc::gen::inRange<std::size_t>(1, 9);
       std::vector<rotary_angles<M>> source;
-      for (std::size_t k = 0; k < n; ++k) source.push_back(source_pose<M>(true));
+      for (std::size_t k = 0; k < n; ++k) source.push_back(test::angles_with_turns<M>(true));
       rotary_planner<M> planner;
       std::vector<std::vector<vec3>> sweeps(n);
       for (std::size_t k = 0; k < n; ++k) {
@@ -105,7 +85,7 @@ TEST_CASE("a source sweep is followed whenever the target can, without the sourc
       const auto n = *rc::gen::inRange<std::size_t>(2, 7);
       std::vector<rotary_angles<M>> source;
       for (std::size_t k = 0; k < n; ++k) {
-        source.push_back(source_pose<M>(false));
+        source.push_back(test::angles_with_turns<M>(false));
         if constexpr (rotary_count<M> == 2) {  // off the poles, whose free angle the tool axis does not say
           const vec3 u = tool_axis<M>(source.back());
           const vec3 p = M::model.orientation.p;

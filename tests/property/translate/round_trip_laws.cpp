@@ -231,26 +231,6 @@ TEST_CASE("translate A -> B -> A is the identity on the reachable set") {
 
 namespace {
 
-/// A source pose of M within travel, its continuous axes up to two whole turns either way; one
-/// time in four at a pole of M (when one lies within travel), its free angle kept random.
-template <machine M>
-rotary_angles<M> swept_pose() {
-  rotary_angles<M> a = *test::angles_within<M>(0.5);
-  if constexpr (rotary_count<M> == 2) {
-    if (*rc::gen::inRange(0, 4) == 0) {
-      const vec3 p = (*rc::gen::arbitrary<bool>() ? 1.0 : -1.0) * M::model.orientation.p;
-      for (const auto& s : inverse<M>(p))
-        if (s.within_travel) {
-          a[1] = s.angles[1];
-          break;
-        }
-    }
-  }
-  for (std::size_t i = 0; i < rotary_count<M>; ++i)
-    if (M::rotary[i].travel.continuous) a[i].value += 2.0 * pi * *rc::gen::inRange(-2, 3);
-  return a;
-}
-
 /// Machine `m`'s commanded angles (radians, machine order) from a block's words; 0 when missing.
 kin5::rotary_values angles_of(const machine_model& m, const program::axis_words& w) {
   kin5::rotary_values out{};
@@ -297,7 +277,7 @@ TEST_CASE("a translation to the same machine is the identity, sweeps, whole turn
     rc::prop(std::string(M::id) + " -> " + std::string(M::id) + " keeps every word", [] {
       const auto n = *rc::gen::inRange<std::size_t>(1, 9);
       std::vector<test::pose<M>> path;
-      for (std::size_t k = 0; k < n; ++k) path.push_back({*test::tip(), swept_pose<M>()});
+      for (std::size_t k = 0; k < n; ++k) path.push_back({*test::tip(), test::angles_with_turns<M>(true)});
       const auto source = nc_program<M>(path);
       const auto t = translate<M, M>(source, exact_options());
       RC_ASSERT(t.ok());
@@ -321,7 +301,7 @@ TEST_CASE("a sweep of 180 degrees or more into another machine is followed or re
           *machines::catalog_models[*rc::gen::inRange<std::size_t>(0, machines::catalog_models.size())];
       const auto n = *rc::gen::inRange<std::size_t>(2, 7);
       std::vector<test::pose<M>> path;
-      for (std::size_t k = 0; k < n; ++k) path.push_back({*test::tip(), swept_pose<M>()});
+      for (std::size_t k = 0; k < n; ++k) path.push_back({*test::tip(), test::angles_with_turns<M>(true)});
       const auto source = nc_program<M>(path);
       const rigid_transform d_T_s = default_setup(M::id, to.geometry.id);
       const auto t = translate(M::model, to, source, exact_options());
