@@ -134,6 +134,21 @@ constexpr bool opens_string(char ch, char prev) {
          (prev == '=' || prev == '[' || prev == '{' || prev == ',' || prev == '.' || prev == '\n');
 }
 
+/// One step of `c` through a dotted key or table name: past a string that opens there (`last`
+/// becomes its quote), else past one byte, a dot counted into `parts` and `last` set to it unless
+/// it is blank. False, the cursor unmoved, at a non-ASCII byte outside a string.
+inline bool step_dotted_name(cursor& c, char& last, std::size_t& parts) {
+  if (opens_string(c.peek(), last)) {
+    c.skip_string(), last = '"';
+    return true;
+  }
+  if (static_cast<unsigned char>(c.peek()) >= 0x80) return false;
+  if (c.peek() == '.') ++parts;
+  if (c.peek() != ' ' && c.peek() != '\t') last = c.peek();
+  c.next();
+  return true;
+}
+
 inline std::string non_ascii() {
   return "a non-ASCII character outside a string or comment (a quote or bracket glued to a word opens nothing), or first "
          "after a backslash in a string: TOML reads only ASCII there";
@@ -202,12 +217,7 @@ inline std::optional<toml_bound_violation> toml_bounds_violation(std::string_vie
       const std::size_t start = c.i;
       char last = '[';
       while (!c.done() && c.peek() != ']' && c.peek() != '\n') {
-        if (!opens_string(c.peek(), last)) {
-          if (static_cast<unsigned char>(c.peek()) >= 0x80) return non_ascii_here();
-          if (c.peek() == '.') ++parts;
-          if (c.peek() != ' ' && c.peek() != '\t') last = c.peek();
-          c.next();
-        } else c.skip_string(), last = '"';
+        if (!toml_bounds_detail::step_dotted_name(c, last, parts)) return non_ascii_here();
         if (c.i - start > toml_bounds::max_key_bytes) return toml_bound_violation{line, column, toml_bounds_detail::too_long("a table name")};
         if (parts > toml_bounds::max_nesting) return toml_bound_violation{line, column, toml_bounds_detail::too_deep()};
       }
@@ -221,12 +231,7 @@ inline std::optional<toml_bound_violation> toml_bounds_violation(std::string_vie
       std::size_t parts = 1;
       char last = '.';  // a quoted part may open the key, or follow a dot
       while (!c.done() && c.peek() != '=' && c.peek() != '\n') {
-        if (!opens_string(c.peek(), last)) {
-          if (static_cast<unsigned char>(c.peek()) >= 0x80) return non_ascii_here();
-          if (c.peek() == '.') ++parts;
-          if (c.peek() != ' ' && c.peek() != '\t') last = c.peek();
-          c.next();
-        } else c.skip_string(), last = '"';
+        if (!toml_bounds_detail::step_dotted_name(c, last, parts)) return non_ascii_here();
         const bool blank = c.text[c.i - 1] == ' ' || c.text[c.i - 1] == '\t';  // blanks before '=' are no key
         if (!blank && c.i - start > toml_bounds::max_key_bytes) return toml_bound_violation{line, column, toml_bounds_detail::too_long("a key")};
         if (nesting + parts > toml_bounds::max_nesting) return toml_bound_violation{line, column, toml_bounds_detail::too_deep()};
