@@ -380,6 +380,39 @@ inline bool trig_differs_from_radians(spelling s, const tree& t, const parameter
   return a && (std::fmod(*a, 90.0) == 0 || std::abs(*a) > 1e4);
 }
 
+/// Whether `t` rounds (`ROUND`) a value of 2³¹ or more in magnitude, where rs274 converts to a
+/// 32-bit integer and overflows (`ROUND[3000000000]` is −2147483648); kin5 rounds the double.
+inline bool round_overflows_int(spelling s, const tree& t, const parameters& p) {
+  for (const tree& k : t.kids)
+    if (round_overflows_int(s, k, p)) return true;
+  if (t.kind != tree::call || functions(s)[t.index].name != "ROUND") return false;
+  const value a = evaluate(s, t.kids[0], p);
+  return a && std::abs(*a) >= 2147483648.0;
+}
+
+/// Whether `t` takes an `ASIN` or `ACOS` within 1e-6 of ±1, where the last bit of its argument
+/// (rs274's `TAN[45]` is 0.9999999999999999, kin5's 1) moves the angle by about 1e-6°: a
+/// difference of rounding, beyond the oracle's 1e-9.
+inline bool inverse_trig_near_end(spelling s, const tree& t, const parameters& p) {
+  for (const tree& k : t.kids)
+    if (inverse_trig_near_end(s, k, p)) return true;
+  if (t.kind != tree::call) return false;
+  const std::string name = functions(s)[t.index].name;
+  if (name != "ASIN" && name != "ACOS") return false;
+  const value a = evaluate(s, t.kids[0], p);
+  return a && std::abs(*a) > 1 - 1e-6;
+}
+
+/// Whether `t` takes `a MOD b` with |a| ≥ 10⁶: the remainder of a large quotient turns a last-bit
+/// difference in `b` (rs274's `TAN[3]` against kin5's sin/cos) into one far beyond the oracle's 1e-9.
+inline bool remainder_of_large(spelling s, const tree& t, const parameters& p) {
+  for (const tree& k : t.kids)
+    if (remainder_of_large(s, k, p)) return true;
+  if (t.kind != tree::binary || std::string_view(operators(s)[t.index].text) != "MOD") return false;
+  const value a = evaluate(s, t.kids[0], p);
+  return a && std::abs(*a) >= 1e6;
+}
+
 inline bool atomic(const tree& t) { return t.kind == tree::number || t.kind == tree::parameter || t.kind == tree::call; }
 
 /// `t` in spelling `s` with the fewest brackets its levels need (`alternate`: FANUC's
