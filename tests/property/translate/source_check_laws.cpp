@@ -326,6 +326,8 @@ TEST_CASE("resolution: the one-pass scan finds the words of the word rule, line 
       RC_ASSERT(words == words_line_by_line(text, d));
       program::number_resolution counted;
       for (const auto& [letter, offset, decimals] : words) program::detail::count_word(counted, letter, decimals);
+      // and the parameters words use, as scan_resolution says (`A3=0.5` then `XA3`: a named one)
+      program::count_parameter_words(text, counted);
       RC_ASSERT(program::scan_resolution(text, d) == counted);
     });
   }
