@@ -67,6 +67,16 @@ class evaluator {
     return value_of(e_.root);
   }
 
+  /// The parameter the root names (a numbered or named parameter node), its number evaluated.
+  std::optional<parameter_key> target(evaluation& error) {
+    const node& n = e_.at(e_.root);
+    if (n.kind != node_kind::numbered_parameter && n.kind != node_kind::named_parameter) {
+      error = fail(n.where, "only a parameter can be assigned");
+      return std::nullopt;
+    }
+    return key_of(n, error);
+  }
+
  private:
   static evaluation fail(span where, std::string message) { return {0, expression_error{where, std::move(message)}}; }
 
@@ -261,5 +271,19 @@ class evaluator {
 
 /// The value of `e` with the parameters `p` (see the file comment).
 inline evaluation evaluate(const expression& e, const parameter_store& p) { return detail::evaluator(e, p).run(); }
+
+/// The parameter an assignment sets: the key `e`'s root names (`#[#1+1]` is `#3` while #1 is 2),
+/// or the error.
+struct parameter_target {
+  std::optional<parameter_key> key;
+  std::optional<expression_error> error{};
+};
+
+/// The parameter `e` (a parameter node at its root) names, with the parameters `p`.
+inline parameter_target parameter_of(const expression& e, const parameter_store& p) {
+  evaluation error;
+  auto key = detail::evaluator(e, p).target(error);
+  return {std::move(key), error.error};
+}
 
 }  // namespace kin5::program::interp

@@ -1,0 +1,473 @@
+/// @file program/interp/executor.hpp
+/// Runs the lines of one program as a control does: in order, except where a control statement
+/// jumps to a label, takes a branch of an IF, runs a loop, calls a labelled part of the same file
+/// (a number of times) or returns from one. Each dialect's syntax says what a line is (a
+/// `statement`, statement.hpp); the executor keeps the place, the open calls and loops and the
+/// parameters (parameter_store.hpp), and hands each *ordinary* line it executes to the dialect's
+/// reader, which reads its words with the parameters' values (`parameters()`).
+///
+/// The text stays in memory while it runs (the first pass of a translation holds it anyway);
+/// only labels are indexed, by one scan when the first jump or call needs one, so memory grows
+/// with the labels and the open calls and loops, not with the program's length.
+///
+/// Bounds, each an error at the statement that passes it, after which nothing more runs (the
+/// path is unknown): `max_executed_lines` lines executed in all (a loop that never ends);
+/// `max_call_depth` calls open (parameter_store.hpp); `max_open_loops` loops open.
+/// @code
+///   kin5::program::interp::executor run{text, kin5::program::linuxcnc::parameter_rules()};
+///   run.execute(syntax,                                   // syntax.statement_of(text_line) -> statement
+///               [&](const kin5::program::text_line& line, const kin5::program::interp::statement&) { read(line); },
+///               [&](const kin5::program::interp::flow_error& e) { report(e.line, e.column, e.message); });
+/// @endcode
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "../text.hpp"
+#include "evaluate.hpp"
+#include "parameter_store.hpp"
+#include "statement.hpp"
+
+namespace kin5::program::interp {
+
+/// How much a program may execute.
+struct execution_limits {
+  /// Lines executed in all, ordinary and control statements alike, counting each time a loop
+  /// or call runs a line again. Real programs execute a few million; past this bound the
+  /// program is taken to loop for ever (`--max-executed-lines`).
+  std::uint64_t max_executed_lines = 100'000'000;
+  std::size_t max_open_loops = 64;  ///< loops open at once, over all open calls
+};
+
+/// Why execution stopped early, and where (the statement; `column` of its first byte).
+struct flow_error {
+  std::size_t line = 0;
+  std::size_t column = 1;
+  std::string message;
+};
+
+/// Runs one program's text (see the file comment).
+class executor {
+ public:
+  executor(std::string_view text, parameter_rules rules, execution_limits limits = {})
+      : text_(text), parameters_(std::move(rules)), limits_(limits) {}
+
+  parameter_store& parameters() { return parameters_; }
+  const parameter_store& parameters() const { return parameters_; }
+
+  /// The lines of the calls open now, outermost first (empty in the main program).
+  const std::vector<std::size_t>& call_lines() const { return call_lines_; }
+
+  /// Lines executed so far.
+  std::uint64_t executed_lines() const { return executed_; }
+
+  /// Runs the program from its first line. `syntax.statement_of(const text_line&)` says what
+  /// each line is; `on_line(const text_line&, const statement&)` reads each ordinary line
+  /// executed (after the statement's assignments); `on_error(flow_error)` is called once, for
+  /// the error that stops the run. Returns false when an error stopped it.
+  template <class Syntax, class OnLine, class OnError>
+  bool execute(Syntax& syntax, OnLine&& on_line, OnError&& on_error) {
+    for (position at{0, 1}; at.offset < text_.size();) {
+      const line_at here = line_of(at);
+      if (++executed_ > limits_.max_executed_lines) return fail(on_error, here.line, limit_message());
+      const statement s = syntax.statement_of(here.line);
+      if (s.error) return fail(on_error, here.line, s.error->message, s.error->where.column);
+      if (!assign_all(s, here.line, on_error)) return false;
+      std::optional<position> next = here.next;  // empty: stop after an error
+      switch (s.kind) {
+        case statement_kind::ordinary:
+          on_line(here.line, s);
+          if (s.ends_program) return true;
+          break;
+        case statement_kind::label:
+        case statement_kind::end_if: break;
+        case statement_kind::jump: next = jump(syntax, s, at, here.line, on_error); break;
+        case statement_kind::call: next = call(syntax, s, at, here, on_error); break;
+        case statement_kind::subprogram: {  // reached in the program's flow: its body is skipped
+          const auto end = find_end_of_subprogram(syntax, here.next, s.key);
+          if (!end) return fail(on_error, here.line, "subprogram " + s.key + " has no end");
+          next = after(*end);
+          break;
+        }
+        case statement_kind::return_from_call:
+          if (calls_.empty()) {
+            if (s.ends_program) return true;
+            return fail(on_error, here.line, "returns from a call, but no call is open");
+          }
+          next = finish_pass();
+          break;
+        case statement_kind::if_branch: next = branch(syntax, s, here, on_error); break;
+        case statement_kind::else_if_branch:
+          if (entering_else_if_) next = branch(syntax, s, here, on_error);
+          else next = skip_to_end_if(syntax, here, s.key, on_error);  // the branch before it ran
+          break;
+        case statement_kind::else_branch: next = skip_to_end_if(syntax, here, s.key, on_error); break;
+        case statement_kind::loop_begin: next = loop_top(syntax, s, at, here, on_error); break;
+        case statement_kind::loop_end: next = loop_bottom(s, at, here, on_error); break;
+        case statement_kind::loop_break:
+          if (!in_loop()) return fail(on_error, here.line, "a loop break outside a loop");
+          next = leave_loop(syntax, here.line, on_error);
+          break;
+        case statement_kind::loop_continue:
+          if (!in_loop()) return fail(on_error, here.line, "a loop continue outside a loop");
+          next = loop_end_of(syntax, loops_.back());
+          if (!next) return fail(on_error, here.line, "a loop without its end");
+          break;
+      }
+      if (!next) return false;
+      if (!calls_.empty() && calls_.back().ends == call_end::calling_line && next->offset == calls_.back().from.offset)
+        next = finish_pass();
+      if (next->offset >= text_.size() && !calls_.empty())
+        return fail(on_error, here.line,
+                    "the text ends inside the call from line " + std::to_string(calls_.back().from.number));
+      at = *next;
+    }
+    return true;
+  }
+
+ private:
+  struct position {
+    std::size_t offset = 0;  ///< of the line's first byte; the text's size: its end
+    std::size_t number = 1;  ///< 1-based line number
+  };
+  struct line_at {
+    text_line line;
+    position next;  ///< the next line's start (the end of the text after the last line)
+  };
+  struct open_call {
+    position from;                  ///< the calling statement
+    position back;                  ///< where the program goes on after the call
+    position start;                 ///< the first line of each pass
+    std::uint64_t passes_left = 1;  ///< this pass included
+    call_end ends{};
+    bool frame = true;              ///< the call opened a frame of local parameters
+    std::size_t loops_open = 0;     ///< loops open when the call began
+  };
+  struct open_loop {
+    position begin;                 ///< the loop's first statement
+    position body;                  ///< the line after it
+    std::optional<position> end{};  ///< its end statement, once found
+    std::string key;
+    loop_kind kind{};
+    std::uint64_t runs_left = 0;    ///< counted loops
+    std::size_t call_depth = 0;     ///< calls open when it began
+  };
+  struct label_entry {
+    std::string name;
+    position at;
+  };
+
+  std::string_view text_;
+  parameter_store parameters_;
+  execution_limits limits_;
+  std::uint64_t executed_ = 0;
+  std::vector<open_call> calls_;
+  std::vector<std::size_t> call_lines_;
+  std::vector<open_loop> loops_;
+  std::optional<std::vector<label_entry>> labels_;  // in file order, once scanned
+  bool entering_else_if_ = false;                   // a false branch passed control to this ELSEIF
+
+  line_at line_of(position p) const {
+    const std::size_t lf = text_.find('\n', p.offset);
+    const std::size_t stop = lf == std::string_view::npos ? text_.size() : lf;
+    std::string_view s = text_.substr(p.offset, stop - p.offset);
+    if (const std::size_t cr = s.find('\r'); cr != std::string_view::npos) s = s.substr(0, cr);
+    return {{s, p.number}, {lf == std::string_view::npos ? text_.size() : lf + 1, p.number + 1}};
+  }
+
+  position after(position p) const { return line_of(p).next; }
+
+  template <class OnError>
+  bool fail(OnError& on_error, const text_line& line, std::string message, std::size_t column = 0) {
+    if (column == 0) {
+      column = 1;
+      while (column <= line.text.size() && (line.text[column - 1] == ' ' || line.text[column - 1] == '\t')) ++column;
+    }
+    on_error(flow_error{line.number, column, std::move(message)});
+    return false;
+  }
+
+  template <class OnError>
+  std::optional<position> failed(OnError& on_error, const text_line& line, std::string message, std::size_t column = 0) {
+    fail(on_error, line, std::move(message), column);
+    return std::nullopt;
+  }
+
+  bool in_loop() const { return !loops_.empty() && loops_.back().call_depth == calls_.size(); }
+
+  std::string limit_message() const {
+    std::string m = "more than " + std::to_string(limits_.max_executed_lines) + " lines executed";
+    if (!loops_.empty()) m += ": the loop at line " + std::to_string(loops_.back().begin.number) + " may never end";
+    else if (!calls_.empty()) m += ": the call at line " + std::to_string(calls_.back().from.number) + " may never end";
+    else m += ": a jump may repeat for ever";
+    return m + " (--max-executed-lines raises the bound)";
+  }
+
+  template <class OnError>
+  bool assign_all(const statement& s, const text_line& line, OnError& on_error) {
+    for (const assignment& a : s.assignments) {
+      const evaluation v = evaluate(a.value, parameters_);
+      if (!v.ok()) return fail(on_error, line, v.error->message, v.error->where.column);
+      const parameter_target t = parameter_of(a.target, parameters_);
+      if (!t.key) return fail(on_error, line, t.error->message, t.error->where.column);
+      if (auto why = parameters_.assign(*t.key, v.value))
+        return fail(on_error, line, *why, a.target.at(a.target.root).where.column);
+    }
+    return true;
+  }
+
+  /// Whether `condition` holds (none: always); empty after reporting an error.
+  template <class OnError>
+  std::optional<bool> holds(const std::optional<expression>& condition, const text_line& line, OnError& on_error) {
+    if (!condition) return true;
+    const evaluation v = evaluate(*condition, parameters_);
+    if (!v.ok()) {
+      fail(on_error, line, v.error->message, v.error->where.column);
+      return std::nullopt;
+    }
+    return v.value != 0.0;
+  }
+
+  /// A repeat count: a whole number, not negative (none: 1); empty after reporting an error.
+  template <class OnError>
+  std::optional<std::uint64_t> count_of(const statement& s, const text_line& line, OnError& on_error) {
+    if (!s.count) return 1;
+    const evaluation v = evaluate(*s.count, parameters_);
+    if (!v.ok()) {
+      fail(on_error, line, v.error->message, v.error->where.column);
+      return std::nullopt;
+    }
+    const double whole = std::round(v.value);
+    if (std::abs(v.value - whole) > 1e-9 || whole < 0 || whole > 1e12) {
+      fail(on_error, line, "repeat count " + std::to_string(v.value) + " is not a whole number of 0 or more",
+           s.count->at(s.count->root).where.column);
+      return std::nullopt;
+    }
+    return static_cast<std::uint64_t>(whole);
+  }
+
+  static std::string where_searched(jump_direction d) {
+    switch (d) {
+      case jump_direction::forward: return "after this line";
+      case jump_direction::backward: return "before this line";
+      case jump_direction::either: break;
+    }
+    return "in this file";
+  }
+
+  template <class Syntax>
+  void index_labels(Syntax& syntax) {
+    labels_.emplace();
+    for (position p{0, 1}; p.offset < text_.size();) {
+      const line_at l = line_of(p);
+      statement s = syntax.statement_of(l.line);
+      if (!s.label.empty()) labels_->push_back({std::move(s.label), p});
+      p = l.next;
+    }
+  }
+
+  /// The label `name` searched in `direction` from the line at `from`: the nearest after it
+  /// (forward; `either` then searches before it), or the nearest before it (backward).
+  template <class Syntax>
+  std::optional<position> find_label(Syntax& syntax, const std::string& name, jump_direction direction, position from) {
+    if (!labels_) index_labels(syntax);
+    if (direction != jump_direction::backward)
+      for (const label_entry& e : *labels_)
+        if (e.at.offset > from.offset && e.name == name) return e.at;
+    if (direction == jump_direction::forward) return std::nullopt;
+    std::optional<position> nearest;
+    for (const label_entry& e : *labels_)
+      if (e.at.offset <= from.offset && e.name == name) nearest = e.at;
+    return nearest;
+  }
+
+  template <class Syntax, class OnError>
+  std::optional<position> jump(Syntax& syntax, const statement& s, position at, const text_line& line, OnError& on_error) {
+    const auto taken = holds(s.condition, line, on_error);
+    if (!taken) return std::nullopt;
+    if (!*taken) return after(at);
+    const auto target = find_label(syntax, s.target, s.direction, at);
+    if (!target) return failed(on_error, line, "jump to " + s.target + ": no such label " + where_searched(s.direction));
+    leave_loops_for(syntax, *target);
+    return target;
+  }
+
+  template <class Syntax, class OnError>
+  std::optional<position> call(Syntax& syntax, const statement& s, position at, const line_at& here, OnError& on_error) {
+    const auto count = count_of(s, here.line, on_error);
+    if (!count) return std::nullopt;
+    if (*count == 0) return here.next;
+    const auto target = find_label(syntax, s.target, s.direction, at);
+    if (!target) return failed(on_error, here.line, "call of " + s.target + ": no such label " + where_searched(s.direction));
+    const statement first = syntax.statement_of(line_of(*target).line);
+    const position start =
+        first.kind == statement_kind::label || first.kind == statement_kind::subprogram ? after(*target) : *target;
+    if (s.call_frame) {
+      if (!parameters_.enter_call())
+        return failed(on_error, here.line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) + " deep");
+      for (const argument& a : s.arguments) {
+        const evaluation v = evaluate(a.value, parameters_);
+        if (!v.ok()) return failed(on_error, here.line, v.error->message, v.error->where.column);
+        if (auto why = parameters_.assign(a.key, v.value)) return failed(on_error, here.line, *why);
+      }
+    } else if (calls_.size() >= parameter_store::max_call_depth) {
+      return failed(on_error, here.line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) + " deep");
+    }
+    calls_.push_back({at, here.next, start, *count, s.ends, s.call_frame, loops_.size()});
+    call_lines_.push_back(here.line.number);
+    return start;
+  }
+
+  /// The running pass of the innermost call is over: run it again or go back to the caller.
+  position finish_pass() {
+    open_call& c = calls_.back();
+    loops_.resize(c.loops_open);
+    if (--c.passes_left > 0) return c.start;
+    const position back = c.back;
+    if (c.frame) parameters_.leave_call();
+    calls_.pop_back();
+    call_lines_.pop_back();
+    return back;
+  }
+
+  /// The first statement from `from` on of one of `kinds` that pairs with an opening statement
+  /// of key `key`: the same key when it has one; else at the same nesting, where statements of
+  /// kind `opens` and `closes` without a key nest.
+  template <class Syntax>
+  std::optional<position> find_pair(Syntax& syntax, position from, const std::string& key,
+                                    std::initializer_list<statement_kind> kinds, statement_kind opens,
+                                    statement_kind closes) {
+    int depth = 0;
+    for (position p = from; p.offset < text_.size();) {
+      const line_at l = line_of(p);
+      const statement s = syntax.statement_of(l.line);
+      const bool wanted = std::find(kinds.begin(), kinds.end(), s.kind) != kinds.end();
+      if (!key.empty()) {
+        if (wanted && s.key == key) return p;
+      } else if (s.key.empty()) {
+        if (s.kind == opens) ++depth;
+        else if (wanted && depth == 0) return p;
+        else if (s.kind == closes) --depth;
+      }
+      p = l.next;
+    }
+    return std::nullopt;
+  }
+
+  template <class Syntax>
+  std::optional<position> find_end_of_subprogram(Syntax& syntax, position from, const std::string& key) {
+    for (position p = from; p.offset < text_.size();) {
+      const line_at l = line_of(p);
+      const statement s = syntax.statement_of(l.line);
+      if (s.kind == statement_kind::return_from_call && s.ends_subprogram && s.key == key) return p;
+      p = l.next;
+    }
+    return std::nullopt;
+  }
+
+  /// IF or ELSEIF: on into its lines when its condition holds; else to the next branch.
+  template <class Syntax, class OnError>
+  std::optional<position> branch(Syntax& syntax, const statement& s, const line_at& here, OnError& on_error) {
+    entering_else_if_ = false;
+    const auto taken = holds(s.condition, here.line, on_error);
+    if (!taken) return std::nullopt;
+    if (*taken) return here.next;
+    const auto next_branch = find_pair(syntax, here.next, s.key,
+                                       {statement_kind::else_if_branch, statement_kind::else_branch, statement_kind::end_if},
+                                       statement_kind::if_branch, statement_kind::end_if);
+    if (!next_branch) return failed(on_error, here.line, "IF without its end");
+    if (syntax.statement_of(line_of(*next_branch).line).kind == statement_kind::else_if_branch) {
+      entering_else_if_ = true;
+      return next_branch;
+    }
+    return after(*next_branch);
+  }
+
+  template <class Syntax, class OnError>
+  std::optional<position> skip_to_end_if(Syntax& syntax, const line_at& here, const std::string& key, OnError& on_error) {
+    const auto end = find_pair(syntax, here.next, key, {statement_kind::end_if}, statement_kind::if_branch,
+                               statement_kind::end_if);
+    if (!end) return failed(on_error, here.line, "ELSE without the end of its IF");
+    return after(*end);
+  }
+
+  template <class Syntax>
+  std::optional<position> loop_end_of(Syntax& syntax, open_loop& l) {
+    if (!l.end) l.end = find_pair(syntax, l.body, l.key, {statement_kind::loop_end}, statement_kind::loop_begin, statement_kind::loop_end);
+    return l.end;
+  }
+
+  template <class Syntax, class OnError>
+  std::optional<position> loop_top(Syntax& syntax, const statement& s, position at, const line_at& here, OnError& on_error) {
+    const bool again = in_loop() && loops_.back().begin.offset == at.offset;  // back at the top: test again
+    if (!again) {
+      if (loops_.size() >= limits_.max_open_loops)
+        return failed(on_error, here.line, "loops nested more than " + std::to_string(limits_.max_open_loops) + " deep");
+      std::uint64_t runs = 0;
+      if (s.loop == loop_kind::counted) {
+        const auto c = count_of(s, here.line, on_error);
+        if (!c) return std::nullopt;
+        runs = *c;
+      }
+      loops_.push_back({at, here.next, std::nullopt, s.key, s.loop, runs, calls_.size()});
+      if (s.loop == loop_kind::counted && runs == 0) return leave_loop(syntax, here.line, on_error);
+    }
+    if (s.loop != loop_kind::test_first) return here.next;
+    const auto go_on = holds(s.condition, here.line, on_error);
+    if (!go_on) return std::nullopt;
+    return *go_on ? std::optional<position>(here.next) : leave_loop(syntax, here.line, on_error);
+  }
+
+  template <class OnError>
+  std::optional<position> loop_bottom(const statement& s, position at, const line_at& here, OnError& on_error) {
+    if (!in_loop()) return failed(on_error, here.line, "the end of a loop that is not open");
+    open_loop& l = loops_.back();
+    l.end = at;
+    bool again = true;
+    switch (l.kind) {
+      case loop_kind::test_first: return l.begin;  // the test is at the top
+      case loop_kind::counted: again = --l.runs_left > 0; break;
+      case loop_kind::endless: break;
+      case loop_kind::test_last: {
+        const auto h = holds(s.condition, here.line, on_error);
+        if (!h) return std::nullopt;
+        again = *h != s.until;
+        break;
+      }
+    }
+    if (again) return l.body;
+    loops_.pop_back();
+    return here.next;
+  }
+
+  /// Closes the innermost loop and goes on after its end statement.
+  template <class Syntax, class OnError>
+  std::optional<position> leave_loop(Syntax& syntax, const text_line& line, OnError& on_error) {
+    const auto end = loop_end_of(syntax, loops_.back());
+    loops_.pop_back();
+    if (!end) return failed(on_error, line, "a loop without its end");
+    return after(*end);
+  }
+
+  /// A jump to `target` closes every loop of the running call that does not hold it.
+  template <class Syntax>
+  void leave_loops_for(Syntax& syntax, position target) {
+    while (in_loop()) {
+      open_loop& l = loops_.back();
+      const auto end = loop_end_of(syntax, l);
+      if (target.offset > l.begin.offset && end && target.offset <= end->offset) break;
+      loops_.pop_back();
+    }
+  }
+};
+
+}  // namespace kin5::program::interp

@@ -1,0 +1,102 @@
+/// @file program/interp/statement.hpp
+/// What one line of a program is to the executor (executor.hpp), whatever the dialect: an
+/// ordinary line (words for the dialect's reader, perhaps with parameter assignments before
+/// them) or a control statement — a label, a jump, a call, a return, a branch of an IF, the
+/// start or end of a loop — with the expressions it needs, already parsed, and its key.
+///
+/// Each dialect's syntax (`program/<dialect>/statements.hpp`) makes these from its spelling:
+/// | meaning | LinuxCNC | FANUC macro B | Heidenhain | Siemens |
+/// |---|---|---|---|---|
+/// | jump | — | `GOTO n`, `IF [c] GOTO n` | `FN 9`–`FN 12 … GOTO LBL` | `GOTOF`, `GOTOB`, `GOTO`, `IF c GOTOF` |
+/// | call | `o100 call [a]…` | `M98 P L`, `G65 P L` | `CALL LBL n` | — (another file) |
+/// | section repeat | — | — | `CALL LBL n REP m` | `REPEAT label P=n` |
+/// | return | `o100 endsub`, `return` | `M99` | `LBL 0` | `RET`, `M17` |
+/// | IF branches | `if`/`elseif`/`else`/`endif` | `IF [c] THEN` (one line) | — | `IF`/`ELSE`/`ENDIF` |
+/// | loops | `while`, `do`…`while`, `repeat` | `WHILE [c] DOm` … `ENDm` | — | `WHILE`, `REPEAT`…`UNTIL`, `LOOP`, `FOR` |
+/// Statements matched by a key (LinuxCNC's o-number, FANUC's `DOm`) pair with the statement of
+/// the same key; those without one nest (Siemens `IF` … `ENDIF`).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "expression.hpp"
+#include "parameter_store.hpp"
+
+namespace kin5::program::interp {
+
+enum class statement_kind : unsigned char {
+  ordinary,          ///< words for the dialect's reader (it may also define a label: FANUC `N100 G1 …`)
+  label,             ///< only a label (`LBL 1`, `O1000`, Siemens `MARK:` alone): does nothing
+  jump,              ///< to `target`, when `condition` holds (none: always)
+  call,              ///< runs the part from `target` `count` times, each until its end (`ends`), then goes on
+  subprogram,        ///< a subprogram's first line (`o100 sub`): the flow skips the body to its end
+  return_from_call,  ///< ends a pass of the innermost call (`M99`, `LBL 0`, `o100 endsub`, `o100 return`)
+  if_branch,         ///< IF `condition`: its lines run when it holds, else the next branch is tried
+  else_if_branch,    ///< ELSEIF `condition`
+  else_branch,       ///< ELSE
+  end_if,            ///< ENDIF
+  loop_begin,        ///< the first line of a loop (`loop`)
+  loop_end,          ///< its last line: goes back to the top, or on
+  loop_break,        ///< leaves the innermost loop
+  loop_continue,     ///< goes to the innermost loop's end statement
+};
+
+/// Where a jump or call looks for its label, from the line of the statement.
+enum class jump_direction : unsigned char {
+  forward,   ///< the nearest after (Siemens `GOTOF`)
+  backward,  ///< the nearest before (Siemens `GOTOB`)
+  either,    ///< the nearest after, else the nearest before (Siemens `GOTO`, FANUC `GOTO`, calls)
+};
+
+/// When a pass of a called part ends.
+enum class call_end : unsigned char {
+  return_statement,  ///< at a `return_from_call` (a subprogram)
+  calling_line,      ///< on reaching the calling statement again (a section repeat: `CALL LBL 1 REP 2`)
+};
+
+/// How a loop decides to run again.
+enum class loop_kind : unsigned char {
+  test_first,  ///< `condition` tested at the top, before each run (WHILE)
+  test_last,   ///< the end statement's `condition` tested after each run (`do … while`, `REPEAT … UNTIL`)
+  counted,     ///< `count` runs, evaluated once at the top (LinuxCNC `repeat [n]`)
+  endless,     ///< until a break or a jump out (Siemens `LOOP`)
+};
+
+/// `target = value`: the target is a parameter node (its number may be an expression: `#[#1+1]`).
+struct assignment {
+  expression target;
+  expression value;
+};
+
+/// A call's argument: parameter `key` of the called part, set to `value` when the call begins.
+struct argument {
+  parameter_key key;
+  expression value;
+};
+
+/// One line, as the executor sees it (see the file comment).
+struct statement {
+  statement_kind kind = statement_kind::ordinary;
+  /// The label this line defines ("1" for `LBL 1`, "O1000", "N100", "o100"), or empty. A call
+  /// starts after a line of kind `label` or `subprogram`, at any other line (which runs).
+  std::string label{};
+  std::string target{};                          ///< the label a jump or call goes to
+  jump_direction direction = jump_direction::either;
+  std::string key{};                             ///< pairs IF/loop/subprogram statements; empty: they nest
+  std::optional<expression> condition{};         ///< jump, IF branches, `test_first` begin, `test_last` end
+  std::optional<expression> count{};             ///< a call's passes, a counted loop's runs (none: 1)
+  loop_kind loop = loop_kind::test_first;        ///< on `loop_begin` (and `loop_end`, as its begin's)
+  bool until = false;                            ///< a `test_last` end runs again while the condition does *not* hold
+  call_end ends = call_end::return_statement;    ///< on `call`
+  bool call_frame = true;                        ///< on `call`: the called part has its own local parameters
+  bool ends_subprogram = false;                  ///< on `return_from_call`: the subprogram's last line (`endsub`)
+  /// The program ends after this line (M2, M30, END PGM; a return with no call open).
+  bool ends_program = false;
+  std::vector<assignment> assignments{};         ///< run in order before the line is read
+  std::vector<argument> arguments{};             ///< on `call`
+  std::optional<expression_error> error{};       ///< the line cannot be read as a statement: the run stops here
+};
+
+}  // namespace kin5::program::interp

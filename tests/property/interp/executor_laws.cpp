@@ -1,0 +1,204 @@
+// The executor (program/interp/executor.hpp) on a small statement language of this test's own,
+// so that control flow is tested apart from any dialect's spelling:
+//   P text        ordinary line (recorded)          E            ordinary, ends the program
+//   L name        label                             A #n = expr  assignment, then an ordinary line
+//   J name [expr] jump (when expr holds)            JF / JB      forward / backward only
+//   C name [n]    call, n passes, until R           S name n     section repeat (to this line)
+//   R             return                            SUB name / ENDSUB name   subprogram (keyed)
+//   I expr / EI expr / EL / EN          IF, ELSEIF, ELSE, ENDIF (nested by depth)
+//   W expr / EW   while loop   D / U expr   do … until   RP n / ER   counted   B / K   break / continue
+// Expressions are LinuxCNC's spelling; parameters LinuxCNC's rules.
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <kin5/program/interp/executor.hpp>
+#include <kin5/program/linuxcnc/expression.hpp>
+#include <kin5/program/linuxcnc/parameter_rules.hpp>
+
+namespace {
+
+namespace ip = kin5::program::interp;
+using kin5::program::text_line;
+
+struct toy_syntax {
+  std::size_t statements_read = 0;
+
+  static ip::expression expr(std::string_view text, const text_line& l, std::size_t column) {
+    auto p = kin5::program::parse_expression(kin5::program::linuxcnc::spelling, text, l.number, column);
+    return std::move(p.tree);
+  }
+
+  ip::statement statement_of(const text_line& l) {
+    ++statements_read;
+    ip::statement s;
+    const std::string_view t = l.text;
+    const std::size_t sp = t.find(' ');
+    const std::string_view op = t.substr(0, sp);
+    const std::string_view rest = sp == std::string_view::npos ? std::string_view{} : t.substr(sp + 1);
+    const std::size_t rest_column = sp + 2;
+    const auto word = [&](std::size_t i) {  // the i-th blank-separated word of rest
+      std::size_t b = 0;
+      for (std::size_t k = 0; k < i; ++k) b = rest.find(' ', b) + 1;
+      return std::string(rest.substr(b, rest.find(' ', b) - b));
+    };
+    const auto after_word = [&](std::size_t i) {  // rest after the first i words, its column
+      std::size_t b = 0;
+      for (std::size_t k = 0; k < i; ++k) {
+        b = rest.find(' ', b);
+        if (b == std::string_view::npos) return std::pair{std::string_view{}, std::size_t{0}};
+        ++b;
+      }
+      return std::pair{rest.substr(b), rest_column + b};
+    };
+    using K = ip::statement_kind;
+    if (op == "P") return s;
+    if (op == "E") s.ends_program = true;
+    else if (op == "L") s.kind = K::label, s.label = word(0);
+    else if (op == "J" || op == "JF" || op == "JB") {
+      s.kind = K::jump;
+      s.target = word(0);
+      s.direction = op == "JF" ? ip::jump_direction::forward : op == "JB" ? ip::jump_direction::backward : ip::jump_direction::either;
+      if (auto [c, col] = after_word(1); !c.empty()) s.condition = expr(c, l, col);
+    } else if (op == "C" || op == "S") {
+      s.kind = K::call;
+      s.target = word(0);
+      if (auto [c, col] = after_word(1); !c.empty()) s.count = expr(c, l, col);
+      if (op == "S") s.ends = ip::call_end::calling_line, s.call_frame = false;
+    } else if (op == "R") s.kind = K::return_from_call;
+    else if (op == "SUB") s.kind = K::subprogram, s.key = word(0), s.label = word(0);
+    else if (op == "ENDSUB") s.kind = K::return_from_call, s.key = word(0), s.ends_subprogram = true;
+    else if (op == "I") s.kind = K::if_branch, s.condition = expr(rest, l, rest_column);
+    else if (op == "EI") s.kind = K::else_if_branch, s.condition = expr(rest, l, rest_column);
+    else if (op == "EL") s.kind = K::else_branch;
+    else if (op == "EN") s.kind = K::end_if;
+    else if (op == "W") s.kind = K::loop_begin, s.condition = expr(rest, l, rest_column);
+    else if (op == "EW") s.kind = K::loop_end;
+    else if (op == "D") s.kind = K::loop_begin, s.loop = ip::loop_kind::test_last;
+    else if (op == "U") s.kind = K::loop_end, s.loop = ip::loop_kind::test_last, s.until = true, s.condition = expr(rest, l, rest_column);
+    else if (op == "RP") s.kind = K::loop_begin, s.loop = ip::loop_kind::counted, s.count = expr(rest, l, rest_column);
+    else if (op == "ER") s.kind = K::loop_end;
+    else if (op == "B") s.kind = K::loop_break;
+    else if (op == "K") s.kind = K::loop_continue;
+    else if (op == "A") {
+      const std::size_t eq = rest.find('=');
+      s.assignments.push_back({expr(rest.substr(0, eq - 1), l, rest_column), expr(rest.substr(eq + 2), l, rest_column + eq + 2)});
+    } else s.error = ip::expression_error{{l.number, 1, op.size()}, "unknown statement " + std::string(op)};
+    return s;
+  }
+};
+
+struct run_result {
+  std::vector<std::string> lines;  // the ordinary lines executed, in order
+  std::string error;               // "LINE:COL: message"
+  bool ok = true;
+};
+
+run_result run(const std::string& text, ip::execution_limits limits = {}) {
+  toy_syntax syntax;
+  ip::executor x{text, kin5::program::linuxcnc::parameter_rules(), limits};
+  run_result r;
+  r.ok = x.execute(
+      syntax, [&](const text_line& l, const ip::statement&) { r.lines.emplace_back(l.text); },
+      [&](const ip::flow_error& e) { r.error = std::to_string(e.line) + ":" + std::to_string(e.column) + ": " + e.message; });
+  return r;
+}
+
+std::vector<std::string> lines(std::initializer_list<const char*> l) { return {l.begin(), l.end()}; }
+
+}  // namespace
+
+TEST_CASE("executor: a program without control flow runs line by line", "[executor]") {
+  const auto r = run("P a\nP b\r\nP c");
+  CHECK(r.ok);
+  CHECK(r.lines == lines({"P a", "P b", "P c"}));
+}
+
+TEST_CASE("executor: jumps forward, backward, conditional, and a missing label", "[executor]") {
+  CHECK(run("P a\nJ end\nP skipped\nL end\nP b\n").lines == lines({"P a", "P b"}));
+  const auto loop = run("A #1 = 0\nL top\nA #1 = [#1+1]\nP x\nJ top [#1 LT 3]\nP done\n");
+  CHECK(loop.lines == lines({"A #1 = 0", "A #1 = [#1+1]", "P x", "A #1 = [#1+1]", "P x", "A #1 = [#1+1]", "P x", "P done"}));
+  // JF finds only a label after the jump; JB only one before; J the nearest after, else before.
+  CHECK(run("L x\nP 1\nJF x\nP 2\n").error == "3:1: jump to x: no such label after this line");
+  CHECK(run("A #1 = 1\nJB x [#1 EQ 1]\nL x\n").error == "2:1: jump to x: no such label before this line");
+  CHECK(run("L x\nA #1 = [#1+1]\nJ x [#1 LT 2]\nL x\nP end\n").lines == lines({"A #1 = [#1+1]", "P end"}));
+  CHECK(run("L x\nA #1 = [#1+1]\nJB x [#1 LT 2]\nL x\nP end\n").lines ==
+        lines({"A #1 = [#1+1]", "A #1 = [#1+1]", "P end"}));
+}
+
+TEST_CASE("executor: IF, ELSEIF, ELSE nest and take one branch", "[executor]") {
+  const std::string text =
+      "A #1 = 2\nI [#1 EQ 1]\nP one\nEI [#1 EQ 2]\nI [1]\nP two-inner\nEL\nP never\nEN\nP two\nEI [#1 EQ 2]\nP not-again\n"
+      "EL\nP else\nEN\nP after\n";
+  CHECK(run(text).lines == lines({"A #1 = 2", "P two-inner", "P two", "P after"}));
+  CHECK(run("I [0]\nP a\nEL\nP b\nEN\n").lines == lines({"P b"}));
+  CHECK(run("I [0]\nP a\nEI [0]\nP b\nEN\nP c\n").lines == lines({"P c"}));
+  CHECK(run("I [0]\nP a\n").error == "1:1: IF without its end");
+}
+
+TEST_CASE("executor: while, do-until, counted loops, break and continue", "[executor]") {
+  CHECK(run("A #1 = 0\nW [#1 LT 2]\nA #1 = [#1+1]\nEW\nP end\n").lines ==
+        lines({"A #1 = 0", "A #1 = [#1+1]", "A #1 = [#1+1]", "P end"}));
+  CHECK(run("W [0]\nP never\nEW\nP end\n").lines == lines({"P end"}));
+  CHECK(run("A #1 = 5\nD\nA #1 = [#1+1]\nU [#1 GT 2]\nP end\n").lines == lines({"A #1 = 5", "A #1 = [#1+1]", "P end"}));
+  CHECK(run("RP [3]\nP x\nER\n").lines == lines({"P x", "P x", "P x"}));
+  CHECK(run("RP [0]\nP x\nER\nP end\n").lines == lines({"P end"}));
+  CHECK(run("RP [2]\nRP [2]\nP x\nER\nP y\nER\n").lines == lines({"P x", "P x", "P y", "P x", "P x", "P y"}));
+  CHECK(run("A #1 = 0\nW [1]\nA #1 = [#1+1]\nI [#1 EQ 3]\nB\nEN\nP x\nEW\nP end\n").lines ==
+        lines({"A #1 = 0", "A #1 = [#1+1]", "P x", "A #1 = [#1+1]", "P x", "A #1 = [#1+1]", "P end"}));
+  CHECK(run("A #1 = 0\nW [#1 LT 3]\nA #1 = [#1+1]\nI [#1 EQ 2]\nK\nEN\nP x\nEW\n").lines ==
+        lines({"A #1 = 0", "A #1 = [#1+1]", "P x", "A #1 = [#1+1]", "A #1 = [#1+1]", "P x"}));
+  CHECK(run("B\n").error == "1:1: a loop break outside a loop");
+  CHECK(run("EW\n").error == "1:1: the end of a loop that is not open");
+}
+
+TEST_CASE("executor: a jump out of a loop closes it", "[executor]") {
+  // Without closing, the second W would be taken for the first one's test again.
+  CHECK(run("A #2 = 0\nL top\nA #2 = [#2+1]\nW [1]\nJ out\nEW\nL out\nJ top [#2 LT 3]\nP end\n").lines ==
+        lines({"A #2 = 0", "A #2 = [#2+1]", "A #2 = [#2+1]", "A #2 = [#2+1]", "P end"}));
+}
+
+TEST_CASE("executor: calls with passes, locals, returns, subprograms and section repeats", "[executor]") {
+  // A subprogram after the program's end, called twice with 2 passes.
+  CHECK(run("P a\nC sub [2]\nP b\nE\nL sub\nP in\nR\n").lines == lines({"P a", "P in", "P in", "P b", "E"}));
+  // Locals (#1–#30 in LinuxCNC) belong to the call; globals (#31 on) do not.
+  CHECK(run("A #1 = 7\nA #31 = 0\nC s\nP after\nE\nL s\nA #1 = 1\nA #31 = [#1+#31]\nR\n").ok);
+  {
+    toy_syntax syntax;
+    const std::string text = "A #1 = 7\nC s\nE\nL s\nA #1 = 1\nA #31 = 5\nR\n";
+    ip::executor x{text, kin5::program::linuxcnc::parameter_rules()};
+    CHECK(x.execute(syntax, [](const text_line&, const ip::statement&) {}, [](const ip::flow_error&) {}));
+    CHECK(x.parameters().read({"#", 1}).value == 7.0);
+    CHECK(x.parameters().read({"#", 31}).value == 5.0);
+  }
+  // A keyed subprogram in the flow is skipped; a call starts after its first line.
+  CHECK(run("SUB s\nP in\nENDSUB s\nP a\nC s\nP b\n").lines == lines({"P a", "P in", "P b"}));
+  // Section repeat: back to the label 2 more times, then on after the calling line.
+  CHECK(run("P a\nL rep\nP x\nS rep [2]\nP b\n").lines == lines({"P a", "P x", "P x", "P x", "P b"}));
+  CHECK(run("C nowhere\n").error == "1:1: call of nowhere: no such label in this file");
+  CHECK(run("R\n").error == "1:1: returns from a call, but no call is open");
+  CHECK(run("C s\nL s\nP x\n").error == "3:1: the text ends inside the call from line 1");
+  CHECK(run("L s\nC s\n").error == "2:1: calls nested more than 64 deep");
+}
+
+TEST_CASE("executor: bounds and errors stop the run at the statement", "[executor]") {
+  ip::execution_limits small;
+  small.max_executed_lines = 100;
+  CHECK(run("W [1]\nP x\nEW\n", small).error == "2:1: more than 100 lines executed: the loop at line 1 may never end "
+                                                "(--max-executed-lines raises the bound)");
+  CHECK(run("L a\nJ a\n", small).error.ends_with("a jump may repeat for ever (--max-executed-lines raises the bound)"));
+  CHECK(run("P a\nA #1 = [1/0]\nP never\n").error.starts_with("2:"));
+  CHECK(run("P a\nX\n").error == "2:1: unknown statement X");
+  CHECK(run("RP [1.5]\nER\n").error.find("is not a whole number") != std::string::npos);
+}
+
+TEST_CASE("executor: labels are indexed once, and only when needed", "[executor]") {
+  toy_syntax plain;
+  ip::executor a{std::string_view("P a\nP b\nP c\n"), kin5::program::linuxcnc::parameter_rules()};
+  a.execute(plain, [](const text_line&, const ip::statement&) {}, [](const ip::flow_error&) {});
+  CHECK(plain.statements_read == 3);
+}
