@@ -9,7 +9,10 @@
 //   W expr / EW   while loop   D / U expr   do … until   RP n / ER   counted   B / K   break / continue
 // Expressions are LinuxCNC's spelling; parameters LinuxCNC's rules.
 #include <cstddef>
+#include <map>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <string_view>
 #include <vector>
 
@@ -179,6 +182,9 @@ TEST_CASE("executor: calls with passes, locals, returns, subprograms and section
   CHECK(run("SUB s\nP in\nENDSUB s\nP a\nC s\nP b\n").lines == lines({"P a", "P in", "P b"}));
   // Section repeat: back to the label 2 more times, then on after the calling line.
   CHECK(run("P a\nL rep\nP x\nS rep [2]\nP b\n").lines == lines({"P a", "P x", "P x", "P x", "P b"}));
+  // A return inside a section repeat inside a subprogram leaves both.
+  CHECK(run("C s\nE\nL s\nL r\nP x\nA #31 = [#31+1]\nI [#31 EQ 2]\nR\nEN\nS r [3]\nP never\nR\n").lines ==
+        lines({"P x", "A #31 = [#31+1]", "P x", "A #31 = [#31+1]", "E"}));
   CHECK(run("C nowhere\n").error == "1:1: call of nowhere: no such label in this file");
   CHECK(run("R\n").error == "1:1: returns from a call, but no call is open");
   CHECK(run("C s\nL s\nP x\n").error == "3:1: the text ends inside the call from line 1");
@@ -201,4 +207,205 @@ TEST_CASE("executor: labels are indexed once, and only when needed", "[executor]
   ip::executor a{std::string_view("P a\nP b\nP c\n"), kin5::program::linuxcnc::parameter_rules()};
   a.execute(plain, [](const text_line&, const ip::statement&) {}, [](const ip::flow_error&) {});
   CHECK(plain.statements_read == 3);
+}
+
+// The law: a random structured program (nested IFs, while, do-until and counted loops with
+// breaks, calls of subprograms with passes, section repeats) runs to the same ordinary lines as
+// a direct recursive run of the tree it was printed from.
+namespace {
+
+struct node;
+using body = std::vector<node>;
+
+struct node {
+  enum class kind { print, assign, if_else, while_loop, do_until, counted, call, section, early_return } what = kind::print;
+  int a = 0, b = 0;     // print: id; assign: variable, value; if: variable, bound; loops: runs; call: sub, passes
+  bool has_break = false;
+  int counter = 0;      // a loop's counter: parameter #(40 + counter)
+  body then_body, else_body;
+};
+
+struct tree {
+  body main;
+  std::vector<body> subs;  // sub k calls only subs after it
+};
+
+rc::Gen<body> gen_body(int depth, int sub, int subs);
+
+rc::Gen<node> gen_node(int depth, int sub, int subs) {
+  using K = node::kind;
+  std::vector<rc::Gen<node>> choices{
+      rc::gen::map(rc::gen::inRange(0, 100), [](int id) { return node{K::print, id}; }),
+      rc::gen::map(rc::gen::pair(rc::gen::inRange(0, 3), rc::gen::inRange(0, 4)),
+                   [](std::pair<int, int> p) { return node{K::assign, p.first, p.second}; })};
+  if (depth < 3) {
+    choices.push_back(rc::gen::map(rc::gen::tuple(rc::gen::inRange(0, 3), rc::gen::inRange(0, 4), gen_body(depth + 1, sub, subs),
+                                                  gen_body(depth + 1, sub, subs)),
+                                   [](std::tuple<int, int, body, body> t) {
+                                     node n{K::if_else, std::get<0>(t), std::get<1>(t)};
+                                     n.then_body = std::get<2>(t);
+                                     n.else_body = std::get<3>(t);
+                                     return n;
+                                   }));
+    for (K k : {K::while_loop, K::do_until, K::counted, K::section})
+      choices.push_back(rc::gen::map(rc::gen::tuple(rc::gen::inRange(0, 3), rc::gen::arbitrary<bool>(), gen_body(depth + 1, sub, subs)),
+                                     [k](std::tuple<int, bool, body> t) {
+                                       node n{k, std::get<0>(t)};
+                                       n.has_break = k != K::section && std::get<1>(t);
+                                       n.then_body = std::get<2>(t);
+                                       return n;
+                                     }));
+  }
+  if (sub >= 0)  // in a subprogram: return when a parameter is below a bound
+    choices.push_back(rc::gen::map(rc::gen::pair(rc::gen::inRange(0, 3), rc::gen::inRange(0, 4)),
+                                   [](std::pair<int, int> p) { return node{K::early_return, p.first, p.second}; }));
+  if (sub + 1 < subs)
+    choices.push_back(rc::gen::map(rc::gen::pair(rc::gen::inRange(sub + 1, subs), rc::gen::inRange(0, 3)),
+                                   [](std::pair<int, int> p) { return node{K::call, p.first, p.second}; }));
+  return rc::gen::join(rc::gen::elementOf(choices));
+}
+
+rc::Gen<body> gen_body(int depth, int sub, int subs) {
+  return rc::gen::lazy([=] { return rc::gen::container<body>(rc::gen::resize(3, rc::gen::lazy([=] { return gen_node(depth, sub, subs); }))); });
+}
+
+// Gives each loop a counter of its own.
+void number_loops(body& b, int& next) {
+  for (node& n : b) {
+    if (n.what == node::kind::while_loop || n.what == node::kind::do_until || n.what == node::kind::counted) n.counter = next++;
+    number_loops(n.then_body, next);
+    number_loops(n.else_body, next);
+  }
+}
+
+// The printed program.
+struct printer {
+  std::string out;
+  int labels = 0;
+  void line(const std::string& s) { out += s + "\n"; }
+  void print(const body& b) {
+    for (const node& n : b) print(n);
+  }
+  void print(const node& n) {
+    using K = node::kind;
+    const std::string c = "#" + std::to_string(40 + n.counter);
+    switch (n.what) {
+      case K::print: line("P " + std::to_string(n.a)); break;
+      case K::assign: line("A #" + std::to_string(31 + n.a) + " = [" + std::to_string(n.b) + "]"); break;
+      case K::if_else:
+        line("I [#" + std::to_string(31 + n.a) + " LT " + std::to_string(n.b) + "]");
+        print(n.then_body);
+        line("EL");
+        print(n.else_body);
+        line("EN");
+        break;
+      case K::while_loop:
+      case K::do_until:
+      case K::counted: {
+        line("A " + c + " = 0");
+        line(n.what == K::while_loop ? "W [" + c + " LT " + std::to_string(n.a) + "]"
+                                     : n.what == K::do_until ? "D" : "RP [" + std::to_string(n.a) + "]");
+        line("A " + c + " = [" + c + "+1]");
+        if (n.has_break) line("I [" + c + " EQ 2]"), line("B"), line("EN");
+        print(n.then_body);
+        line(n.what == K::while_loop ? "EW" : n.what == K::do_until ? "U [" + c + " GE " + std::to_string(n.a) + "]" : "ER");
+        break;
+      }
+      case K::section: {
+        const std::string l = "s" + std::to_string(labels++);
+        line("L " + l);
+        print(n.then_body);
+        line("S " + l + " [" + std::to_string(n.a) + "]");
+        break;
+      }
+      case K::call: line("C sub" + std::to_string(n.a) + " [" + std::to_string(n.b) + "]"); break;
+      case K::early_return:
+        line("I [#" + std::to_string(31 + n.a) + " LT " + std::to_string(n.b) + "]");
+        line("R");
+        line("EN");
+        break;
+    }
+  }
+};
+
+// The direct run of the tree.
+struct model {
+  const tree& t;
+  std::map<int, double> p{};  // parameters by number
+  std::vector<std::string> out{};
+  bool returning = false;  // an early return is leaving the running subprogram
+
+  void run(const body& b) {
+    for (const node& n : b) {
+      run(n);
+      if (returning) return;
+    }
+  }
+  void run(const node& n) {
+    using K = node::kind;
+    const int c = 40 + n.counter;
+    const std::string cs = "#" + std::to_string(c);
+    switch (n.what) {
+      case K::print: out.push_back("P " + std::to_string(n.a)); break;
+      case K::assign:
+        p[31 + n.a] = n.b;
+        out.push_back("A #" + std::to_string(31 + n.a) + " = [" + std::to_string(n.b) + "]");
+        break;
+      case K::if_else: run(p[31 + n.a] < n.b ? n.then_body : n.else_body); break;
+      case K::while_loop:
+      case K::do_until:
+      case K::counted:
+        p[c] = 0;
+        out.push_back("A " + cs + " = 0");
+        for (int run_no = 0;; ++run_no) {
+          if (n.what == K::while_loop && !(p[c] < n.a)) break;
+          if (n.what == K::counted && run_no >= n.a) break;
+          p[c] += 1;
+          out.push_back("A " + cs + " = [" + cs + "+1]");
+          if (n.has_break && p[c] == 2) break;
+          run(n.then_body);
+          if (returning) return;
+          if (n.what == K::do_until && p[c] >= n.a) break;
+        }
+        break;
+      case K::section:
+        for (int pass = 0; pass <= n.a && !returning; ++pass) run(n.then_body);
+        break;
+      case K::call:
+        for (int pass = 0; pass < n.b; ++pass) {
+          run(t.subs[static_cast<std::size_t>(n.a)]);
+          returning = false;
+        }
+        break;
+      case K::early_return: returning = p[31 + n.a] < n.b; break;
+    }
+  }
+};
+
+}  // namespace
+
+TEST_CASE("executor law: structured programs run as their trees", "[executor][law]") {
+  rc::prop("the executed ordinary lines equal a direct run of the program's tree", [] {
+    const int subs = *rc::gen::inRange(0, 3);
+    tree t;
+    t.main = *gen_body(0, -1, subs);
+    for (int s = 0; s < subs; ++s) t.subs.push_back(*gen_body(1, s, subs));
+    int counters = 0;
+    number_loops(t.main, counters);
+    for (body& b : t.subs) number_loops(b, counters);
+    printer pr;
+    pr.print(t.main);
+    pr.line("E");
+    for (int s = 0; s < subs; ++s) {
+      pr.line("L sub" + std::to_string(s));
+      pr.print(t.subs[static_cast<std::size_t>(s)]);
+      pr.line("R");
+    }
+    model m{t};
+    m.run(t.main);
+    m.out.push_back("E");
+    const run_result r = run(pr.out);
+    RC_ASSERT(r.error.empty());
+    RC_ASSERT(r.lines == m.out);
+  });
 }

@@ -99,6 +99,7 @@ class executor {
           break;
         }
         case statement_kind::return_from_call:
+          while (!calls_.empty() && calls_.back().ends == call_end::calling_line) drop_call();  // section repeats end too
           if (calls_.empty()) {
             if (s.ends_program) return true;
             return fail(on_error, here.line, "returns from a call, but no call is open");
@@ -333,10 +334,16 @@ class executor {
     loops_.resize(c.loops_open);
     if (--c.passes_left > 0) return c.start;
     const position back = c.back;
-    if (c.frame) parameters_.leave_call();
+    drop_call();
+    return back;
+  }
+
+  /// Closes the innermost call, its loops and its local parameters.
+  void drop_call() {
+    loops_.resize(calls_.back().loops_open);
+    if (calls_.back().frame) parameters_.leave_call();
     calls_.pop_back();
     call_lines_.pop_back();
-    return back;
   }
 
   /// The first statement from `from` on of one of `kinds` that pairs with an opening statement

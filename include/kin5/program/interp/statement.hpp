@@ -32,7 +32,7 @@ enum class statement_kind : unsigned char {
   jump,              ///< to `target`, when `condition` holds (none: always)
   call,              ///< runs the part from `target` `count` times, each until its end (`ends`), then goes on
   subprogram,        ///< a subprogram's first line (`o100 sub`): the flow skips the body to its end
-  return_from_call,  ///< ends a pass of the innermost call (`M99`, `LBL 0`, `o100 endsub`, `o100 return`)
+  return_from_call,  ///< ends a pass of the innermost subprogram call, and the section repeats inside it (`M99`, `LBL 0`, `o100 endsub`, `o100 return`)
   if_branch,         ///< IF `condition`: its lines run when it holds, else the next branch is tried
   else_if_branch,    ///< ELSEIF `condition`
   else_branch,       ///< ELSE
