@@ -125,8 +125,8 @@ class executor {
           break;
       }
       if (!next) return false;
-      if (!calls_.empty() && calls_.back().ends == call_end::calling_line && next->offset == calls_.back().from.offset)
-        next = finish_pass();
+      while (!calls_.empty() && calls_.back().ends == call_end::calling_line && next->offset == calls_.back().from.offset)
+        next = finish_pass();  // back at the repeat's own line (which may end the repeat around it too)
       if (next->offset >= text_.size() && !calls_.empty())
         return fail(on_error, here.line,
                     "the text ends inside the call from line " + std::to_string(calls_.back().from.number));
@@ -312,6 +312,7 @@ class executor {
     const statement first = syntax.statement_of(line_of(*target).line);
     const position start =
         first.kind == statement_kind::label || first.kind == statement_kind::subprogram ? after(*target) : *target;
+    if (s.ends == call_end::calling_line && start.offset == at.offset) return here.next;  // an empty section
     if (s.call_frame) {
       if (!parameters_.enter_call())
         return failed(on_error, here.line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) + " deep");
