@@ -189,6 +189,7 @@ TEST_CASE("executor: calls with passes, locals, returns, subprograms and section
         lines({"P x", "A #31 = [#31+1]", "P x", "A #31 = [#31+1]", "E"}));
   CHECK(run("C nowhere\n").error == "1:1: call of nowhere: no such label in this file");
   CHECK(run("R\n").error == "1:1: returns from a call, but no call is open");
+  CHECK(run("L a\nP x\nR\nS a [1]\n").error == "3:1: returns from a call, but no call is open");  // a repeat is no call
   CHECK(run("C s\nL s\nP x\n").error == "3:1: the text ends inside the call from line 1");
   CHECK(run("L s\nC s\n").error == "2:1: calls nested more than 64 deep");
 }

@@ -99,11 +99,11 @@ class executor {
           break;
         }
         case statement_kind::return_from_call:
-          while (!calls_.empty() && calls_.back().ends == call_end::calling_line) drop_call();  // section repeats end too
-          if (calls_.empty()) {
+          if (!in_subprogram()) {
             if (s.ends_program) return true;
             return fail(on_error, here.line, "returns from a call, but no call is open");
           }
+          while (calls_.back().ends == call_end::calling_line) drop_call();  // the section repeats inside end too
           next = finish_pass();
           break;
         case statement_kind::if_branch: next = branch(syntax, s, here, on_error); break;
@@ -204,6 +204,11 @@ class executor {
   }
 
   bool in_loop() const { return !loops_.empty() && loops_.back().call_depth == calls_.size(); }
+
+  /// Whether a subprogram call is open (not only section repeats).
+  bool in_subprogram() const {
+    return std::any_of(calls_.begin(), calls_.end(), [](const open_call& c) { return c.ends == call_end::return_statement; });
+  }
 
   std::string limit_message() const {
     std::string m = "more than " + std::to_string(limits_.max_executed_lines) + " lines executed";
