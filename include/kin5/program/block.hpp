@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "../core/vec.hpp"
+#include "alarm_stop.hpp"
 #include "dialect_id.hpp"
 #include "printable.hpp"
 #include "resolution.hpp"
@@ -145,6 +146,8 @@ struct block {
   /// stop, as the text says them (state_words.hpp). Readers fill these instead of `m_codes` and
   /// `kept_words` for the words they map, so every such word has one meaning in every dialect.
   state_words state;
+  /// The program stops here with an alarm and its message (alarm_stop.hpp).
+  std::optional<alarm_stop> alarm;
 
   /// Whether the block moves any axis.
   bool moves() const { return !axes.empty(); }
