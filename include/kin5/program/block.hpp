@@ -164,6 +164,17 @@ struct block {
     return state.dwell_s && rest == block{};
   }
 
+  /// Whether the block is an alarm stop and says nothing else but its number: what every
+  /// dialect's reader gives (LinuxCNC's ABORT may share its line; it acts first).
+  bool only_alarm() const {
+    block rest = *this;
+    rest.where = {};
+    rest.text.clear();
+    rest.number.reset();
+    rest.alarm.reset();
+    return alarm && rest == block{};
+  }
+
   friend bool operator==(const block&, const block&) = default;
 };
 
