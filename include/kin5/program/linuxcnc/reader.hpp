@@ -96,6 +96,8 @@ class own_words {
 
   /// Named parameters `#<feed>` are read (User Manual, "G-code Overview", "Named Parameters").
   static constexpr bool named_parameters = true;
+  /// #3000 is one of the program's parameters (#31–#5000): no assignment stops the program.
+  static constexpr long alarm_parameter = 0;
 
   /// Why the program may not set named parameter `name` (`#<_x>`): the predefined ones, and
   /// `#<_ini[…]…>` and `#<_hal[…]>`, are read-only (User Manual, "Predefined Named Parameters",

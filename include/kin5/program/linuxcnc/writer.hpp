@@ -155,7 +155,7 @@ class writer {
       fail(b, "an alarm message with parentheses or a line break has no LinuxCNC form ((ABORT, …) ends at the first "
               "')'): remove them from the message");
     std::string line = b.number ? "N" + std::to_string(*b.number) + " " : std::string();
-    out += line + "(ABORT, " + message + ")\n";
+    out += line + (message.empty() ? "(ABORT,)\n" : "(ABORT, " + message + ")\n");
   }
 
   /// Work offset, G43 [H n] / G49: LinuxCNC Manual, "G-Codes", G54–G59.3 and G43, G49.
