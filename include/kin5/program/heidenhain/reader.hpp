@@ -7,9 +7,10 @@
 /// `TOOL DEF`, `PLANE RESET`, `TRANS … RESET`, Q assignments (parameters.hpp) and frame cycles
 /// whose values are the identity. `CYCL DEF 247 … Q339=n` selects preset n (`state.work_offset`);
 /// `CYCL DEF 9.0 DWELL TIME` (passed through) then `CYCL DEF 9.1 DWELL t` is a dwell (`state.dwell_s`).
+/// `FN 14: ERROR = n ;text` is an alarm stop (`alarm`: number n, the comment its message).
 /// Every other block is refused at its keyword, naming it: the
 /// cycles kin5 does not read (`CYCL DEF 200`, 32, …), `CYCL CALL`, `M99`/`M89`,
-/// `LBL`, `CALL LBL`/`CALL PGM`, `FN` functions, `M` blocks with other words (`M140 MB MAX`),
+/// `LBL`, `CALL LBL`/`CALL PGM`, other `FN` functions, `M` blocks with other words (`M140 MB MAX`),
 /// `TOOL CALL` forms it does not read, `FUNCTION TCPM` options other than `F TCP`, `AXIS POS`,
 /// `PATHCTRL AXIS`, unknown keywords; so are Q parameters that are not constants of the file,
 /// incremental `IX`… and active frame changes (`PLANE SPATIAL`…,
