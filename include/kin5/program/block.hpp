@@ -175,6 +175,13 @@ struct block {
     return alarm && rest == block{};
   }
 
+  /// Whether the block is an alarm stop with at most a comment besides its number.
+  bool only_alarm_and_comment() const {
+    block rest = *this;
+    rest.comment.reset();
+    return rest.only_alarm();
+  }
+
   friend bool operator==(const block&, const block&) = default;
 };
 

@@ -169,7 +169,7 @@ class writer {
     }
     if (b.alarm) {  // a line of its own, before the block's other words (the alarm acts first)
       alarm(out, b, file);
-      if (b.only_alarm()) return;
+      if (b.only_alarm_and_comment()) return;  // its comment on its line
     }
     if (b.state.dwell_s) return dwell(out, b, file);
     if (b.program_begin && same_) {
@@ -258,6 +258,12 @@ class writer {
     std::string call = "SETAL(" + std::to_string(a.number.value_or(detail::default_alarm_number));
     if (!a.message.empty()) call += ",\"" + a.message + "\"";
     detail::append_word(line, call + ")");
+    if (b.comment && b.only_alarm_and_comment()) {
+      std::string c = *b.comment;
+      std::replace(c.begin(), c.end(), '\n', ' ');
+      std::replace(c.begin(), c.end(), '\r', ' ');
+      line += " ;" + (c.empty() ? std::string() : " " + c);
+    }
     out += detail::checked_line(std::move(line), b, file) + '\n';
   }
 
