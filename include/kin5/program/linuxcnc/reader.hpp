@@ -35,8 +35,10 @@
 #include "../lexing.hpp"
 #include "../modal.hpp"
 #include "../transmission.hpp"
+#include "expression.hpp"
 #include "lexer.hpp"
-#include "predefined_parameters.hpp"
+#include "parameter_rules.hpp"
+#include "statements.hpp"
 #include "vocabulary.hpp"
 
 namespace kin5::program::linuxcnc::detail {
@@ -71,31 +73,17 @@ inline std::string g_name(int g) {
 /// length, whether tracking is on.
 class own_words {
  public:
-  /// Refuses a line that starts with an o-word, or whose active comment stops the program or runs
-  /// Python (lexer.hpp).
+  /// Refuses a line whose active comment stops the program or runs Python (lexer.hpp). A line
+  /// that starts with an o-word is a statement (statements.hpp), never read here.
   std::optional<lex_problem> line(std::string_view s, std::size_t first, std::size_t end) {
-    if (auto p = o_word(s, first, end)) return p;
     return stopping_comment(s, first, end);
   }
 
-  /// Why the program may not set parameter `#n`: #1–#5000 are the program's (#31–#5000 the
-  /// G-code user parameters), the rest the control's (probe results, G28/G30 homes, offsets).
-  static std::string unassignable(long n) {
-    if (n >= 1 && n <= last_program_parameter) return "";
-    return "setting parameter #" + std::to_string(n) + " is not supported: only #1-#5000 hold the program's own "
-           "values (the others are the control's: probe results, homes, offsets)";
-  }
-
-  /// Named parameters `#<feed>` are read (User Manual, "G-code Overview", "Named Parameters").
-  static constexpr bool named_parameters = true;
-
-  /// Why the program may not set named parameter `name` (`#<_x>`): the predefined ones, and
-  /// `#<_ini[…]…>` and `#<_hal[…]>`, are read-only (User Manual, "Predefined Named Parameters",
-  /// "HAL pins and INI values").
-  static std::string unassignable(const std::string& name) {
-    const bool read_only = is_predefined_parameter(std::string_view(name).substr(2, name.size() - 3));
-    if (!read_only) return "";
-    return "setting parameter " + name + " is not supported: LinuxCNC sets it (a read-only predefined parameter)";
+  using syntax = statements;
+  /// #1–#30 local to a call, #31–#5000 the program's, named ones (parameter_rules.hpp).
+  static interp::parameter_rules parameter_rules() { return linuxcnc::parameter_rules(); }
+  static parsed_expression read_value(std::string_view text, std::size_t line, std::size_t column) {
+    return linuxcnc::read_value(text, line, column);
   }
 
   /// No letter is ISO's whole address here: LinuxCNC rounds no parameter. A fraction in T, H, D
