@@ -134,6 +134,8 @@ class executor {
                     "the text ends inside the call from line " + std::to_string(calls_.back().from.number));
       at = *next;
     }
+    if (!loops_.empty())  // additive: a loop whose body runs into the end of the text has no end
+      return fail(on_error, line_of(loops_.back().begin).line, "a loop without its end");
     return true;
   }
 
