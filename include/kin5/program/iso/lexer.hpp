@@ -96,6 +96,9 @@ inline std::size_t address_word(std::string_view s, std::size_t i, std::size_t e
   }
   const parsed_number n = read_number(s.substr(k, end - k));
   if (n.error == number_error::too_large) problem = {w.column, "value out of range"};
+  else if (n.error != number_error::none && w.letter == 'O' && i == lexing::skip_blanks(s, 0))
+    problem = {w.column, "program number O without its digits (O1 … O9999): write the number, or put the text in a "
+                         "comment ( … )"};
   else if (n.error != number_error::none) problem = {w.column, std::string("word '") + w.letter + "' has no value"};
   if (problem) return end;
   if (k + n.length < end && s[k + n.length] == '.') {  // `1.2.3`

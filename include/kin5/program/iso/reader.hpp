@@ -45,6 +45,7 @@
 #include "../modal.hpp"
 #include "../number.hpp"
 #include "../parameters.hpp"
+#include "../read_limits.hpp"
 #include "../text.hpp"
 #include "../transmission.hpp"
 #include "../units.hpp"
@@ -62,10 +63,10 @@ class basic_reader {
       : file_(file), result_(result), on_block_(on_block) {}
 
   /// Runs the program `text` (see the file comment), its lines executed at most as `limits` says.
-  /// After the line that ends the program (M30, M2) the control stops; the lines after it are
-  /// read as written up to the first that is not an ordinary line or starts a program (`O1000`:
-  /// the subprograms of the file, run only where they are called), as a tape mark `%` after M30.
-  void run(std::string_view text, interp::execution_limits limits = {}) {
+  /// After the line that ends the program (M30, M2) the control stops; the tape marks `%` and
+  /// comments after it are read, up to the first other line (`O1000`, `N1000`: the subprograms
+  /// of the file, run only where they are called).
+  void run(std::string_view text, interp::execution_limits limits = {current_read_limits().max_executed_lines}) {
     interp::executor x{text, Own::parameter_rules(), limits};
     store_ = &x.parameters();
     call_lines_ = &x.call_lines();
@@ -90,11 +91,9 @@ class basic_reader {
         std::string_view s = text.substr(offset, (lf == std::string_view::npos ? text.size() : lf) - offset);
         if (const std::size_t cr = s.find('\r'); cr != std::string_view::npos) s = s.substr(0, cr);
         const text_line line{s, ++number};
-        const interp::statement st = syntax.statement_of(line);
-        if (st.kind != interp::statement_kind::ordinary || st.error || st.condition || !st.assignments.empty() ||
-            (!st.label.empty() && st.label[0] == 'O'))
-          break;
-        read_line(line, st);
+        const std::size_t first = lexing::skip_blanks(s, 0);
+        if (first < s.size() && s[first] != '%' && detail::only_comments(s, first, s.size())) break;
+        read_line(line, interp::statement{});
         offset = lf;
       }
     }

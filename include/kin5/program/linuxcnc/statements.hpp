@@ -12,7 +12,7 @@
 /// | `while [c]` … `endwhile` | a loop that tests first |
 /// | `do` … `while [c]` | a loop that tests last (a `while` with a `do` of its o-word before it) |
 /// | `repeat [n]` … `endrepeat` | a loop run n times |
-/// | `break`, `continue` | leave the loop, go to its end |
+/// | `break`, `continue` | leave the while or do loop of their o-word, go to its end (not a `repeat`'s: rs274 stops there) |
 /// Statements pair by their o-word. A value after `endsub` or `return` sets only `#<_value>`,
 /// which kin5 does not read (it is the control's): it is read and left. A call of a subroutine
 /// this file does not define is refused, naming it (LinuxCNC would search its subroutine path).
@@ -73,7 +73,7 @@ class statements {
 
  private:
   std::string_view text_;
-  mutable std::map<std::string, std::size_t> first_do_;  // per o-word: the offset of its first `do` line
+  mutable std::map<std::string, std::size_t> first_;  // per "o-word keyword": the offset of its first line
 
   /// The o-word at `i` ("o100", "o<probe>") and the offset after it; empty when none is there.
   static std::string key_at(std::string_view s, std::size_t& i, std::size_t end) {
@@ -82,8 +82,8 @@ class statements {
     if (k < end && s[k] == '<') {
       const std::size_t close = s.find('>', k);
       if (close == std::string_view::npos || close >= end) return {};
-      key += "<" + named_parameter(s.substr(k + 1, close - k - 1)) + ">";
-      if (key.size() == 3) return {};
+      key += named_parameter(s.substr(k + 1, close - k - 1)).substr(1);  // "<name>" of "#<name>"
+      if (key.size() <= 3) return {};
       i = close + 1;
       return key;
     }
@@ -103,23 +103,24 @@ class statements {
     return w;
   }
 
-  /// Whether the o-word `key` has a `do` line before offset `at` of the text (so that its
-  /// `while` ends that loop).
-  bool do_before(const std::string& key, std::size_t at) const {
-    auto it = first_do_.find(key);
-    if (it == first_do_.end()) {
+  /// The offset of the first line of o-word `key` with keyword `keyword` (`do`, `repeat`), or
+  /// none; each pair is searched once.
+  std::size_t first_line(const std::string& key, const std::string& keyword) const {
+    const std::string wanted = key + " " + keyword;
+    auto it = first_.find(wanted);
+    if (it == first_.end()) {
       std::size_t found = std::string_view::npos;
       for_each_line(text_, [&](const text_line& l) {
         if (found != std::string_view::npos) return;
         const std::string_view s = l.text;
         std::size_t i = iso::detail::after_block_number(s, lexing::skip_blanks(s, 0), s.size());
         if (i >= s.size() || (s[i] != 'o' && s[i] != 'O')) return;
-        if (key_at(s, i, s.size()) != key || keyword_at(s, i, s.size()) != "do") return;
+        if (key_at(s, i, s.size()) != key || keyword_at(s, i, s.size()) != keyword) return;
         found = static_cast<std::size_t>(s.data() - text_.data());
       });
-      it = first_do_.emplace(key, found).first;
+      it = first_.emplace(wanted, found).first;
     }
-    return it->second < at;
+    return it->second;
   }
 
   /// A bracketed value at `i` (`[#1 LT 3]`), read into `into`; the offset after it, or nothing
@@ -176,7 +177,8 @@ class statements {
     } else if (keyword == "endif") {
       out.kind = statement_kind::end_if;
     } else if (keyword == "while") {
-      const bool ends_do = do_before(key, static_cast<std::size_t>(s.data() - text_.data()));
+      const std::size_t do_at = first_line(key, "do");
+      const bool ends_do = do_at != std::string_view::npos && do_at < static_cast<std::size_t>(s.data() - text_.data());
       out.kind = ends_do ? statement_kind::loop_end : statement_kind::loop_begin;
       out.loop = ends_do ? interp::loop_kind::test_last : interp::loop_kind::test_first;
       after = bracketed(s, i, code, line.number, shown, out, out.condition);
@@ -189,10 +191,12 @@ class statements {
       after = bracketed(s, i, code, line.number, shown, out, out.count);
     } else if (keyword == "endrepeat") {
       out.kind = statement_kind::loop_end, out.loop = interp::loop_kind::counted;
-    } else if (keyword == "break") {
-      out.kind = statement_kind::loop_break;
-    } else if (keyword == "continue") {
-      out.kind = statement_kind::loop_continue;
+    } else if (keyword == "break" || keyword == "continue") {
+      out.kind = keyword == "break" ? statement_kind::loop_break : statement_kind::loop_continue;
+      if (first_line(key, "while") == std::string_view::npos && first_line(key, "do") == std::string_view::npos)
+        return iso::detail::failed(std::move(out), line.number, column,
+                                   shown + ": break and continue name a while or do loop of their o-word, and " + key +
+                                       " is none (LinuxCNC stops: \"no matching while/do label\")");
     } else {
       return iso::detail::failed(std::move(out), line.number, column,
                                  "unknown o-word '" + shown + "' (LinuxCNC User Manual, \"O Codes\": sub, endsub, "
