@@ -218,6 +218,9 @@ TEST_CASE("FANUC macro B: each construct, and what is refused", "[flow]") {
         "1:11: word 'X1.' in the block of M98: a subprogram call or return is read in a block of its own (write the "
         "word in a block before it)\n");
   CHECK(errors("M30\nO1\nM99 P10\n").empty());  // never reached
+  CHECK(errors("G65 P9 A1\nM30\nO9\nM99\n") ==
+        "1:8: G65 argument A1 without a decimal point: the control reads it in the least input increment of address "
+        "A (write A1.)\n");
   CHECK(errors("#1 = 1\nWHILE [#1 GT 0] DO1\nEND1\n") ==
         "2:1: more than 100000000 lines executed: the loop at line 2 may never end (--max-executed-lines raises the "
         "bound)\n" );

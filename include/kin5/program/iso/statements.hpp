@@ -102,7 +102,8 @@ inline std::optional<std::size_t> read_assignment(const expression_spelling& spe
 
 }  // namespace detail
 
-/// The G65 argument of letter `l` (argument specification I: A #1, B #2, C #3, I #4, J #5,
+/// The G65 argument of letter `l` (argument specification I; a value without a decimal point
+/// is in the address's least input increment, and is refused unless 0: A #1, B #2, C #3, I #4, J #5,
 /// K #6, D #7, E #8, F #9, H #11, M #13, Q #17, R #18, S #19, T #20, U #21, V #22, W #23,
 /// X #24, Y #25, Z #26), or 0 for a letter that is no argument (G, L, N, O, P).
 constexpr long argument_number(char l) {
@@ -317,6 +318,11 @@ class basic_macro_statements {
             return detail::failed(std::move(out), line, w.column,
                                   "G65: argument " + std::string(1, w.letter) + " given twice (argument specification "
                                   "II, I J K repeated, is not read)");
+        if (!w.computed && w.value != 0 && w.digits.find('.') == std::string_view::npos)
+          return detail::failed(std::move(out), line, w.column,
+                                "G65 argument " + std::string(w.text) + " without a decimal point: the control reads "
+                                "it in the least input increment of address " + std::string(1, w.letter) +
+                                " (write " + std::string(w.text) + ".)");
         interp::expression value;
         if (w.computed) value = std::move(values[*w.computed]);
         else value.root = value.number(w.value, {line, w.column + 1, w.digits.size()});

@@ -11,14 +11,16 @@
 /// | `G41`/`G42` (the loaded tool's radius), `G41 D n`/`G42 D n` (tool n's), `G40` | `state.radius_compensation`, `radius_register` |
 /// | `G54` … `G59`, `G59.1` … `G59.3` | `state.work_offset` 1 … 9 |
 /// | `G64 P… Q…`, `G91.1` | kept words (path blending tolerance, incremental arc centres: the default) |
-/// A parameter assigned a number stands for it, as in ISO (iso/reader.hpp): numbered (`#1 = 5000`)
-/// or named (`#<feed> = 5000`, `F#<feed>`; the name read in lower case without blanks). Setting a
-/// read-only predefined one (`#<_x>`) and expressions are refused.
+/// The lines run through the interpreter with LinuxCNC's statements (statements.hpp: o-words,
+/// parameter settings) and parameters (parameter_rules.hpp): numbered (`#1 = 5000`) or named
+/// (`#<feed> = [#1 * 2]`, `F#<feed>`; the name read in lower case without blanks), words whose
+/// value is a parameter or an expression evaluated as in ISO (iso/reader.hpp). Setting or reading
+/// a predefined one (`#<_x>`) is refused.
 /// Refused at the word: `M430`, `G12.1` with another type, a kinematics switch on a line with
 /// motion or M6, `G43.1`/`G43.2`, ISO codes LinuxCNC does not have (`G43.4`, `G43.5`, `G54.1`,
 /// `G50`), `(ABORT, …)` and `(PY, …)` as a line's last comment (lexer.hpp), splines `G5`–`G5.3`, `G90.1`, `M61`, `H` without G43, `D` without G41/G42, `G41.1`/`G42.1`, `G4`
 /// with axis words, without P, with a negative P or with other words (`G4 P1.5` alone is
-/// `state.dwell_s`), o-words (lexer.hpp); under tracking, a move while G43 does not hold the
+/// `state.dwell_s`); under tracking, a move while G43 does not hold the
 /// loaded tool's length (the point programmed would not be the tool tip).
 #pragma once
 
