@@ -122,7 +122,7 @@ constexpr long argument_number(char l) {
 template <bool Haas = false>
 class basic_macro_statements {
  public:
-  explicit basic_macro_statements(std::string_view = {}) {}
+  explicit basic_macro_statements(std::string_view text = {}) : text_(text) {}
 
   interp::statement statement_of(const text_line& line) const {
     interp::statement out;
@@ -130,7 +130,7 @@ class basic_macro_statements {
     const std::size_t end = s.size();
     std::optional<long> n;
     const std::size_t i = detail::after_block_number(s, lexing::skip_blanks(s, 0), end, &n);
-    if (n) out.label = "N" + std::to_string(*n);
+    if (n && labels_wanted_) out.label = block_label(*n, line);
     if (i >= end) return out;
     const char c = to_upper(s[i]);
     const std::size_t code = detail::code_end(s, end);
@@ -141,14 +141,39 @@ class basic_macro_statements {
       out.label = "O" + std::to_string(o);
       return out;
     }
-    if (keyword(s, i, code, "GOTO")) return go_to(std::move(out), s, i + 4, code, end, line.number, std::nullopt);
-    if (keyword(s, i, code, "IF")) return if_statement(std::move(out), s, i + 2, code, end, line.number);
+    if (keyword(s, i, code, "GOTO")) return go_to(std::move(out), s, i + 4, code, line, std::nullopt);
+    if (keyword(s, i, code, "IF")) return if_statement(std::move(out), s, i + 2, code, line);
     if (keyword(s, i, code, "WHILE")) return while_loop(std::move(out), s, i + 5, code, end, line.number);
     if (c == 'D' && i + 2 < code && to_upper(s[i + 1]) == 'O' && is_digit(lexing::skip_blanks(s.substr(0, code), i + 2) < code ? s[lexing::skip_blanks(s.substr(0, code), i + 2)] : 'x'))
       return loop_key(std::move(out), s, i + 2, code, end, line.number, interp::statement_kind::loop_begin, true);
     if (keyword(s, i, code, "END") && !keyword(s, i, code, "ENDM"))
       return loop_key(std::move(out), s, i + 3, code, end, line.number, interp::statement_kind::loop_end, false);
-    return calls(std::move(out), s, i, code, end, line.number);
+    return calls(std::move(out), s, i, code, line);
+  }
+
+  /// The label of block `N n` on `line`: the number and the program it is in (`N10@O3200`), as
+  /// a GOTO or M97 searches only the program it is in.
+  std::string block_label(long n, const text_line& line) const {
+    labels_wanted_ = true;
+    if (!programs_) {
+      programs_.emplace();
+      for_each_line(text_, [&](const text_line& l) {
+        const std::size_t i = detail::after_block_number(l.text, lexing::skip_blanks(l.text, 0), l.text.size());
+        if (i + 1 < l.text.size() && to_upper(l.text[i]) == 'O' && is_digit(l.text[i + 1])) {
+          long o = 0;
+          for (std::size_t k = i + 1; k < l.text.size() && is_digit(l.text[k]) && k - i <= 9; ++k) o = o * 10 + (l.text[k] - '0');
+          programs_->push_back({static_cast<std::size_t>(l.text.data() - text_.data()), o});
+        }
+      });
+    }
+    std::string label = "N" + std::to_string(n);
+    const char* at = line.text.data();
+    if (text_.empty() || at < text_.data() || at > text_.data() + text_.size()) return label;
+    const auto offset = static_cast<std::size_t>(at - text_.data());
+    std::optional<long> program;
+    for (const auto& [start, o] : *programs_)
+      if (start <= offset) program = o;
+    return program ? label + "@O" + std::to_string(*program) : label;
   }
 
   /// A flow error's message in this dialect's terms.
@@ -160,6 +185,11 @@ class basic_macro_statements {
   }
 
  private:
+  std::string_view text_;
+  /// Block labels are made once a GOTO or M97 needs them (before, none is searched for).
+  mutable bool labels_wanted_ = false;
+  mutable std::optional<std::vector<std::pair<std::size_t, long>>> programs_;  // the O lines: offset, number
+
   /// Whether keyword `w` (upper case) is at `i`, not run on into a letter.
   static bool keyword(std::string_view s, std::size_t i, std::size_t end, std::string_view w) {
     if (end - i < w.size()) return false;
@@ -198,19 +228,20 @@ class basic_macro_statements {
   }
 
   /// `GOTO n` from `i` (after the keyword), under `condition` when an IF gave one.
-  static interp::statement go_to(interp::statement out, std::string_view s, std::size_t i, std::size_t code,
-                                 std::size_t end, std::size_t line, std::optional<interp::expression> condition) {
+  interp::statement go_to(interp::statement out, std::string_view s, std::size_t i, std::size_t code,
+                          const text_line& line, std::optional<interp::expression> condition) const {
+    const std::size_t end = line.text.size();
     const std::size_t at = lexing::skip_blanks(s.substr(0, code), i);
     const auto n = number_at(s, i, code);
     if (!n)
-      return detail::failed(std::move(out), line, at + 1,
+      return detail::failed(std::move(out), line.number, at + 1,
                             at < code && (s[at] == '#' || s[at] == '[')
                                 ? "GOTO to a computed block number is not supported (write GOTO n)"
                                 : "GOTO needs the block number to go to (GOTO n)");
     out.kind = interp::statement_kind::jump;
-    out.target = "N" + std::to_string(*n);
+    out.target = block_label(*n, line);
     out.condition = std::move(condition);
-    return rest_is_comment(std::move(out), s, i, end, line, "GOTO n");
+    return rest_is_comment(std::move(out), s, i, end, line.number, "GOTO n");
   }
 
   /// The bracketed condition at `i`, into `into`; the offset after it, or nothing (error set).
@@ -229,13 +260,14 @@ class basic_macro_statements {
   }
 
   /// `IF [c] GOTO n` or `IF [c] THEN #i = e`.
-  static interp::statement if_statement(interp::statement out, std::string_view s, std::size_t i, std::size_t code,
-                                        std::size_t end, std::size_t line) {
+  interp::statement if_statement(interp::statement out, std::string_view s, std::size_t i, std::size_t code,
+                                 const text_line& text) const {
+    const std::size_t end = text.text.size(), line = text.number;
     std::optional<interp::expression> condition;
     const auto after = condition_at(s, i, code, line, "IF", out, condition);
     if (!after) return out;
     const std::size_t k = lexing::skip_blanks(s.substr(0, code), *after);
-    if (keyword(s, k, code, "GOTO")) return go_to(std::move(out), s, k + 4, code, end, line, std::move(condition));
+    if (keyword(s, k, code, "GOTO")) return go_to(std::move(out), s, k + 4, code, text, std::move(condition));
     if (keyword(s, k, code, "THEN")) {
       const std::size_t a = lexing::skip_blanks(s.substr(0, code), k + 4);
       if (a >= code || s[a] != '#')
@@ -271,8 +303,9 @@ class basic_macro_statements {
 
   /// A scan of the words for M98, M99, G65 (and Haas M97), M30 and M2: a call, a return, the
   /// program's end; any other line is ordinary.
-  static interp::statement calls(interp::statement out, std::string_view s, std::size_t i, std::size_t code,
-                                 std::size_t end, std::size_t line) {
+  interp::statement calls(interp::statement out, std::string_view s, std::size_t i, std::size_t code,
+                          const text_line& text) const {
+    const std::size_t end = text.text.size(), line = text.number;
     int found = 0;  // 98, 99, 97 (M) or 65 (G)
     for (std::size_t k = i; k < code; ++k) {
       if (s[k] == '(') {
@@ -358,7 +391,8 @@ class basic_macro_statements {
       number %= 10000;
     }
     out.kind = interp::statement_kind::call;
-    out.target = (found == 97 ? "N" : "O") + std::to_string(number);
+    labels_wanted_ = true;
+    out.target = found == 97 ? block_label(number, text) : "O" + std::to_string(number);
     out.call_frame = found == 65;
     out.ends_program = false;
     return out;
