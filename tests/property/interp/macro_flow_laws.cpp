@@ -201,6 +201,9 @@ TEST_CASE("FANUC macro B: each construct, and what is refused", "[flow]") {
         "0.000 0.000 0.000\n1.000 0.000 0.000\n2.000 0.000 0.000\n3.000 0.000 0.000\n");
   CHECK(moves("#1 = 0\nDO1\n#1 = #1 + 1\nIF [#1 GT 2] GOTO 20\nG1 Y#1\nEND1\nN20 G1 Z1.\n") ==
         "0.000 0.000 0.000\n0.000 1.000 0.000\n0.000 2.000 0.000\n0.000 2.000 1.000\n");
+  // a GOTO searches its own program: N10 of O5 is not the main program's
+  CHECK(moves("O1\n#1 = 0\nN10 #1 = #1 + 1\nG1 X#1\nIF [#1 LT 2] GOTO 10\nM98 P5\nM30\nO5\nN10 G1 Y1.\nM99\n") ==
+        "0.000 0.000 0.000\n1.000 0.000 0.000\n2.000 0.000 0.000\n2.000 1.000 0.000\n");
   CHECK(moves("M98 P21000\nM30\nO1000\n#100 = 1\nG1 X#100\nM99\n") ==  // P: 2 passes of O1000
         "0.000 0.000 0.000\n1.000 0.000 0.000\n1.000 0.000 0.000\n");
   CHECK(moves("G65 P9 L2 X3. Y4. Z-1.\nM30\nO9\nG1 X#24 Y#25 Z#26\nM99\n") ==
