@@ -95,6 +95,16 @@ case $name in
     # Into ISO the same selection is G54.1 P5, TCPC G43.4 H3, the dwell G4 X seconds.
     expect 0 - translate --from bc-trunnion --to bc-trunnion --to-dialect iso
     has '^N30 G54.1 P5$' '^N70 G0 G43.4 H3 X20\. ' '^N100 G93 .* F120\.$' '^N140 G4 X0.5$' '^N160 G49$' ;;
+  iso/slots_macro.nc)
+    expect 2 "6:5: error: G54: a work offset of iso" translate --from ac-trunnion --from-dialect iso --to dmu-80p
+    # executed: three slots 1.25 mm apart in depth (M98 in a WHILE loop), two holes by G65 with X Y Z
+    expect 0 - translate --from ac-trunnion --from-dialect iso --to dmu-80p --work-offset-map G54=1
+    has '^15 L X-30 Y-10 Z-1.25 B\+0 C\+0 F300$' '^22 L X\+30 Y-10 Z-2.5 B\+0 C\+0 F900$' \
+      '^27 L X-30 Y-10 Z-3.75 ' '^30 ;#100 = 3$' '^33 L X\+20 Y\+15 Z-2.5 B\+0 C\+0 F200$' '^36 L X-20 Y\+15 Z-2.5 ' \
+      '^38 L X-20 Y\+15 Z\+50 B\+0 C\+0 FMAX$'
+    # and back into ISO: the executed program, its assignments as the numbers they assigned
+    expect 0 - translate --from ac-trunnion --from-dialect iso --to ac-trunnion --to-dialect iso
+    has '^#102 = -2\.5$' '^N20 G1 X-30\. Y-10\. Z-3\.75 A0\. C0\. F300\.$' '^N20 G1 X-20\. Y15\. Z-2\.5 A0\. C0\. F200\.$' ;;
   iso/integers_refused.nc)
     expect 2 "8:4: error: X10 without a decimal point" \
       translate --from ac-trunnion --from-dialect iso --to dmu-80p --work-offset-map G54=1 ;;
@@ -119,8 +129,12 @@ case $name in
     expect 0 - translate --from xyzac-trt --to dmu-80p --work-offset-map G54=1
     has '^12 L X\+0 Y\+0 Z\+45 B\+0 C-105.004 FMAX$' '^13 L .* Z\+2 .* F300$' '^14 L X\+12 Y\+6 Z\+2 .* F1250$' \
       '^15 L X\+12 Y\+6 Z\+45 ' ;;
-  linuxcnc/oword_refused.ngc)
-    expect 2 "11:1: error: o-word control flow (o100 while) is not supported" translate --from xyzac-trt --to dmu-80p ;;
+  linuxcnc/oword_while.ngc)
+    expect 2 "4:1: error: G54: a work offset of linuxcnc" translate --from xyzac-trt --to dmu-80p
+    # executed: three passes, each 1 mm deeper; the loop's counter is a comment
+    expect 0 - translate --from xyzac-trt --to dmu-80p --work-offset-map G54=1
+    has '^11 L X\+0 Y\+0 Z-1 B\+0 C\+0 F300$' '^17 L X\+20 Y\+0 Z-2 B\+0 C\+0 F900$' '^21 L X\+0 Y\+0 Z-3 ' \
+      '^25 ;#1 = 3$' '^26 M129$' ;;
   linuxcnc/zero_feed_refused.ngc)
     expect 2 "12:1: error: feed move in inverse time (G93) without its own F" translate --from xyzac-trt --to dmu-80p --work-offset-map G54=1 ;;
   apt/blade_multax.cls)

@@ -42,6 +42,7 @@ read_result read(dialect d, std::string_view text, std::string file_name, const 
     refused.add_error(std::move(*broken));
     return refused;
   }
+  const read_limits_scope scope(limits);
   return visit_dialect<List>(
       d, [&]<class D>(std::type_identity<D>) { return read_whole(d, text, std::move(file_name), &D::read_blocks); },
       [] { return read_result{}; });
@@ -57,6 +58,7 @@ inline void read_blocks(dialect d, std::string_view text, const std::string& fil
     diagnostics.add_error(std::move(*broken));
     return;
   }
+  const read_limits_scope scope(limits);
   visit_dialect(
       d,
       [&]<class D>(std::type_identity<D>) {

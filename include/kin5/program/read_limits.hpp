@@ -4,12 +4,13 @@
 /// a single pass before any dialect's lexer runs, so that reading costs memory in proportion to
 /// the limits, not to whatever bytes arrive (`/dev/zero`, a line of 60 MiB). `program::read`
 /// and `read_blocks` (io.hpp) check them; the tool's options `--max-file-bytes`,
-/// `--max-line-bytes` and `--max-block-words` raise or lower them (docs/reliability.md gives the
-/// defaults' reasons).
+/// `--max-line-bytes`, `--max-block-words` and `--max-executed-lines` raise or lower them
+/// (docs/reliability.md gives the defaults' reasons).
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <optional>
 #include <string>
@@ -28,6 +29,34 @@ struct read_limits {
   /// Words of one line, counted as `starts_word` does (a block continued over several lines,
   /// Heidenhain `~` or APT `$`, is counted line by line).
   std::size_t max_block_words = 100'000;
+  /// Lines a program's interpreter executes in all, counting each pass of a loop or call again
+  /// (interp/executor.hpp): past it the program is taken to loop for ever and refused there.
+  std::uint64_t max_executed_lines = 100'000'000;
+};
+
+namespace detail {
+inline thread_local const read_limits* reading_limits = nullptr;
+}  // namespace detail
+
+/// The limits of the reading under way on this thread (`read_limits_scope`), or the defaults:
+/// for a reader whose entry point takes none (`max_executed_lines`, read where lines run).
+inline const read_limits& current_read_limits() {
+  static const read_limits defaults{};
+  return detail::reading_limits ? *detail::reading_limits : defaults;
+}
+
+/// Makes `limits` this thread's `current_read_limits()` while it lives.
+class read_limits_scope {
+ public:
+  explicit read_limits_scope(const read_limits& limits) : saved_(detail::reading_limits) {
+    detail::reading_limits = &limits;
+  }
+  ~read_limits_scope() { detail::reading_limits = saved_; }
+  read_limits_scope(const read_limits_scope&) = delete;
+  read_limits_scope& operator=(const read_limits_scope&) = delete;
+
+ private:
+  const read_limits* saved_;
 };
 
 /// Whether byte `c` after byte `previous` (a blank at the line's start) starts a word in the

@@ -2,6 +2,7 @@
 // so that control flow is tested apart from any dialect's spelling:
 //   P text        ordinary line (recorded)          E            ordinary, ends the program
 //   L name        label                             A #n = expr  assignment, then an ordinary line
+//   AI #n = expr IF cond   the assignment and its line only when cond holds (FANUC IF … THEN)
 //   J name [expr] jump (when expr holds)            JF / JB      forward / backward only
 //   C name [n]    call, n passes, until R           S name n     section repeat (to this line)
 //   R             return                            SUB name / ENDSUB name   subprogram (keyed)
@@ -87,7 +88,12 @@ struct toy_syntax {
     else if (op == "ER") s.kind = K::loop_end;
     else if (op == "B") s.kind = K::loop_break;
     else if (op == "K") s.kind = K::loop_continue;
-    else if (op == "A") {
+    else if (op == "AI") {
+      const std::size_t eq = rest.find('='), cond = rest.find(" IF ");
+      s.assignments.push_back({expr(rest.substr(0, eq - 1), l, rest_column),
+                               expr(rest.substr(eq + 2, cond - eq - 2), l, rest_column + eq + 2)});
+      s.condition = expr(rest.substr(cond + 4), l, rest_column + cond + 4);
+    } else if (op == "A") {
       const std::size_t eq = rest.find('=');
       s.assignments.push_back({expr(rest.substr(0, eq - 1), l, rest_column), expr(rest.substr(eq + 2), l, rest_column + eq + 2)});
     } else s.error = ip::expression_error{{l.number, 1, op.size()}, "unknown statement " + std::string(op)};
@@ -141,6 +147,14 @@ TEST_CASE("executor: IF, ELSEIF, ELSE nest and take one branch", "[executor]") {
   CHECK(run("I [0]\nP a\nEL\nP b\nEN\n").lines == lines({"P b"}));
   CHECK(run("I [0]\nP a\nEI [0]\nP b\nEN\nP c\n").lines == lines({"P c"}));
   CHECK(run("I [0]\nP a\n").error == "1:1: IF without its end");
+}
+
+TEST_CASE("executor: an ordinary line with a condition runs only when it holds", "[executor]") {
+  const auto r = run("A #1 = 1\nAI #2 = 5 IF [#1 EQ 1]\nAI #3 = 7 IF [#1 EQ 2]\nA #4 = [#2 + #3]\nJ ok [#4 EQ 5]\nP wrong\n"
+                     "L ok\nP end\n");
+  CHECK(r.ok);
+  CHECK(r.lines == lines({"A #1 = 1", "AI #2 = 5 IF [#1 EQ 1]", "A #4 = [#2 + #3]", "P end"}));
+  CHECK(run("AI #2 = 1 IF [1/0]\nP end\n").error == "1:15: division by zero");
 }
 
 TEST_CASE("executor: while, do-until, counted loops, break and continue", "[executor]") {
@@ -203,6 +217,7 @@ TEST_CASE("executor: bounds and errors stop the run at the statement", "[executo
   CHECK(run("P a\nA #1 = [1/0]\nP never\n").error.starts_with("2:"));
   CHECK(run("P a\nX\n").error == "2:1: unknown statement X");
   CHECK(run("RP [1.5]\nER\n").error.find("is not a whole number") != std::string::npos);
+  CHECK(run("P a\nW [1]\nP x\n").error == "2:1: a loop without its end");  // its body runs into the end
 }
 
 TEST_CASE("executor: labels are indexed once, and only when needed", "[executor]") {

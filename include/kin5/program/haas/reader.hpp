@@ -42,6 +42,9 @@ using iso::word;
 /// whole addresses and decimal points are ISO's (`iso::detail::no_own_words`).
 class own_words : public iso::detail::no_own_words {
  public:
+  /// FANUC macro statements with Haas's `M97 P n` and M98's whole P (iso/statements.hpp).
+  using syntax = iso::basic_macro_statements<true>;
+
   /// Reads and removes from `words` the Haas words; rewrites `G234` and `G154` as the ISO codes
   /// the ISO reader reads with their H and P (their text stays as written, for messages).
   template <class Error>

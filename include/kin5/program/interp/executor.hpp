@@ -81,9 +81,12 @@ class executor {
       if (++executed_ > limits_.max_executed_lines) return fail(on_error, here.line, limit_message());
       const statement s = syntax.statement_of(here.line);
       if (s.error) return fail(on_error, here.line, s.error->message, s.error->where.column);
-      if (!assign_all(s, here.line, on_error)) return false;
       std::optional<position> next = here.next;  // empty: stop after an error
-      switch (s.kind) {
+      // An ordinary line with a condition (FANUC `IF [c] THEN #1 = 5`) runs only when it holds.
+      const auto runs = s.kind == statement_kind::ordinary ? holds(s.condition, here.line, on_error) : std::optional<bool>(true);
+      if (!runs) return false;
+      if (*runs && !assign_all(s, here.line, on_error)) return false;
+      switch (*runs ? s.kind : statement_kind::label) {
         case statement_kind::ordinary:
           on_line(here.line, s);
           if (s.ends_program) return true;
@@ -132,6 +135,8 @@ class executor {
                     "the text ends inside the call from line " + std::to_string(calls_.back().from.number));
       at = *next;
     }
+    if (!loops_.empty())  // additive: a loop whose body runs into the end of the text has no end
+      return fail(on_error, line_of(loops_.back().begin).line, "a loop without its end");
     return true;
   }
 

@@ -11,7 +11,7 @@
 /// | call | `o100 call [a]…` | `M98 P L`, `G65 P L` | `CALL LBL n` | — (another file) |
 /// | section repeat | — | — | `CALL LBL n REP m` | `REPEAT label P=n` |
 /// | return | `o100 endsub`, `return` | `M99` | `LBL 0` | `RET`, `M17` |
-/// | IF branches | `if`/`elseif`/`else`/`endif` | `IF [c] THEN` (one line) | — | `IF`/`ELSE`/`ENDIF` |
+/// | IF branches | `if`/`elseif`/`else`/`endif` | `IF [c] THEN` (one line: an ordinary line's `condition`) | — | `IF`/`ELSE`/`ENDIF` |
 /// | loops | `while`, `do`…`while`, `repeat` | `WHILE [c] DOm` … `ENDm` | — | `WHILE`, `REPEAT`…`UNTIL`, `LOOP`, `FOR` |
 /// Statements matched by a key (LinuxCNC's o-number, FANUC's `DOm`) pair with the statement of
 /// the same key; those without one nest (Siemens `IF` … `ENDIF`).
@@ -85,7 +85,9 @@ struct statement {
   std::string target{};                          ///< the label a jump or call goes to
   jump_direction direction = jump_direction::either;
   std::string key{};                             ///< pairs IF/loop/subprogram statements; empty: they nest
-  std::optional<expression> condition{};         ///< jump, IF branches, `test_first` begin, `test_last` end
+  /// Jump, IF branches, `test_first` begin, `test_last` end; an ordinary line runs (its
+  /// assignments, its words) only when it holds (FANUC `IF [c] THEN #1 = 5`).
+  std::optional<expression> condition{};
   std::optional<expression> count{};             ///< a call's passes, a counted loop's runs (none: 1)
   loop_kind loop = loop_kind::test_first;        ///< on `loop_begin` (and `loop_end`, as its begin's)
   bool until = false;                            ///< a `test_last` end runs again while the condition does *not* hold

@@ -15,16 +15,22 @@
 /// (working plane, distance mode, radius compensation off), `G4 X2.` / `G4 P2000` into
 /// `state.dwell_s` (seconds; a block of its own). Harmless modal words (G05.1 Q1,
 /// D1, …) are kept as written; `%` lines pass through. Work offsets
-/// G54 … G59 and G54.1 P n are read into `state.work_offset` (work_offsets.hpp). A parameter
-/// assigned a number (`#1 = 5000`, a line of its own, passed through) stands for that number in
-/// the words that use it (`F#1`, `X-#1`: ../parameters.hpp); an expression, or a variable the
-/// control owns (`#5221`, a work offset), is refused where it is written.
+/// G54 … G59 and G54.1 P n are read into `state.work_offset` (work_offsets.hpp). The lines run
+/// through the interpreter (../interp/executor.hpp) with the dialect's statements (`Own::syntax`:
+/// statements.hpp): a parameter assignment (`#1 = 5000`, `#2 = [#1 * 2]`, a line of its own) is
+/// an `assignment` block, its text as written when it assigns a number, else the number it
+/// assigned (`#2 = 10000`); a word whose value is a parameter or an expression (`F#1`, `X-#1`,
+/// `Z[#2 / 4]`) takes the value the interpreter's parameters give it, written as the number
+/// assigned when it is one parameter assigned a number (`#1 = 5000.` makes `F#1` `F5000.`). A
+/// parameter without a value, or one the control owns (`#5221`, a work offset), is refused
+/// where it is written, naming it (the parameter rules: parameter_rules.hpp).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <deque>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -33,10 +39,13 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../interp/evaluate.hpp"
+#include "../interp/executor.hpp"
 #include "../lexing.hpp"
 #include "../modal.hpp"
 #include "../number.hpp"
 #include "../parameters.hpp"
+#include "../read_limits.hpp"
 #include "../text.hpp"
 #include "../transmission.hpp"
 #include "../units.hpp"
@@ -53,8 +62,43 @@ class basic_reader {
   basic_reader(const std::string& file, read_result& result, const block_sink& on_block)
       : file_(file), result_(result), on_block_(on_block) {}
 
-  void run(std::string_view text) {
-    for_each_line(text, [&](const text_line& line) { read_line(line); });
+  /// Runs the program `text` (see the file comment), its lines executed at most as `limits` says.
+  /// After the line that ends the program (M30, M2) the control stops; the tape marks `%` and
+  /// comments after it are read, up to the first other line (`O1000`, `N1000`: the subprograms
+  /// of the file, run only where they are called).
+  void run(std::string_view text, interp::execution_limits limits = {current_read_limits().max_executed_lines}) {
+    interp::executor x{text, Own::parameter_rules(), limits};
+    store_ = &x.parameters();
+    call_lines_ = &x.call_lines();
+    typename Own::syntax syntax{text};
+    std::optional<text_line> ended;
+    const bool ran = x.execute(
+        syntax,
+        [&](const text_line& line, const interp::statement& s) {
+          read_line(line, s);
+          if (s.ends_program) ended = line;
+        },
+        [&](const interp::flow_error& e) {
+          line_ = e.line;
+          error(e.column, syntax.explain(e.message));
+        });
+    if (ran && ended && call_lines_->empty()) {
+      std::size_t offset = static_cast<std::size_t>(ended->text.data() - text.data()) + ended->text.size();
+      offset = text.find('\n', offset);
+      std::size_t number = ended->number;
+      while (offset != std::string_view::npos && ++offset < text.size()) {
+        const std::size_t lf = text.find('\n', offset);
+        std::string_view s = text.substr(offset, (lf == std::string_view::npos ? text.size() : lf) - offset);
+        if (const std::size_t cr = s.find('\r'); cr != std::string_view::npos) s = s.substr(0, cr);
+        const text_line line{s, ++number};
+        const std::size_t first = lexing::skip_blanks(s, 0);
+        if (first < s.size() && s[first] != '%' && detail::only_comments(s, first, s.size())) break;
+        read_line(line, interp::statement{});
+        offset = lf;
+      }
+    }
+    store_ = nullptr;
+    call_lines_ = nullptr;
   }
 
  private:
@@ -66,15 +110,18 @@ class basic_reader {
   bool failed_ = false;
   std::vector<word> words_;  // reused from line to line
   Own own_;
-  parameter_table parameters_{"#"};
-  std::deque<std::string> substituted_;  // the text of this line's words that use a parameter
+  interp::parameter_store* store_ = nullptr;               // the running program's parameters
+  const std::vector<std::size_t>* call_lines_ = nullptr;  // the running program's open calls
+  std::map<interp::parameter_key, parameter_literal> literals_;  // parameters last assigned a number, as written
+  std::vector<interp::expression> values_;                // the computed values of this line's words
+  std::deque<std::string> substituted_;                   // the text of this line's computed words
 
   void error(std::size_t column, std::string message) {
     result_.add_error({{file_, line_, column}, std::move(message)});
     failed_ = true;
   }
 
-  void read_line(const text_line& line) {
+  void read_line(const text_line& line, const interp::statement& statement) {
     const std::string_view s = line.text;
     const std::size_t first = lexing::skip_blanks(s, 0);
     if (first == s.size()) return;
@@ -85,6 +132,18 @@ class basic_reader {
     block b;
     b.where = {file_, line.number, first + 1};
     b.text = std::string(s.substr(first, end - first));
+    if (!statement.label.empty() && statement.label[0] == 'O' && !call_lines_->empty()) return;  // a called program's number
+    if (!statement.assignments.empty()) {
+      if (auto problem = own_.line(s, first, end)) error(problem->column, problem->message);  // LinuxCNC's (ABORT, …)
+      else assigned(statement, s, b);
+      on_block_(std::move(b));
+      return;
+    }
+    if constexpr (Own::alarm_parameter != 0)
+      if (alarm(s, first, end, b)) {
+        on_block_(std::move(b));
+        return;
+      }
     if (s[first] == '%') {  // a tape mark (FANUC B-64014EN/03 §2.5; LinuxCNC file delimiters)
       b.passthrough = true;
       b.framing = true;
@@ -92,20 +151,13 @@ class basic_reader {
       return;
     }
     words_.clear();
+    values_.clear();
     substituted_.clear();
     auto problem = own_.line(s, first, end);
-    if (!problem) {
-      if (const auto a = lex_assignment(s, first, end, problem, Own::named_parameters)) {
-        if (!problem) assign(*a, b);
-        if (problem) error(problem->column, problem->message), refuse(*a);
-        on_block_(std::move(b));
-        return;
-      }
-    }
-    if (!problem) problem = lex_line(s, first, end, words_, b.comment, Own::named_parameters);
+    if (!problem)
+      problem = lex_line(s, first, end, words_, b.comment, computed_values{&Own::read_value, line.number, &values_});
     if (!problem) problem = substitute();
-    if (problem && problem->message.empty()) failed_ = true;  // a parameter whose assignment was refused
-    else if (problem) error(problem->column, problem->message);
+    if (problem) error(problem->column, problem->message);
     const auto report = [this](std::size_t column, std::string message) { error(column, std::move(message)); };
     if (!failed_) own_.take(words_, b, report);
     if (!failed_) interpret(b);
@@ -113,58 +165,128 @@ class basic_reader {
     on_block_(std::move(b));
   }
 
-  /// `#n = number`, `#<name> = number`: recorded, and the line passed through (it moves nothing).
-  void assign(const parameter_assignment& a, block& b) {
-    if (Own::alarm_parameter != 0 && a.name.empty() && a.number == Own::alarm_parameter) return alarm(a, b);
-    const std::string why = a.name.empty() ? own_.unassignable(a.number) : own_.unassignable(a.name);
-    if (!why.empty()) {
-      refuse(a);
-      return error(a.column, why);
+  /// `#3000 = n (MESSAGE)` (after a block number): the program stops with alarm n and the
+  /// message of the line's comments (FANUC Custom Macro B, system variable #3000; Haas the same;
+  /// docs/dialects/iso.md). The syntax leaves it to this reader, not the executor (statements.hpp).
+  /// A number that is not whole, or outside 0 … 9999, is refused: which alarm a control then
+  /// gives is its own. False when the line is no such assignment.
+  bool alarm(std::string_view s, std::size_t first, std::size_t end, block& b) {
+    std::optional<long> number;
+    const std::size_t i = detail::after_block_number(s, first, end, &number);
+    static_assert(Own::alarm_parameter == 3000, "the alarm variable is #3000");
+    constexpr std::string_view name = "#3000";
+    if (s.substr(i, name.size()) != name || (i + name.size() < end && is_digit(s[i + name.size()])))
+      return false;
+    interp::statement st;
+    const auto after = detail::read_assignment(macro_spelling, true, s, i, detail::code_end(s, end), line_, st);
+    if (!after) {
+      error(st.error->where.column, st.error->message);
+      return true;
     }
-    if (a.name.empty()) parameters_.assign(a.number, a.literal, line_);
-    else parameters_.assign(a.name, a.literal, line_);
+    const interp::expression& value = st.assignments.back().value;
+    const interp::evaluation v = interp::evaluate(value, *store_);
+    if (!v.ok()) {
+      error(v.error->where.column, v.error->message);
+      return true;
+    }
+    if (!(v.value >= 0 && v.value <= 9999 && v.value == std::floor(v.value))) {
+      error(value.at(value.root).where.column, std::string(name) + " = " + written(v.value) +
+                                                   ": an alarm number is a whole number from 0 to 9999");
+      return true;
+    }
+    std::vector<word> others;
+    std::optional<std::string> comment;
+    if (auto p = lex_line(s, *after, end, others, comment)) error(p->column, p->message);
+    else if (!others.empty()) error(others.front().column, "a word after the alarm " + std::string(name) +
+                                                               ": the alarm takes its block alone");
+    b.alarm = alarm_stop{comment.value_or(""), static_cast<long long>(v.value)};
+    if (number) b.number = *number;
+    return true;
+  }
+
+  /// The number `value` as a word or an assignment writes it: 12 decimals at most.
+  static std::string written(double value) {
+    std::string out;
+    append_number(out, value, 12);
+    return out;
+  }
+
+  /// The text of number `root` of `e` (signed: `-2.5`) in line `s`, when the node is one.
+  static std::optional<std::string> literal_text(const interp::expression& e, interp::node_id root, std::string_view s) {
+    const interp::node* n = &e.at(root);
+    const std::size_t from = n->where.column;
+    if (n->kind == interp::node_kind::unary && (n->unary == interp::unary_op::negate || n->unary == interp::unary_op::plus))
+      n = &e.at(n->a);
+    if (n->kind != interp::node_kind::number || from == 0 || n->where.column + n->where.length - 1 > s.size()) return {};
+    return std::string(s.substr(from - 1, n->where.column + n->where.length - from));
+  }
+
+  /// A line of parameter assignments, run by the executor: an `assignment` block, its text as
+  /// written when each assigns a number to a parameter named by a number, else the numbers
+  /// assigned (`#3 = 10`), so that the program written reads back to the same values.
+  void assigned(const interp::statement& statement, std::string_view s, block& b) {
     b.passthrough = b.assignment = true;
+    bool as_written = !statement.condition;  // `IF [c] THEN #1 = 5`: the assignment made
+    std::string text;
+    for (const interp::assignment& a : statement.assignments) {
+      const interp::parameter_target t = interp::parameter_of(a.target, *store_);
+      if (!t.key) continue;  // the executor set it: not reached
+      const interp::parameter_read v = store_->read(*t.key);
+      if (!v.value) continue;
+      const interp::node& target = a.target.at(a.target.root);
+      if (target.kind == interp::node_kind::numbered_parameter && a.target.at(target.a).kind != interp::node_kind::number)
+        as_written = false;
+      const auto literal = literal_text(a.value, a.value.root, s);
+      if (literal) literals_[*t.key] = parameter_literal{*v.value, *literal};
+      else literals_.erase(*t.key), as_written = false;
+      if (!writable(*v.value))
+        return error(a.value.at(a.value.root).where.column,
+                     "parameter " + t.key->shown() + " is assigned a number no NC program can hold (magnitude above 1e9)");
+      text += (text.empty() ? "" : " ") + t.key->shown() + " = " + (literal ? *literal : written(*v.value));
+    }
+    if (!as_written) b.text = text;
   }
 
-  /// `#3000 = n (MESSAGE)`: the program stops with alarm n and the message of the line's
-  /// comments (FANUC custom macro, system variable #3000; docs/dialects/iso.md). A number that is
-  /// not whole, or outside 0 … 9999, is refused: which alarm a control then gives is its own.
-  void alarm(const parameter_assignment& a, block& b) {
-    const double n = a.literal->value;
-    if (!(n >= 0 && n <= 9999 && n == std::floor(n)))
-      return error(a.column, "#" + std::to_string(a.number) + " = " + a.literal->written +
-                                 ": an alarm number is a whole number from 0 to 9999");
-    b.alarm = alarm_stop{a.comment.value_or(""), static_cast<long long>(n)};
-    b.number = a.block_number;
+  /// The number a computed value `e` (= `value`) stands for as written: the number assigned to
+  /// the one parameter it is (negated: `X-#1`), or `value` written.
+  std::string written_as(const interp::expression& e, double value) const {
+    const interp::node& root = e.at(e.root);
+    const bool negated = root.kind == interp::node_kind::unary && root.unary == interp::unary_op::negate;
+    const interp::node_id p = negated ? root.a : e.root;
+    const interp::node_kind k = e.at(p).kind;
+    if (k == interp::node_kind::numbered_parameter || k == interp::node_kind::named_parameter) {
+      const interp::parameter_target t = interp::parameter_of(detail::rooted(e, p), *store_);
+      if (t.key)
+        if (const auto it = literals_.find(*t.key); it != literals_.end()) {
+          const parameter_literal n = negated ? it->second.negated() : it->second;
+          if (n.value == value) return n.written;
+        }
+    }
+    return written(value);
   }
 
-  void refuse(const parameter_assignment& a) {
-    if (a.name.empty()) parameters_.refuse(a.number, line_);
-    else parameters_.refuse(a.name, line_);
-  }
-
-  /// Each word that uses a parameter takes its number, as if written there; the first parameter
-  /// without one is the problem that stops the line (with no message when its assignment was
-  /// refused: that error stands for both).
+  /// Each word whose value is computed (`X#1`, `Z[#2 / 4]`) takes it, as if written there; the
+  /// first that has none (an unassigned parameter, a division by zero) is the problem that
+  /// stops the line.
   std::optional<lex_problem> substitute() {
     for (word& w : words_) {
-      if (!w.parameter && w.parameter_name.empty()) continue;
-      std::string why;
-      const parameter_literal* v = w.parameter ? parameters_.value(*w.parameter, why)
-                                               : parameters_.value(named_parameter(w.parameter_name), why);
-      if (!v) return lex_problem{w.column, why};
-      parameter_literal n = w.parameter_negated ? v->negated() : *v;
-      if (Own::whole_address(w.letter) && std::floor(n.value) != n.value) {  // the control rounds it
-        n.value = std::round(n.value);
-        n.written = format_number(n.value, 0);
+      if (!w.computed) continue;
+      const interp::expression& e = values_[*w.computed];
+      const interp::evaluation v = interp::evaluate(e, *store_);
+      if (!v.ok()) return lex_problem{v.error->where.column, v.error->message};
+      double value = v.value;
+      if (!writable(value)) return lex_problem{w.column, "value out of range"};
+      std::string n = written_as(e, value);
+      if (Own::whole_address(w.letter) && std::floor(value) != value) {  // the control rounds it
+        value = std::round(value);
+        n = format_number(value, 0);
       }
-      substituted_.push_back(std::string(1, w.letter) + n.written);
-      w.value = n.value;
+      substituted_.push_back(std::string(1, w.letter) + n);
+      w.value = value;
       w.text = substituted_.back();
       w.digits = w.text.substr(1);
       w.substituted = true;
-      w.parameter.reset();
-      w.parameter_name = {};
+      w.computed.reset();
     }
     return std::nullopt;
   }

@@ -14,8 +14,11 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../interp/parameter_store.hpp"
+#include "expression.hpp"
 #include "lexer.hpp"
-#include "macro_variables.hpp"
+#include "parameter_rules.hpp"
+#include "statements.hpp"
 
 namespace kin5::program::iso::detail {
 
@@ -60,27 +63,25 @@ struct reader_state {
   bool startup_pending = false;     // G41/G42 said on a line without motion: the next move starts it up
 };
 
-/// The words a dialect built on this reader reads itself (LinuxCNC: program/linuxcnc/words.hpp).
+/// The words a dialect built on this reader reads itself (LinuxCNC: program/linuxcnc/reader.hpp).
 /// `line(s, first, end)` may refuse a line before it is lexed; `take(words, b, error)` reads and
 /// removes the words it owns before the rest get their ISO meaning; `check(b, error)` sees each
-/// block read without error. `error(column, message)` reports at a column of the line.
-/// `unassignable(n)` says why the program may not set parameter `#n` (empty: it may). ISO owns
-/// no words; its program may set the local and common variables #1–#33, #100–#199 and
-/// #500–#999 (FANUC Custom Macro B; #1000 and up are the control's system variables).
+/// block read without error. `error(column, message)` reports at a column of the line. `syntax`
+/// says what a line is to the interpreter (statements.hpp), `parameter_rules()` which
+/// parameters exist (parameter_rules.hpp: FANUC Custom Macro B's #1–#33, #100–#199, #500–#999;
+/// #1000 and up are the control's system variables), `read_value` reads a computed word value
+/// (expression.hpp). ISO owns no words.
 struct no_own_words {
-  /// Whether `#<name>` names a parameter (LinuxCNC); in ISO it is an expression, refused.
-  static constexpr bool named_parameters = false;
+  using syntax = macro_statements;
   /// The system variable whose assignment stops the program with an alarm, `#3000 = n (MESSAGE)`
   /// (FANUC Custom Macro B; Haas), read as an alarm stop; 0 for none (LinuxCNC's #3000 is a
   /// parameter like the others).
   static constexpr long alarm_parameter = 3000;
-  std::optional<lex_problem> line(std::string_view, std::size_t, std::size_t) { return std::nullopt; }
-  static std::string unassignable(const std::string&) { return ""; }
-  static std::string unassignable(long n) {
-    if (is_program_variable(n)) return "";
-    return "setting parameter #" + std::to_string(n) + " is not supported: only #1-#33, #100-#199 and #500-#999 "
-           "hold the program's own values (the others are the control's)";
+  static interp::parameter_rules parameter_rules() { return macro_parameter_rules(); }
+  static parsed_expression read_value(std::string_view text, std::size_t line, std::size_t column) {
+    return iso::read_value(text, line, column);
   }
+  std::optional<lex_problem> line(std::string_view, std::size_t, std::size_t) { return std::nullopt; }
   /// Whether letter `l` takes a whole number, so that the control rounds a parameter used there to
   /// the nearest one (`S#1` with `#1 = 1000.5` is S1001, `H#1` with `#1 = 1.4` is H1: FANUC
   /// Custom Macro B, "real versus integer values") and refuses a fraction written there

@@ -1,9 +1,8 @@
 /// @file program/linuxcnc/lexer.hpp
 /// The first stage of the LinuxCNC reader: ISO's lexer (iso/lexer.hpp: address words, `( … )`
-/// and `;` comments, `#` parameters and `[ … ]` expressions refused) after one check of
-/// LinuxCNC's own. A line that starts with an o-word (`o100 sub`, `o<probe> call`, `o101 while
-/// [#1 LT 3]`) is control flow, refused at the `o`, naming it (LinuxCNC User Manual, "O Codes");
-/// an `O` word elsewhere is the reader's to refuse.
+/// and `;` comments, computed values `#1`, `[ … ]`) after one check of LinuxCNC's own, the
+/// active comments. A line that starts with an o-word is a statement (statements.hpp), never
+/// lexed here; `o_word` names one, and an `O` word elsewhere is the reader's to refuse.
 #pragma once
 
 #include <cstddef>

@@ -11,15 +11,16 @@
 /// | `G41`/`G42` (the loaded tool's radius), `G41 D n`/`G42 D n` (tool n's), `G40` | `state.radius_compensation`, `radius_register` |
 /// | `G54` … `G59`, `G59.1` … `G59.3` | `state.work_offset` 1 … 9 |
 /// | `G64 P… Q…`, `G91.1` | kept words (path blending tolerance, incremental arc centres: the default) |
-/// | `(ABORT, message)` as the line's last comment | `alarm` with the message (no number); the line's other comments stay its comment |
-/// A parameter assigned a number stands for it, as in ISO (iso/reader.hpp): numbered (`#1 = 5000`)
-/// or named (`#<feed> = 5000`, `F#<feed>`; the name read in lower case without blanks). Setting a
-/// read-only predefined one (`#<_x>`) and expressions are refused.
+/// The lines run through the interpreter with LinuxCNC's statements (statements.hpp: o-words,
+/// parameter settings) and parameters (parameter_rules.hpp): numbered (`#1 = 5000`) or named
+/// (`#<feed> = [#1 * 2]`, `F#<feed>`; the name read in lower case without blanks), words whose
+/// value is a parameter or an expression evaluated as in ISO (iso/reader.hpp). Setting or reading
+/// a predefined one (`#<_x>`) is refused.
 /// Refused at the word: `M430`, `G12.1` with another type, a kinematics switch on a line with
 /// motion or M6, `G43.1`/`G43.2`, ISO codes LinuxCNC does not have (`G43.4`, `G43.5`, `G54.1`,
-/// `G50`), `(PY, …)` as a line's last comment and `(ABORT, …)` on a parameter assignment's line (lexer.hpp), splines `G5`–`G5.3`, `G90.1`, `M61`, `H` without G43, `D` without G41/G42, `G41.1`/`G42.1`, `G4`
+/// `G50`), `(ABORT, …)` and `(PY, …)` as a line's last comment (lexer.hpp), splines `G5`–`G5.3`, `G90.1`, `M61`, `H` without G43, `D` without G41/G42, `G41.1`/`G42.1`, `G4`
 /// with axis words, without P, with a negative P or with other words (`G4 P1.5` alone is
-/// `state.dwell_s`), o-words (lexer.hpp); under tracking, a move while G43 does not hold the
+/// `state.dwell_s`); under tracking, a move while G43 does not hold the
 /// loaded tool's length (the point programmed would not be the tool tip).
 #pragma once
 
@@ -36,8 +37,10 @@
 #include "../lexing.hpp"
 #include "../modal.hpp"
 #include "../transmission.hpp"
+#include "expression.hpp"
 #include "lexer.hpp"
-#include "predefined_parameters.hpp"
+#include "parameter_rules.hpp"
+#include "statements.hpp"
 #include "vocabulary.hpp"
 
 namespace kin5::program::linuxcnc::detail {
@@ -72,12 +75,12 @@ inline std::string g_name(int g) {
 /// length, whether tracking is on.
 class own_words {
  public:
-  /// Refuses a line that starts with an o-word, or whose active comment runs Python (lexer.hpp);
-  /// notes its abort, which `take` makes the block's alarm stop. An abort on a parameter
-  /// assignment's line is refused: kin5 reads that line as the assignment alone.
+  /// Refuses a line whose active comment runs Python (lexer.hpp); notes its abort, which `take`
+  /// makes the block's alarm stop. An abort on a parameter assignment's line is refused: kin5
+  /// reads that line as the assignment alone. A line that starts with an o-word is a statement
+  /// (statements.hpp), never read here.
   std::optional<lex_problem> line(std::string_view s, std::size_t first, std::size_t end) {
     abort_.reset();
-    if (auto p = o_word(s, first, end)) return p;
     if (auto p = stopping_comment(s, first, end)) return p;
     abort_ = abort_of(s, first, end);
     if (abort_ && assigns(s, first, end))
@@ -86,26 +89,14 @@ class own_words {
     return std::nullopt;
   }
 
-  /// Why the program may not set parameter `#n`: #1–#5000 are the program's (#31–#5000 the
-  /// G-code user parameters), the rest the control's (probe results, G28/G30 homes, offsets).
-  static std::string unassignable(long n) {
-    if (n >= 1 && n <= last_program_parameter) return "";
-    return "setting parameter #" + std::to_string(n) + " is not supported: only #1-#5000 hold the program's own "
-           "values (the others are the control's: probe results, homes, offsets)";
-  }
-
-  /// Named parameters `#<feed>` are read (User Manual, "G-code Overview", "Named Parameters").
-  static constexpr bool named_parameters = true;
   /// #3000 is one of the program's parameters (#31–#5000): no assignment stops the program.
   static constexpr long alarm_parameter = 0;
 
-  /// Why the program may not set named parameter `name` (`#<_x>`): the predefined ones, and
-  /// `#<_ini[…]…>` and `#<_hal[…]>`, are read-only (User Manual, "Predefined Named Parameters",
-  /// "HAL pins and INI values").
-  static std::string unassignable(const std::string& name) {
-    const bool read_only = is_predefined_parameter(std::string_view(name).substr(2, name.size() - 3));
-    if (!read_only) return "";
-    return "setting parameter " + name + " is not supported: LinuxCNC sets it (a read-only predefined parameter)";
+  using syntax = statements;
+  /// #1–#30 local to a call, #31–#5000 the program's, named ones (parameter_rules.hpp).
+  static interp::parameter_rules parameter_rules() { return linuxcnc::parameter_rules(); }
+  static parsed_expression read_value(std::string_view text, std::size_t line, std::size_t column) {
+    return linuxcnc::read_value(text, line, column);
   }
 
   /// No letter is ISO's whole address here: LinuxCNC rounds no parameter. A fraction in T, H, D

@@ -167,8 +167,8 @@ class writer {
   void own_words(const block& b, std::vector<std::string>& own, std::vector<std::string>& length) {
     if (const auto& w = b.state.work_offset) {
       if (w->family != work_offset_family::g54 || w->number < 1 || w->number > 9)
-        fail(b, "work offset " + spelling(*w) + " has no LinuxCNC form (G54 … G59.3; --work-offset-map names one)");
-      own.push_back(spelling(*w));
+        fail(b, "work offset " + kin5::program::spelling(*w) + " has no LinuxCNC form (G54 … G59.3; --work-offset-map names one)");
+      own.push_back(kin5::program::spelling(*w));
     }
     if (const auto& on = b.state.length_compensation) {
       length.push_back(*on ? "G43" : "G49");
