@@ -101,6 +101,7 @@ class executor {
         case statement_kind::return_from_call:
           if (calls_.empty()) {
             if (s.ends_program) return true;
+            if (s.only_in_call) break;
             return fail(on_error, here.line, "returns from a call, but no call is open");
           }
           next = finish_pass();
