@@ -5,11 +5,13 @@
 /// the limits, not to whatever bytes arrive (`/dev/zero`, a line of 60 MiB). `program::read`
 /// and `read_blocks` (io.hpp) check them; the tool's options `--max-file-bytes`,
 /// `--max-line-bytes` and `--max-block-words` raise or lower them (docs/reliability.md gives the
-/// defaults' reasons).
+/// defaults' reasons). `max_executed_lines` (`--max-executed-lines`) is the bound of a reader
+/// that runs the program (interp/executor.hpp), checked as it runs.
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <optional>
 #include <string>
@@ -28,6 +30,10 @@ struct read_limits {
   /// Words of one line, counted as `starts_word` does (a block continued over several lines,
   /// Heidenhain `~` or APT `$`, is counted line by line).
   std::size_t max_block_words = 100'000;
+  /// Lines a program may run, each counted again each time a loop, jump or call runs it again
+  /// (the interpreter's bound, `interp::execution_limits`): past it, the program is taken to
+  /// loop for ever. Real programs run a few million.
+  std::uint64_t max_executed_lines = 100'000'000;
 };
 
 /// Whether byte `c` after byte `previous` (a blank at the line's start) starts a word in the
