@@ -525,7 +525,8 @@ namespace kin5::program::heidenhain {
 /// repeats, FN 9–FN 12 jumps, assignments) and `on_block` receives each block it runs, in the order
 /// run, as soon as it is read; errors and warnings go to `out` (its `parsed` is not touched). The
 /// run ends at M2, M30 or END PGM; the blocks after that end which lie outside the subprograms
-/// (`LBL n` … `LBL 0`), `END PGM` for one, are read after it, in file order. `limits` bounds the
+/// (`LBL n` … `LBL 0`), `END PGM` for one, are read after it, in file order, with their
+/// assignments (a control never runs them: they are read as kin5 read them before it ran programs). `limits` bounds the
 /// lines run (`--max-executed-lines`).
 inline void read_blocks(std::string_view text, const std::string& file_path, read_result& out,
                         const block_sink& on_block, const interp::execution_limits& limits) {
@@ -584,7 +585,16 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
         const interp::statement s = syntax.statement_of(lines[li]);
         if (s.kind == interp::statement_kind::label && !s.label.empty()) in_subprogram = true;
         else if (s.kind == interp::statement_kind::return_from_call) in_subprogram = false;
-        else if (s.kind == interp::statement_kind::ordinary && !in_subprogram) li = read_block(li, false);
+        else if (s.kind == interp::statement_kind::ordinary && !in_subprogram) {
+          for (const interp::assignment& a : s.assignments) {  // in file order, as the blocks are read
+            const interp::evaluation v = interp::evaluate(a.value, run.parameters());
+            const interp::parameter_target t = interp::parameter_of(a.target, run.parameters());
+            std::optional<std::string> why = !v.ok() ? v.error->message : !t.key ? t.error->message : std::optional<std::string>{};
+            if (!why) why = run.parameters().assign(*t.key, v.value);
+            if (why) out.add_error({{file, li + 1, (!v.ok() ? v.error->where : a.target.at(a.target.root).where).column}, *why});
+          }
+          li = read_block(li, false);
+        }
       }
     }
     if (state.dwell_opened)
