@@ -199,7 +199,7 @@ TEST_CASE("heidenhain: a program that loops for ever stops at the bound on the l
                           interp::execution_limits{1000});
   REQUIRE(r.errors.size() == 1);
   CHECK(r.errors[0].to_string() ==
-        "t.h:1:1: error: more than 1000 lines executed: a jump may repeat for ever (--max-executed-lines raises the bound)");
+        "t.h:2:1: error: more than 1000 lines executed: a jump may repeat for ever (--max-executed-lines raises the bound)");
 }
 
 namespace {
