@@ -570,7 +570,7 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
           std::size_t column = e.column;
           if (e.line >= 1 && e.line <= lines.size()) {
             const std::string_view t = lines[e.line - 1].text;
-            if (column >= 1 && column <= t.size() && is_digit(t[column - 1])) {
+            if (column == lexing::skip_blanks(t, 0) + 1 && column <= t.size() && is_digit(t[column - 1])) {
               while (column <= t.size() && is_digit(t[column - 1])) ++column;
               column = lexing::skip_blanks(t, column - 1) + 1;
             }
