@@ -7,19 +7,22 @@
 /// `TOOL DEF`, `PLANE RESET`, `TRANS … RESET`, Q assignments (parameters.hpp) and frame cycles
 /// whose values are the identity. `CYCL DEF 247 … Q339=n` selects preset n (`state.work_offset`);
 /// `CYCL DEF 9.0 DWELL TIME` (passed through) then `CYCL DEF 9.1 DWELL t` is a dwell (`state.dwell_s`).
+/// Labels, calls, section repeats, FN 9–FN 12 jumps and the assignments' values are the
+/// executor's (`read_blocks`, statements.hpp): the reader sees the blocks it runs, and a word
+/// that uses a Q parameter reads its value then (motion.hpp).
 /// Every other block is refused at its keyword, naming it: the
 /// cycles kin5 does not read (`CYCL DEF 200`, 32, …), `CYCL CALL`, `M99`/`M89`,
-/// `LBL`, `CALL LBL`/`CALL PGM`, `FN` functions, `M` blocks with other words (`M140 MB MAX`),
-/// `TOOL CALL` forms it does not read, `FUNCTION TCPM` options other than `F TCP`, `AXIS POS`,
-/// `PATHCTRL AXIS`, unknown keywords; so are Q parameters that are not constants of the file,
+/// `CALL PGM` (another file), `FN` functions other than FN 0–FN 13, `M` blocks with other words
+/// (`M140 MB MAX`), `TOOL CALL` forms it does not read, `FUNCTION TCPM` options other than
+/// `F TCP`, `AXIS POS`, `PATHCTRL AXIS`, unknown keywords; so are Q parameters without a value,
 /// incremental `IX`… and active frame changes (`PLANE SPATIAL`…,
 /// `CYCL DEF 7/8/10/11/19/26`, `TRANS`). Block numbers are kept as written (repeated or missing
 /// is fine).
 #pragma once
 
 #include <charconv>
-#include <initializer_list>
 #include <cstddef>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -28,11 +31,11 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../interp/executor.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
 #include "../transmission.hpp"
-#include "../interp/executor.hpp"
 #include "lexer.hpp"
 #include "motion.hpp"
 #include "parameter_rules.hpp"
@@ -526,8 +529,8 @@ namespace kin5::program::heidenhain {
 /// run, as soon as it is read; errors and warnings go to `out` (its `parsed` is not touched). The
 /// run ends at M2, M30 or END PGM; the blocks after that end which lie outside the subprograms
 /// (`LBL n` … `LBL 0`), `END PGM` for one, are read after it, in file order, with their
-/// assignments (a control never runs them: they are read as kin5 read them before it ran programs). `limits` bounds the
-/// lines run (`--max-executed-lines`).
+/// assignments (a control never runs them; kin5 reads them as it did before it ran programs).
+/// `limits` bounds the lines run (`--max-executed-lines`).
 inline void read_blocks(std::string_view text, const std::string& file_path, read_result& out,
                         const block_sink& on_block, const interp::execution_limits& limits) {
   const file_name file(file_path);  // one string for every location in the file
