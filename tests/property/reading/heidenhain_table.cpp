@@ -148,9 +148,10 @@ namespace {
 // The blocks a program runs, without their text and place (a twin's lines stand elsewhere).
 std::vector<block> run_blocks(const std::string& text) {
   const read_result r = heidenhain::read(text, "t.h");
+  std::string errors;
+  for (const diagnostic& d : r.errors) errors += d.to_string() + "\n";
   INFO(text);
-  for (const diagnostic& d : r.errors) INFO(d.to_string());
-  CHECK(r.errors.empty());
+  CHECK(errors == "");
   std::vector<block> out = r.parsed.blocks;
   for (block& b : out) b.text.clear(), b.where = {}, b.comment.reset();
   return out;
