@@ -497,6 +497,20 @@ case "$name" in
       { report "default"; show err; }
     [ ! -e o.h ] || report "o.h written"
     ;;
+  executed-lines)
+    # A program that loops for ever (a Heidenhain jump back, always taken) stops at
+    # --max-executed-lines, at the statement that passes it, nothing written; one that repeats
+    # a section within the bound is translated, each pass written.
+    printf '0 BEGIN PGM LOOP MM\n1 TOOL CALL 1 Z S1000\n2 M128\n3 LBL 1\n4 L X+0 Y+0 Z+5 B+0 C+0 F500\n5 FN 9: IF +0 EQU +0 GOTO LBL 1\n6 END PGM LOOP MM\n' >loop.h
+    run 2 translate --from dmu-80p --to dmu-80p --max-executed-lines 1000 -o o.h loop.h
+    grep -q '^loop.h:5:3: error: more than 1000 lines executed: a jump may repeat for ever (--max-executed-lines raises the bound)' err ||
+      { report "loop"; show err; }
+    [ ! -e o.h ] || report "o.h written"
+    printf '0 BEGIN PGM REP MM\n1 TOOL CALL 1 Z S1000\n2 M128\n3 LBL 1\n4 L X+0 Y+0 Z+5 B+0 C+0 F500\n5 CALL LBL 1 REP 2\n6 M30\n7 END PGM REP MM\n' >rep.h
+    run 0 translate --from dmu-80p --to dmu-80p --max-executed-lines 1000 -o o.h rep.h
+    [ "$(grep -c ' L X+0 Y+0 Z+5 B+0 C+0' o.h)" = 3 ] || { report "three passes"; show o.h; }
+    run 1 translate --from dmu-80p --to dmu-80p --max-executed-lines 0 -o o.h rep.h
+    ;;
   *)
     echo "reliability.sh: unknown test '$name'" >&2
     exit 2

@@ -54,6 +54,14 @@ case $name in
       translate --from dmu-80p --to sajo-12000p --to-dialect iso
     expect 0 - translate --from dmu-80p --to sajo-12000p --to-dialect iso --tool-map MILL_D10=1 --tool-map BALL-R3=2
     has '^N5 F1200. S8000 T1 M6 ' '^N7 G43.4 H1$' '^N15 S14000 T2 M6 ' '^N17 G43.4 H2$' ;;
+  heidenhain/swarf_flow.h)
+    # Run as the TNC runs it: three passes of the section repeat, each 1.5 deeper, the corner
+    # subprogram in each, eight points of the FN 12 loop; no label or call is written.
+    expect 0 - translate --from dmu-80p --to ac-trunnion
+    has '^N16 G1 X-40 Y-40 Z-1\.5 .* F400$' '^N16 G1 X-40 Y-40 Z-3 .* F400$' '^N16 G1 X-40 Y-40 Z-4\.5 .* F400$' \
+      '^N40 G1 X-40 Y40 Z-4\.5 ' '^N27 G1 X10 Y-17\.321 Z-6 ' '^N27 G1 X-17\.321 Y10 Z-6 '
+    [ "$(grep -c '^N27 G1' written.out)" = 8 ] || report "not eight points"
+    grep -Eq 'LBL [0-9"]' written.out && report "a label or call written" ;;
   heidenhain/tilted_plane_refused.h)
     expect 2 "5:3: error: PLANE SPATIAL changes the working frame" translate --from dmu-80p --to sajo-12000p ;;
   siemens/impeller_traori.mpf)

@@ -62,7 +62,10 @@ inline void read_blocks(dialect d, std::string_view text, const std::string& fil
   visit_dialect(
       d,
       [&]<class D>(std::type_identity<D>) {
-        D::read_blocks(text, file_name, diagnostics, on_block);
+        if constexpr (requires { D::read_blocks(text, file_name, diagnostics, on_block, limits); })
+          D::read_blocks(text, file_name, diagnostics, on_block, limits);  // a reader that runs the program
+        else
+          D::read_blocks(text, file_name, diagnostics, on_block);
         return true;
       },
       [] { return false; });

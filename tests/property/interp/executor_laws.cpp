@@ -6,6 +6,7 @@
 //   J name [expr] jump (when expr holds)            JF / JB      forward / backward only
 //   C name [n]    call, n passes, until R           S name n     section repeat (to this line)
 //   R             return                            SUB name / ENDSUB name   subprogram (keyed)
+//   RC            return; nothing without a call
 //   I expr / EI expr / EL / EN          IF, ELSEIF, ELSE, ENDIF (nested by depth)
 //   W expr / EW   while loop   D / U expr   do … until   RP n / ER   counted   B / K   break / continue
 // Expressions are LinuxCNC's spelling; parameters LinuxCNC's rules.
@@ -74,6 +75,7 @@ struct toy_syntax {
       if (auto [c, col] = after_word(1); !c.empty()) s.count = expr(c, l, col);
       if (op == "S") s.ends = ip::call_end::calling_line, s.call_frame = false;
     } else if (op == "R") s.kind = K::return_from_call;
+    else if (op == "RC") s.kind = K::return_from_call, s.only_in_call = true;
     else if (op == "SUB") s.kind = K::subprogram, s.key = word(0), s.label = word(0);
     else if (op == "ENDSUB") s.kind = K::return_from_call, s.key = word(0), s.ends_subprogram = true;
     else if (op == "I") s.kind = K::if_branch, s.condition = expr(rest, l, rest_column);
@@ -436,4 +438,13 @@ TEST_CASE("executor law: structured programs run as their trees", "[executor][la
     RC_ASSERT(r.error.empty());
     RC_ASSERT(r.lines == m.out);
   });
+
+TEST_CASE("executor: a return that is only for calls does nothing in the program's flow", "[executor]") {
+  // Heidenhain: a subprogram before M30, run into without a call, runs once; its LBL 0 is passed.
+  const auto r = run("L s\nP a\nRC\nC s\nE\n");
+  CHECK(r.ok);
+  CHECK(r.lines == lines({"P a", "P a", "E"}));
+  const auto plain = run("L s\nP a\nR\nC s\nE\n");
+  CHECK_FALSE(plain.ok);
+  CHECK(plain.error == "3:1: returns from a call, but no call is open");
 }

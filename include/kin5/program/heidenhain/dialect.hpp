@@ -16,6 +16,7 @@
 
 #include "../block.hpp"
 #include "../dialect_id.hpp"
+#include "../read_limits.hpp"
 #include "reader.hpp"
 #include "writer.hpp"
 
@@ -24,7 +25,7 @@ namespace kin5::program::heidenhain {
 /// Reads a Heidenhain conversational program. Never throws on bad input: problems are in
 /// `errors` (and `warnings`), each at the offending word's line and column.
 inline read_result read(std::string_view text, std::string file_name) {
-  return read_whole(id_of<dialect>(), text, std::move(file_name), &read_blocks);
+  return read_whole(id_of<dialect>(), text, std::move(file_name), static_cast<block_reader>(&read_blocks));
 }
 
 /// The Heidenhain conversational dialect: its id, capabilities, file markers, reader and writer.
@@ -51,6 +52,11 @@ struct dialect {
   static void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
                           const block_sink& on_block) {
     heidenhain::read_blocks(text, file_name, diagnostics, on_block);
+  }
+  /// The same, running at most `limits.max_executed_lines` lines.
+  static void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
+                          const block_sink& on_block, const read_limits& limits) {
+    heidenhain::read_blocks(text, file_name, diagnostics, on_block, interp::execution_limits{limits.max_executed_lines});
   }
   static std::string write(const program& p, const write_options& options) { return heidenhain::write(p, options); }
 };

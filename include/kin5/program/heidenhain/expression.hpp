@@ -16,7 +16,9 @@
 /// `2^3^2` are refused: write brackets. Parameters: `Q`, `QL`, `QR` and a number (`QS` strings
 /// are not numbers). The FN forms (`read_assignment`): `FN 0: Q1 = a`, `FN 1: Q1 = a + b`,
 /// `FN 2: a - b`, `FN 3: a * b`, `FN 4: a DIV b`, `FN 5: Q1 = SQRT a`, `FN 6: SIN a`,
-/// `FN 7: COS a`, `FN 8: a LEN b` (√(a² + b²)), each operand a number or a parameter with its sign.
+/// `FN 7: COS a`, `FN 8: a LEN b` (√(a² + b²)), `FN 13: a ANG b` (the angle of the adjacent side a
+/// and the opposite side b, 0° ≤ angle < 360°; refused for a = b = 0), each operand a number or a
+/// parameter with its sign.
 #pragma once
 
 #include <cstddef>
@@ -72,7 +74,7 @@ struct q_assignment {
 };
 
 /// Reads statement `s` (block number removed; at `column` of `line`): `FN k: Qn = …` for k from
-/// 0 to 8, or a formula `Qn = …` (also QL, QR), up to the end of `s` or a `;` comment.
+/// 0 to 8 and 13, or a formula `Qn = …` (also QL, QR), up to the end of `s` or a `;` comment.
 inline q_assignment read_assignment(std::string_view s, std::size_t line = 1, std::size_t column = 1) {
   q_assignment out;
   std::size_t end = s.find(';');
@@ -133,7 +135,13 @@ inline q_assignment read_assignment(std::string_view s, std::size_t line = 1, st
           return p.tree().function(interp::function_kind::hypot, a, b, w);
         });
         break;
-      default: p.fail(target_at, target_at + 1, "FN " + std::to_string(fn) + " is not an arithmetic function (FN 0 to FN 8)");
+      case 13:  // the angle of the sides a (adjacent) and b (opposite): atan2(b, a) in [0°, 360°)
+        pair(0, "ANG", [&p](interp::node_id a, interp::node_id b, interp::span w) {
+          return p.tree().function(interp::function_kind::atan2_deg_0_360, b, a, w);
+        });
+        break;
+      default:
+        p.fail(target_at, target_at + 1, "FN " + std::to_string(fn) + " is not an arithmetic function (FN 0 to FN 8, FN 13)");
     }
   const std::size_t after = p.position();
   if (!p.failed() && after < text.size()) p.fail(after, text.size(), "unexpected '" + std::string(text.substr(after, 1)) + "'");

@@ -17,6 +17,7 @@
 
 #include "../block.hpp"
 #include "../dwell.hpp"
+#include "../interp/parameter_store.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
@@ -32,7 +33,8 @@ struct word {
   std::size_t pos = 0;            ///< offset of its first byte in the block's text
   bool bad = false;               ///< already reported
   bool expression = false;        ///< `X=…`, `X+Q1*2`: more than a parameter
-  std::optional<int> parameter;   ///< `FQ1`, `F Q1`, `X+Q1`, `X-Q1`: the value is (minus) Q`parameter`
+  /// `FQ1`, `F Q1`, `X+Q1`, `X-QL2`, `Y+QR3`: the value is (minus) this parameter's
+  std::optional<interp::parameter_key> parameter;
   bool parameter_negated = false; ///< `X-Q1`
   number_error error = number_error::none;
   std::string malformed;          ///< a number with a second point (`+1.2.3`), as written
@@ -208,18 +210,21 @@ class scanner {
   const std::string& s_;
   const std::string& up_;
 
-  /// A parameter reference `Q12`, `+Q12`, `-Q12` at `v` that ends the word: its end (0 if none).
+  /// A parameter reference `Q12`, `+QL12`, `-QR12` at `v` that ends the word: its end (0 if none).
   std::size_t parameter_at(word& w, std::size_t v) const {
     std::size_t q = v;
     const bool negated = q < s_.size() && s_[q] == '-';
     if (q < s_.size() && (s_[q] == '+' || s_[q] == '-')) ++q;
     if (q >= s_.size() || to_upper(s_[q]) != 'Q') return 0;
-    std::size_t e = q + 1;
+    std::string prefix = "Q";
+    std::size_t d = q + 1;
+    if (d < s_.size() && (to_upper(s_[d]) == 'L' || to_upper(s_[d]) == 'R')) prefix += to_upper(s_[d++]);
+    std::size_t e = d;
     while (e < s_.size() && is_digit(s_[e])) ++e;
-    if (e == q + 1 || e - q > 5 || (e < s_.size() && !is_space(s_[e]) && s_[e] != ';')) return 0;
-    int n = 0;
-    for (std::size_t d = q + 1; d < e; ++d) n = n * 10 + (s_[d] - '0');
-    w.parameter = n;
+    if (e == d || e - d > 4 || (e < s_.size() && !is_space(s_[e]) && s_[e] != ';')) return 0;
+    long n = 0;
+    for (std::size_t k = d; k < e; ++k) n = n * 10 + (s_[k] - '0');
+    w.parameter = interp::parameter_key{std::move(prefix), n};
     w.parameter_negated = negated;
     return e;
   }

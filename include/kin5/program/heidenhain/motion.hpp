@@ -18,16 +18,18 @@
 #include "../number.hpp"
 #include "../units.hpp"
 #include "lexer.hpp"
+#include "../interp/parameter_store.hpp"
 #include "parameters.hpp"
 
 namespace kin5::program::heidenhain::detail {
 
 /// What the reader carries from block to block: the last position (for CC's missing axes), the
-/// working plane, the last circle centre, the program's name and unit (for END PGM), the Q
-/// parameters.
+/// working plane, the last circle centre, the program's name and unit (for END PGM), and where
+/// the Q parameters' values are.
 struct reader_state {
   std::optional<double> last[3];
-  parameter_table q = q_parameters();
+  /// The running program's parameters, which words like `FQ1` and `X+Q2` read (the executor's).
+  const interp::parameter_store* parameters = nullptr;
   arc_plane plane = arc_plane::xy;
   std::optional<vec3> centre;
   cutter_side radius = cutter_side::off;  ///< RL/RR in effect (modal until R0)
@@ -57,10 +59,25 @@ class word_checks {
   void error(std::size_t pos, std::string message) { out_.add_error({t_.where(pos), std::move(message)}); }
   void warning(std::size_t pos, std::string message) { out_.add_warning({t_.where(pos), std::move(message)}); }
 
+  /// Gives word `w`, whose value is a parameter (`FQ1`, `X-QL2`), that parameter's value in
+  /// `parameters`; false, reported, when it has none.
+  bool resolve_parameter(word& w, const interp::parameter_store* parameters) {
+    const interp::parameter_read v = parameters ? parameters->read(*w.parameter)
+                                                : interp::parameter_read{std::nullopt, "parameter " + w.parameter->shown() +
+                                                                                           " is read outside a running program"};
+    if (!v.value) {
+      error(w.pos, v.why);
+      w.bad = true;
+      return false;
+    }
+    w.value = w.parameter_negated ? -*v.value : *v.value;
+    return true;
+  }
+
   /// Reports a word's number problem; true when the word is usable.
   bool value_ok(word& w) {
     if (w.bad) return false;
-    if (w.expression) error(w.pos, "expressions and parameters in axis words are not supported");
+    if (w.expression) error(w.pos, "an expression in an axis word is not supported (a TNC reads a number or a Q parameter: X+Q1)");
     else if (w.error == number_error::too_large) error(w.pos, "value out of range");
     else if (!w.malformed.empty()) error(w.pos, "malformed number '" + w.malformed + "'");
     else if (w.error != number_error::none) error(w.pos, "word '" + w.key + "' has a malformed value");
@@ -130,16 +147,9 @@ class motion_reader : public word_checks {
   char direction_ = 0;
   std::optional<double> axis_[6], tool_axis_[3];
 
-  /// A word whose value is a Q parameter (`FQ1`, `X-Q2`) takes the parameter's constant value.
+  /// A word whose value is a Q parameter (`FQ1`, `X-Q2`) takes the parameter's value now.
   bool resolve(word& w) {
-    std::string why;
-    const parameter_literal* v = state_.q.value(*w.parameter, why);
-    if (!v) {
-      error(w.pos, why);
-      w.bad = true;
-      return false;
-    }
-    w.value = w.parameter_negated ? -v->value : v->value;
+    if (!resolve_parameter(w, state_.parameters)) return false;
     w.parameter.reset();
     return true;
   }

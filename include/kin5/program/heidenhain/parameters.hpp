@@ -1,11 +1,10 @@
 /// @file program/heidenhain/parameters.hpp
-/// Q parameters used as constants: `FN 0: Q1=+1131` (or `Q1 = 1131`) assigns a literal, and a
-/// later word whose value is that parameter (`FQ1`, `F Q1`, `X+Q1`, `X-Q1`) reads as the literal.
-/// Refused at the word, naming why: a parameter assigned an expression or by another FN function
-/// (the line is named), one not assigned earlier in the file (its value is the machine's),
-/// Q100–Q199 (set by the control, e.g. Q120–Q122 by PLANE … STAY), and any parameter in a
-/// program with control flow (`LBL`, `CALL LBL`, `CALL PGM`, `FN 9`–`FN 12` jumps): its value
-/// would depend on the path taken. The table is the one every reader shares (../parameters.hpp).
+/// The Q-parameter lines as the reader sees them: `FN k:` heads, and assignments (`FN 0: Q1=+1131`,
+/// `Q1 = 5 * Q2`, `QL1 = …`, `QR1 = …`, `QS1 = …`), which pass through as written. Their values
+/// are the interpreter's: the executor runs each assignment (statements.hpp) before the line is
+/// read, and a word that uses a parameter (`FQ1`, `X+Q1`, `X-QL2`) reads its value from the
+/// running program's parameters (motion.hpp), or is refused naming why it has none (never
+/// assigned: its value is the machine's; Q100–Q199: set by the control).
 #pragma once
 
 #include <cstddef>
@@ -15,18 +14,9 @@
 #include <utility>
 
 #include "../lexing.hpp"
-#include "../number.hpp"
-#include "../parameters.hpp"
 #include "../text.hpp"
-#include "control_q.hpp"
 
 namespace kin5::program::heidenhain::detail {
-
-/// The Q parameters of a file: Q100-Q199 are the control's (e.g. Q120-Q122 set by PLANE … STAY).
-inline parameter_table q_parameters() {
-  return parameter_table(
-      "Q", {{first_control_q, last_control_q, "set by the control (Q100-Q199), not a constant of this file"}});
-}
 
 /// `s` (one statement, block number removed) after the keywords `FN <n>:` — the FN number and
 /// the position after the colon — if it starts with them.
@@ -50,38 +40,23 @@ inline std::string_view statement_of(std::string_view s) {
   return s.substr(lexing::skip_blanks(s, k));
 }
 
-/// The control-flow statement `line` starts with ("LBL", "CALL LBL", "FN 9", …), or "".
-inline std::string control_flow_of(std::string_view line) {
-  const std::string_view s = statement_of(line);
-  for (std::string_view kw : {"LBL", "CALL LBL", "CALL PGM", "PGM CALL", "CALL SELECTED", "SEL PGM"})
-    if (starts_with_keyword(s, kw) && (s.size() == kw.size() || !is_letter(s[kw.size()]))) return std::string(kw);
-  if (const auto fn = fn_head(s); fn && fn->first >= 9 && fn->first <= 12) return "FN " + std::to_string(fn->first);
-  return "";
-}
-
-/// Records an assignment to a Q parameter in statement `s` (block number removed) at `line`:
-/// `FN 0: Qn=number`, `Qn = number` (a literal), or any other `FN k: Qn=…` / `Qn = …` (computed).
-/// Returns whether `s` was an assignment.
-inline bool record_assignment(std::string_view s, std::size_t line, parameter_table& q) {
+/// Whether statement `s` (block number removed) assigns a parameter: `FN k: Qn=…` (k from 0 to 8
+/// or 13), `Qn = …`, `QLn = …`, `QRn = …`, or a string `QSn = …` (read by no word: a word that uses
+/// one is refused).
+inline bool is_assignment(std::string_view s) {
   std::size_t k = 0;
-  int fn = 0;
-  if (const auto head = fn_head(s)) fn = head->first, k = lexing::skip_blanks(s, head->second);
-  else if (!(starts_with_keyword(s, "Q") && s.size() > 1 && is_digit(s[1]))) return false;
+  if (const auto head = fn_head(s)) {
+    if (head->first > 13 || (head->first >= 9 && head->first <= 12)) return false;
+    k = lexing::skip_blanks(s, head->second);
+  }
   if (k >= s.size() || to_upper(s[k]) != 'Q') return false;
-  const std::size_t d = ++k;
-  int n = 0;
-  while (k < s.size() && is_digit(s[k]) && k - d < 5) n = n * 10 + (s[k++] - '0');
+  ++k;
+  if (k < s.size() && (to_upper(s[k]) == 'L' || to_upper(s[k]) == 'R' || to_upper(s[k]) == 'S')) ++k;
+  const std::size_t d = k;
+  while (k < s.size() && is_digit(s[k])) ++k;
   if (k == d) return false;
   k = lexing::skip_blanks(s, k);
-  if (k >= s.size() || s[k] != '=') return false;
-  k = lexing::skip_blanks(s, k + 1);
-  const parsed_number v = read_number(s.substr(k));
-  const std::size_t after = lexing::skip_blanks(s, k + v.length);
-  const bool literal = fn == 0 && v.error == number_error::none && v.length > 0 && (after == s.size() || s[after] == ';');
-  std::optional<parameter_literal> value;
-  if (literal) value = parameter_literal{v.value, std::string(s.substr(k, v.length))};
-  q.assign(n, std::move(value), line);
-  return true;
+  return k < s.size() && s[k] == '=';
 }
 
 }  // namespace kin5::program::heidenhain::detail

@@ -7,12 +7,15 @@
 /// `TOOL DEF`, `PLANE RESET`, `TRANS … RESET`, Q assignments (parameters.hpp) and frame cycles
 /// whose values are the identity. `CYCL DEF 247 … Q339=n` selects preset n (`state.work_offset`);
 /// `CYCL DEF 9.0 DWELL TIME` (passed through) then `CYCL DEF 9.1 DWELL t` is a dwell (`state.dwell_s`).
+/// Labels, calls, section repeats, FN 9–FN 12 jumps and the assignments' values are the
+/// executor's (`read_blocks`, statements.hpp): the reader sees the blocks it runs, and a word
+/// that uses a Q parameter reads its value then (motion.hpp).
 /// `FN 14: ERROR = n ;text` is an alarm stop (`alarm`: number n, the comment its message).
 /// Every other block is refused at its keyword, naming it: the
 /// cycles kin5 does not read (`CYCL DEF 200`, 32, …), `CYCL CALL`, `M99`/`M89`,
-/// `LBL`, `CALL LBL`/`CALL PGM`, other `FN` functions, `M` blocks with other words (`M140 MB MAX`),
-/// `TOOL CALL` forms it does not read, `FUNCTION TCPM` options other than `F TCP`, `AXIS POS`,
-/// `PATHCTRL AXIS`, unknown keywords; so are Q parameters that are not constants of the file,
+/// `CALL PGM` (another file), `FN` functions other than FN 0–FN 13, `M` blocks with other words
+/// (`M140 MB MAX`), `TOOL CALL` forms it does not read, `FUNCTION TCPM` options other than
+/// `F TCP`, `AXIS POS`, `PATHCTRL AXIS`, unknown keywords; so are Q parameters without a value,
 /// incremental `IX`… and active frame changes (`PLANE SPATIAL`…,
 /// `CYCL DEF 7/8/10/11/19/26`, `TRANS`). Block numbers are kept as written (repeated or missing
 /// is fine).
@@ -20,6 +23,7 @@
 
 #include <charconv>
 #include <cstddef>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -28,15 +32,33 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../interp/executor.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
 #include "../transmission.hpp"
 #include "lexer.hpp"
 #include "motion.hpp"
+#include "parameter_rules.hpp"
+#include "statements.hpp"
 #include "tcpm_options.hpp"
 
 namespace kin5::program::heidenhain::detail {
+
+/// Whether `text` has a CR that no LF follows (a line ending of CR alone).
+inline bool has_lone_cr(std::string_view text) {
+  for (std::size_t k = text.find('\r'); k != std::string_view::npos; k = text.find('\r', k + 1))
+    if (k + 1 == text.size() || text[k + 1] != '\n') return true;
+  return false;
+}
+
+/// Whether block `b` ends the program run: M2 or M30 (TNC 640 User's Manual, "Subprograms and
+/// program section repeats": the subprograms follow the block with M2 or M30).
+inline bool ends_program(const block& b) {
+  for (int m : b.m_codes)
+    if (m == 2 || m == 30) return true;
+  return false;
+}
 
 /// Reads one block: the keyword decides which words it takes.
 class block_reader : public word_checks {
@@ -144,8 +166,10 @@ class block_reader : public word_checks {
       }
     } else if (auto cycle = scan_.keywords(i, {"CYCL", "DEF"})) {
       cycle_definition(i, *cycle);
-    } else if (record_assignment(std::string_view(s_).substr(i), t_.where(i).line, state_.q)) {
-      b_.passthrough = b_.assignment = true;  // kept as written; its value is read where a word uses it
+    } else if (is_assignment(std::string_view(s_).substr(i))) {
+      b_.passthrough = b_.assignment = true;  // kept as written; the executor has assigned its value
+    } else if (const auto fn = fn_head(std::string_view(s_).substr(i)); fn && fn->first != 14) {
+      fn_function(i, fn->first);
     } else {
       other(i, head);
     }
@@ -445,6 +469,22 @@ class block_reader : public word_checks {
     }
   }
 
+  /// `CALL PGM file`, `PGM CALL file`, `SEL PGM file`, `CALL SELECTED PGM`: the keywords and the
+  /// file as written, when the block at `i` is one.
+  std::optional<std::string> called_program(std::size_t i) const {
+    for (const auto& ws : {std::initializer_list<std::string_view>{"CALL", "PGM"}, {"PGM", "CALL"}, {"SEL", "PGM"},
+                           {"CALL", "SELECTED", "PGM"}}) {
+      const auto after = scan_.keywords(i, ws);
+      if (!after || (*after < s_.size() && !is_space(s_[*after]))) continue;
+      std::string head;
+      for (std::string_view w : ws) head += (head.empty() ? "" : " ") + std::string(w);
+      const std::size_t f = scan_.skip_spaces(*after);
+      const std::size_t e = scan_.run_end(f);
+      return e > f ? head + " " + s_.substr(f, e - f) : head;
+    }
+    return std::nullopt;
+  }
+
   /// Whether only blanks and a `;` comment follow `k` (the comment is kept).
   bool only_comment_after(std::size_t k) {
     k = scan_.skip_spaces(k);
@@ -479,6 +519,15 @@ class block_reader : public word_checks {
     b_.alarm = alarm_stop{b_.comment.value_or(""), static_cast<long long>(n.value)};
     b_.comment.reset();
     return true;
+
+  /// `FN n:` other than the assignments (FN 0 to FN 8, FN 13), whose values the executor has
+  /// given, and the jumps (FN 9 to FN 12), which it has taken: refused at `i`, naming it.
+  void fn_function(std::size_t i, int fn) {
+    b_.passthrough = true;
+    if (fn == 18)
+      return error(i, "FN 18: SYSREAD reads the machine's state, which the program does not fix; kin5 cannot know "
+                      "the value");
+    error(i, "FN " + std::to_string(fn) + ": this Q-parameter function is not supported (kin5 runs FN 0 to FN 13)");
   }
 
   /// Cycle calls, labels, program calls and FN functions: refused at `i`, naming them.
@@ -486,6 +535,8 @@ class block_reader : public word_checks {
     std::string why;
     if (head == "CYCL") why = "CYCL CALL: a cycle call is not supported (fixed cycles are refused until kin5 reads them)";
     else if (head == "LBL") why = "LBL: labels are not supported (the path would depend on the calls and repeats)";
+    else if (auto file = called_program(i))
+      why = *file + ": a call of another program file is not supported (its motion would be lost; kin5 reads one file)";
     else if (head == "CALL" || head == "SEL" || head == "PGM")
       why = t_.upper.substr(i, scan_.run_end(scan_.skip_spaces(scan_.run_end(i))) - i) +
             ": program and label calls are not supported (the motion they make would be lost)";
@@ -502,30 +553,92 @@ class block_reader : public word_checks {
 
 namespace kin5::program::heidenhain {
 
-/// Reads a Heidenhain conversational program block by block: `on_block` receives each block in
-/// file order as soon as it is read; errors and warnings go to `out` (its `parsed` is not
-/// touched).
+/// Reads a Heidenhain conversational program as a TNC runs it, block by block: the executor
+/// (../interp/executor.hpp) runs the lines (statements.hpp: labels, subprogram calls, section
+/// repeats, FN 9–FN 12 jumps, assignments) and `on_block` receives each block it runs, in the order
+/// run, as soon as it is read; errors and warnings go to `out` (its `parsed` is not touched). The
+/// run ends at M2, M30 or END PGM; the blocks after that end which lie outside the subprograms
+/// (`LBL n` … `LBL 0`), `END PGM` for one, are read after it, in file order, with their
+/// assignments (a control never runs them; kin5 reads them as it did before it ran programs).
+/// `limits` bounds the lines run (`--max-executed-lines`).
 inline void read_blocks(std::string_view text, const std::string& file_path, read_result& out,
-                        const block_sink& on_block) {
+                        const block_sink& on_block, const interp::execution_limits& limits) {
   const file_name file(file_path);  // one string for every location in the file
   detail::reader_state state;
   read_transmitted(text, file_path, out, on_block, [&](std::string_view body, const block_sink& sink) {
+    std::string lf_ends;  // the executor ends lines at LF: a lone CR becomes one (same offsets, same lines)
+    if (detail::has_lone_cr(body)) {
+      lf_ends.assign(body);
+      for (std::size_t k = 0; k < lf_ends.size(); ++k)
+        if (lf_ends[k] == '\r' && (k + 1 == lf_ends.size() || lf_ends[k + 1] != '\n')) lf_ends[k] = '\n';
+      body = lf_ends;
+    }
     const std::vector<text_line> lines = split_lines(body);
-    for (const text_line& line : lines)
-      if (state.q.control_flow_line == 0) {
-        state.q.control_flow = detail::control_flow_of(line.text);
-        if (!state.q.control_flow.empty()) state.q.control_flow_line = line.number;
-      }
-    for (std::size_t li = 0; li < lines.size(); ++li) {
-      if (lexing::is_blank(lines[li].text)) continue;
+    statements syntax(lines);
+    interp::executor run(body, parameter_rules(), limits);
+    state.parameters = &run.parameters();
+    std::optional<std::size_t> tail;  // the first line after the block that ended the run
+    bool tail_in_subprogram = false;   // the run ended inside a called subprogram
+    // Reads the block that starts at line `li`; returns its last line's index.
+    const auto read_block = [&](std::size_t li, bool ends_run) {
       block_text source;
       source.file = file;
-      li = detail::join_block(lines, li, source);
-      sink(detail::block_reader(source, state, out).read());
+      const std::size_t last = detail::join_block(lines, li, source);
+      block b = detail::block_reader(source, state, out).read();
+      if (ends_run && !b.passthrough && (b.program_end || detail::ends_program(b))) {
+        tail = last + 1;
+        tail_in_subprogram = !run.call_lines().empty();
+        syntax.end_program();
+      }
+      sink(std::move(b));
+      return last;
+    };
+    const bool ran = run.execute(
+        syntax,
+        [&](const text_line& line, const interp::statement& s) {
+          if (s.ends_program || lexing::is_blank(line.text)) return;  // the line after the end; a blank line
+          read_block(line.number - 1, true);
+        },
+        [&](const interp::flow_error& e) {  // at the statement, after its block number
+          std::size_t column = e.column;
+          if (e.line >= 1 && e.line <= lines.size()) {
+            const std::string_view t = lines[e.line - 1].text;
+            if (column == lexing::skip_blanks(t, 0) + 1 && column <= t.size() && is_digit(t[column - 1])) {
+              while (column <= t.size() && is_digit(t[column - 1])) ++column;
+              column = lexing::skip_blanks(t, column - 1) + 1;
+            }
+          }
+          out.add_error({{file, e.line, column}, e.message});
+        });
+    if (ran && tail) {  // after the end: what lies outside the subprograms, as written
+      syntax.resume();
+      bool in_subprogram = tail_in_subprogram;
+      for (std::size_t li = *tail; li < lines.size(); ++li) {
+        if (lexing::is_blank(lines[li].text)) continue;
+        const interp::statement s = syntax.statement_of(lines[li]);
+        if (s.kind == interp::statement_kind::label && !s.label.empty()) in_subprogram = true;
+        else if (s.kind == interp::statement_kind::return_from_call) in_subprogram = false;
+        else if (s.kind == interp::statement_kind::ordinary && !in_subprogram) {
+          for (const interp::assignment& a : s.assignments) {  // in file order, as the blocks are read
+            const interp::evaluation v = interp::evaluate(a.value, run.parameters());
+            const interp::parameter_target t = interp::parameter_of(a.target, run.parameters());
+            std::optional<std::string> why = !v.ok() ? v.error->message : !t.key ? t.error->message : std::optional<std::string>{};
+            if (!why) why = run.parameters().assign(*t.key, v.value);
+            if (why) out.add_error({{file, li + 1, (!v.ok() ? v.error->where : a.target.at(a.target.root).where).column}, *why});
+          }
+          li = read_block(li, false);
+        }
+      }
     }
     if (state.dwell_opened)
       out.add_error({*state.dwell_opened, "CYCL DEF 9.0 (dwell time) without its CYCL DEF 9.1 DWELL block after it"});
   });
+}
+
+/// The same, with the default bound on the lines run.
+inline void read_blocks(std::string_view text, const std::string& file_path, read_result& out,
+                        const block_sink& on_block) {
+  read_blocks(text, file_path, out, on_block, interp::execution_limits{});
 }
 
 }  // namespace kin5::program::heidenhain

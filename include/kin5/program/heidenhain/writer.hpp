@@ -404,7 +404,7 @@ class writer {
   /// Cycle 247 DATUM SETTING), its Q339 on a continued line; any other selection is refused.
   void preset_selection(const block& b, const work_offset& w, std::size_t bi) {
     if (w.family != work_offset_family::preset || w.number < 0 || w.number > 65535)
-      fail(b, bi, "work offset " + spelling(w) + " has no Heidenhain form (--work-offset-map names a preset)");
+      fail(b, bi, "work offset " + kin5::program::spelling(w) + " has no Heidenhain form (--work-offset-map names a preset)");
     add("CYCL DEF 247 DATUM SETTING ~\n  Q339=+" + std::to_string(w.number));
   }
 

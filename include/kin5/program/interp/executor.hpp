@@ -104,6 +104,7 @@ class executor {
         case statement_kind::return_from_call:
           if (!in_subprogram()) {
             if (s.ends_program) return true;
+            if (s.only_in_call) break;
             return fail(on_error, here.line, "returns from a call, but no call is open");
           }
           while (calls_.back().ends == call_end::calling_line) drop_call();  // the section repeats inside end too

@@ -94,6 +94,9 @@ struct statement {
   call_end ends = call_end::return_statement;    ///< on `call`
   bool call_frame = true;                        ///< on `call`: the called part has its own local parameters
   bool ends_subprogram = false;                  ///< on `return_from_call`: the subprogram's last line (`endsub`)
+  /// On `return_from_call`: reached with no call open, it does nothing (Heidenhain `LBL 0` at the
+  /// end of a subprogram the program's flow runs into without calling it).
+  bool only_in_call = false;
   /// The program ends after this line (M2, M30, END PGM; a return with no call open).
   bool ends_program = false;
   std::vector<assignment> assignments{};         ///< run in order before the line is read

@@ -22,7 +22,7 @@ TEST_CASE("heidenhain: reading goes on after an error and keeps every block") {
   const read_result r = heidenhain::read("1 L X+1 Y\n2 L X+2 Y+3\n3 L X+Q1*2\n", "t.h");
   REQUIRE(r.errors.size() == 2);
   CHECK(r.errors[0].to_string() == "t.h:1:9: error: word 'Y' has no value");
-  CHECK(r.errors[1].to_string() == "t.h:3:5: error: expressions and parameters in axis words are not supported");
+  CHECK(r.errors[1].to_string() == "t.h:3:5: error: an expression in an axis word is not supported (a TNC reads a number or a Q parameter: X+Q1)");
   REQUIRE(r.parsed.blocks.size() == 3);
   CHECK(r.parsed.blocks[1].axes.x_mm == 2.0);
   CHECK(r.parsed.blocks[1].axes.y_mm == 3.0);
