@@ -35,6 +35,7 @@
 #include "../interp/executor.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
+#include "../read_limits.hpp"
 #include "../text.hpp"
 #include "../transmission.hpp"
 #include "lexer.hpp"
@@ -635,10 +636,10 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
   });
 }
 
-/// The same, with the default bound on the lines run.
+/// The same, with the bound on the lines run of the reading under way (`current_read_limits`).
 inline void read_blocks(std::string_view text, const std::string& file_path, read_result& out,
                         const block_sink& on_block) {
-  read_blocks(text, file_path, out, on_block, interp::execution_limits{});
+  read_blocks(text, file_path, out, on_block, interp::execution_limits{current_read_limits().max_executed_lines});
 }
 
 }  // namespace kin5::program::heidenhain
