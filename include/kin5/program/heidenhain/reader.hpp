@@ -520,6 +520,7 @@ class block_reader : public word_checks {
     b_.alarm = alarm_stop{b_.comment.value_or(""), static_cast<long long>(n.value)};
     b_.comment.reset();
     return true;
+  }
 
   /// `FN n:` other than the assignments (FN 0 to FN 8, FN 13), whose values the executor has
   /// given, and the jumps (FN 9 to FN 12), which it has taken: refused at `i`, naming it.
