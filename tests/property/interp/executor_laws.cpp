@@ -127,6 +127,9 @@ TEST_CASE("executor: a program without control flow runs line by line", "[execut
   const auto r = run("P a\nP b\r\nP c");
   CHECK(r.ok);
   CHECK(r.lines == lines({"P a", "P b", "P c"}));
+  // Lines end at LF, CRLF or a lone CR, as for_each_line splits them: line numbers agree.
+  CHECK(run("P a\rP b\rJ x\nP skipped\rL x\r\nX\r").error == "6:1: unknown statement X");
+  CHECK(run("P a\rP b\rJ x\nP skipped\rL x\r\nP c\r").lines == lines({"P a", "P b", "P c"}));
 }
 
 TEST_CASE("executor: jumps forward, backward, conditional, and a missing label", "[executor]") {
@@ -438,6 +441,7 @@ TEST_CASE("executor law: structured programs run as their trees", "[executor][la
     RC_ASSERT(r.error.empty());
     RC_ASSERT(r.lines == m.out);
   });
+}
 
 TEST_CASE("executor: a return that is only for calls does nothing in the program's flow", "[executor]") {
   // Heidenhain: a subprogram before M30, run into without a call, runs once; its LBL 0 is passed.

@@ -182,13 +182,24 @@ class executor {
   std::vector<open_loop> loops_;
   std::optional<std::vector<label_entry>> labels_;  // in file order, once scanned
   bool entering_else_if_ = false;                   // a false branch passed control to this ELSEIF
+  mutable std::size_t lf_from_ = std::string_view::npos;  // line_of's cache: the first LF at or after
+  mutable std::size_t lf_ = std::string_view::npos;       // lf_from_ (npos: none)
 
+  /// The line at `p` and where the next starts: lines end at LF, CRLF or a lone CR, as
+  /// `for_each_line` (text.hpp) splits them, so both count the same line numbers. The next LF
+  /// is searched once for all the lines before it (a text of lone CRs is not searched again per line).
   line_at line_of(position p) const {
-    const std::size_t lf = text_.find('\n', p.offset);
-    const std::size_t stop = lf == std::string_view::npos ? text_.size() : lf;
-    std::string_view s = text_.substr(p.offset, stop - p.offset);
-    if (const std::size_t cr = s.find('\r'); cr != std::string_view::npos) s = s.substr(0, cr);
-    return {{s, p.number}, {lf == std::string_view::npos ? text_.size() : lf + 1, p.number + 1}};
+    if (!(lf_from_ <= p.offset && (lf_ == std::string_view::npos || p.offset <= lf_))) {
+      lf_from_ = p.offset;
+      lf_ = text_.find('\n', p.offset);
+    }
+    const std::size_t lf = lf_ == std::string_view::npos ? text_.size() : lf_;
+    const std::size_t cr = text_.substr(0, lf).find('\r', p.offset);
+    const std::size_t end = cr == std::string_view::npos ? lf : cr;
+    if (end == text_.size()) return {{text_.substr(p.offset), p.number}, {text_.size(), p.number + 1}};
+    std::size_t next = end + 1;
+    if (text_[end] == '\r' && next < text_.size() && text_[next] == '\n') ++next;
+    return {{text_.substr(p.offset, end - p.offset), p.number}, {next, p.number + 1}};
   }
 
   position after(position p) const { return line_of(p).next; }
