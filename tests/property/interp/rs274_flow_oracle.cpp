@@ -4,6 +4,9 @@
 // LinuxCNC reader, which executes it (program/linuxcnc/statements.hpp), and run by `rs274 -g`:
 // the moves kin5 reads end where rs274's STRAIGHT_TRAVERSE and STRAIGHT_FEED end, to 1e-9.
 // Positions are sums of numbers of 3 decimals, which rs274's 4 printed decimals give exactly.
+// Left out, as rs274 (LinuxCNC 2.9) parts from its manual there: a `break` or `continue` in a
+// while loop whose condition fails at once makes rs274 run the body of the next `do` loop once
+// only (docs/dialects/linuxcnc.md); the generator draws them only in loops that run.
 #include <cmath>
 #include <string>
 #include <vector>
@@ -93,11 +96,11 @@ class program_gen {
     const std::string saved = in_loop_name_;
     in_loop_name_ = o;
     switch (*rc::gen::inRange(0, 3)) {
-      case 0:
+      case 0:  // a break or continue in a while loop rs274 skips upsets its next do loop (file comment)
         line(counter + " = 0");
         line(o + " while [" + counter + " LT " + std::to_string(runs) + "]");
         line(counter + " = [" + counter + " + 1]");
-        statements(depth + 1, true);
+        statements(depth + 1, runs > 0);
         line(o + " endwhile");
         break;
       case 1:
