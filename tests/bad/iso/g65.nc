@@ -1,3 +1,3 @@
-; expect: 2:1: G65: a macro call is not supported (the motion it makes would be lost)
+; expect: 2:1: call of O9010: no such label in this file
 G65 P9010 A1. B2.
 M30

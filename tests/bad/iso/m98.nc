@@ -1,3 +1,3 @@
-; expect: 2:5: M98: a subprogram call is not supported (the motion it makes would be lost)
+; expect: 2:1: call of O1000: no such label in this file
 N20 M98 P1000
 M30

@@ -1,4 +1,4 @@
-; expect: 6:17: parameter #101 is not assigned earlier in this file: its value is the machine's
+; expect: 6:18: parameter #101 is read before it is assigned: its value is the machine's
 %
 O2002
 G21 G17 G90 G54

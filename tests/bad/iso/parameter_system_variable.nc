@@ -1,4 +1,4 @@
-; expect: 5:1: setting parameter #5221 is not supported: only #1-#33, #100-#199 and #500-#999 hold the program's own values (the others are the control's)
+; expect: 5:1: parameter #5221 is a system variable (#1000 and up: the control's offsets, positions and signals), not a value of this program
 %
 O2003
 G21 G17 G90

@@ -159,7 +159,7 @@ TEST_CASE("executor: an ordinary line with a condition runs only when it holds",
                      "L ok\nP end\n");
   CHECK(r.ok);
   CHECK(r.lines == lines({"A #1 = 1", "AI #2 = 5 IF [#1 EQ 1]", "A #4 = [#2 + #3]", "P end"}));
-  CHECK(run("AI #2 = 1 IF [1/0]\nP end\n").error == "1:15: division by zero");
+  CHECK(run("AI #2 = 1 IF [1/0]\nP end\n").error == "1:16: division by zero");
 }
 
 TEST_CASE("executor: while, do-until, counted loops, break and continue", "[executor]") {

@@ -225,12 +225,12 @@ TEST_CASE("FANUC macro B: each construct, and what is refused", "[flow]") {
         "1:8: G65 argument A1 without a decimal point: the control reads it in the least input increment of address "
         "A (write A1.)\n");
   CHECK(errors("#1 = 1\nWHILE [#1 GT 0] DO1\nEND1\n") ==
-        "2:1: more than 100000000 lines executed: the loop at line 2 may never end (--max-executed-lines raises the "
+        "3:1: more than 100000000 lines executed: the loop at line 2 may never end (--max-executed-lines raises the "
         "bound)\n" );
   CHECK(errors("#5221 = 1.\n") ==
         "1:1: parameter #5221 is a system variable (#1000 and up: the control's offsets, positions and signals), not "
         "a value of this program\n");
-  CHECK(errors("G1 X#1\n") == "1:4: parameter #1 is read before it is assigned in the main program\n");
+  CHECK(errors("G1 X#1\n") == "1:5: parameter #1 is read before it is assigned in the main program\n");
   CHECK(errors("O ENTER OP AND LAST 3 DIGITS\n") ==
         "1:1: program number O without its digits (O1 … O9999): write the number, or put the text in a comment ( … )\n");
 }
@@ -248,7 +248,7 @@ TEST_CASE("LinuxCNC o-words: each construct, and what is refused", "[flow]") {
   const auto moves = [](const std::string& t) { return moves_of(linuxcnc::read("G21 G90\nG0 X0 Y0 Z0\n" + t, "t.ngc")); };
   const auto errors = [](const std::string& t) { return errors_of(linuxcnc::read(t, "t.ngc")); };
   CHECK(moves("o<p> sub\nG1 X#1 Y#2 F100\no<p> endsub\no<p> call [1] [2*3]\no<p> call [4]\n") ==
-        "0.000 0.000 0.000\n1.000 2.000 0.000\n4.000 0.000 0.000\n");
+        "0.000 0.000 0.000\n1.000 6.000 0.000\n4.000 0.000 0.000\n");
   CHECK(moves("#<i> = 0\no1 do\n#<i> = [#<i> + 1]\nG1 X#<i> F100\no1 while [#<i> LT 2]\no2 repeat [2]\nG1 Y1\n"
               "o2 endrepeat\n") == "0.000 0.000 0.000\n1.000 0.000 0.000\n2.000 0.000 0.000\n2.000 1.000 0.000\n"
                                    "2.000 1.000 0.000\n");

@@ -4,6 +4,10 @@
 // LinuxCNC reader, which executes it (program/linuxcnc/statements.hpp), and run by `rs274 -g`:
 // the moves kin5 reads end where rs274's STRAIGHT_TRAVERSE and STRAIGHT_FEED end, to 1e-9.
 // Positions are sums of numbers of 3 decimals, which rs274's 4 printed decimals give exactly.
+// Left out, as rs274 (LinuxCNC 2.9) parts from its manual there: once it has passed over a
+// `break` it did not take (in an `if` whose condition failed, or in a while loop that did not
+// run), the body of a later `do` loop runs once only (docs/dialects/linuxcnc.md); the generator
+// draws `break` only in programs without `do` loops.
 #include <cmath>
 #include <string>
 #include <vector>
@@ -38,6 +42,8 @@ class program_gen {
   }
 
  private:
+  /// `break` is drawn only in a program without `do` loops (file comment).
+  const bool breaks_ = *rc::gen::arbitrary<bool>();
   int next_o_ = 100;
   int next_counter_ = 40;
 
@@ -61,7 +67,7 @@ class program_gen {
       case 2:
         if (in_loop && *rc::gen::inRange(0, 3) == 0) {  // leave or go on, under a condition
           line(o + " if [" + parameter() + " GT " + offset() + "]");
-          line(std::string(in_loop_name_) + " " + *rc::gen::element("break", "continue"));
+          line(std::string(in_loop_name_) + " " + (breaks_ ? *rc::gen::element("break", "continue") : "continue"));
           line(o + " endif");
         } else {
           line("o<shift> call [" + parameter() + "] [" + offset() + "]");
@@ -92,7 +98,9 @@ class program_gen {
     const int runs = *rc::gen::inRange(0, 4);
     const std::string saved = in_loop_name_;
     in_loop_name_ = o;
-    switch (*rc::gen::inRange(0, 3)) {
+    int kind = *rc::gen::inRange(0, 3);
+    if (breaks_ && kind == 1) kind = 0;  // no do loop where a break may be drawn
+    switch (kind) {
       case 0:
         line(counter + " = 0");
         line(o + " while [" + counter + " LT " + std::to_string(runs) + "]");
