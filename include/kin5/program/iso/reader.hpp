@@ -551,6 +551,8 @@ class basic_reader {
   /// words as written (G28's intermediate point is incremental under G91) and the distance mode
   /// the control reads them in: `state.distance` says G91 there, and G90 on the next block that
   /// moves; elsewhere it says what a block without motion writes (G90, G91) or G90 where needed.
+  /// A distance of 0 from an unknown position (`G91 G0 B0.` after `G28 B0.`) moves nothing: the
+  /// word is left out, and the position stays unknown.
   void absolute_positions(block& b, const line_words& l) {
     const auto said = state_.incremental ? distance_mode::incremental : distance_mode::absolute;
     if (b.machine_coordinates) {
@@ -577,6 +579,10 @@ class basic_reader {
         if (state_.last[i]) {
           const axis_position to = reached(*state_.last[i], *p, decimals_[i]);
           p = to.value, decimals_[i] = to.decimals;
+          continue;
+        }
+        if (*p == 0) {  // no distance: the axis stays wherever it is, which a block without the word says
+          p.reset();
           continue;
         }
         const word* w = nullptr;
