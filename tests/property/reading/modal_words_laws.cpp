@@ -209,7 +209,8 @@ TEST_CASE("modal words: each reader's spellings, and G91 resolved where its base
       // G91 left in effect by a home move: the next move is resolved and written after G90
       {iso, "G0 X0. Z5.\nG91 G28 Z0.\nG0 X1.\n", std::nullopt, distance_mode::absolute, std::nullopt, ""},
       {iso, "G91\n", std::nullopt, distance_mode::incremental, std::nullopt, ""},
-      {iso, "G0 X0.\nG91 G0 X1.\n", std::nullopt, std::nullopt, std::nullopt, ""},
+      // a move under G91 holds positions: the model says G90 there
+      {iso, "G0 X0.\nG91 G0 X1.\n", std::nullopt, distance_mode::absolute, std::nullopt, ""},
       {iso, "G91 G0 X1.\n", std::nullopt, std::nullopt, std::nullopt,
        "t:1:8: error: incremental X (G91 of line 1) from a position the program does not say: no absolute X since the start of the program, so the move would start from wherever the machine stands; program an absolute X (G90) before it"},
       {id_of<haas::dialect>(), "G90 G18 G40\n", arc_plane::zx, distance_mode::absolute, cutter_side::off, ""},
@@ -220,7 +221,7 @@ TEST_CASE("modal words: each reader's spellings, and G91 resolved where its base
       {sie, "N10 G018\n", arc_plane::zx, std::nullopt, std::nullopt, ""},
       {sie, "N10 G91 X1\n", std::nullopt, std::nullopt, std::nullopt,
        "t:1:9: error: incremental X (G91 of line 1) from a position the program does not say: no absolute X since the start of the program, so the move would start from wherever the machine stands; program an absolute X (G90) before it"},
-      {sie, "N10 X0\nN20 G91 X1\n", std::nullopt, std::nullopt, std::nullopt, ""},
+      {sie, "N10 X0\nN20 G91 X1\n", std::nullopt, distance_mode::absolute, std::nullopt, ""},
       {sie, "N10 G91\n", std::nullopt, distance_mode::incremental, std::nullopt, ""},
   };
   for (const row& r : rows) {
