@@ -191,7 +191,7 @@ TEST_CASE("modal words: translation keeps the plane, G90 and G40 in every ordere
   });
 }
 
-TEST_CASE("modal words: each reader's spellings, and G91 left in effect refused at the move") {
+TEST_CASE("modal words: each reader's spellings, and G91 resolved where its base is known") {
   struct row {
     dialect d;
     const char* text;
@@ -206,16 +206,23 @@ TEST_CASE("modal words: each reader's spellings, and G91 left in effect refused 
       {iso, "g18\n", arc_plane::zx, std::nullopt, std::nullopt, ""},
       {iso, "G19 G18\n", arc_plane::zx, std::nullopt, std::nullopt, ""},
       {iso, "G91 G28 Z0.\nG90\nG0 X1.\n", std::nullopt, distance_mode::absolute, std::nullopt, ""},
-      {iso, "G91 G28 Z0.\nG0 X1.\n", std::nullopt, std::nullopt, std::nullopt,
-       "t:2:1: error: incremental positioning (G91 of line 1, not cancelled by G90) is not supported"},
-      {iso, "G91 G0 X1.\n", std::nullopt, std::nullopt, std::nullopt, "t:1:1: error: incremental positioning (G91) is not supported"},
+      // G91 left in effect by a home move: the next move is resolved and written after G90
+      {iso, "G0 X0. Z5.\nG91 G28 Z0.\nG0 X1.\n", std::nullopt, distance_mode::absolute, std::nullopt, ""},
+      {iso, "G91\n", std::nullopt, distance_mode::incremental, std::nullopt, ""},
+      // a move under G91 holds positions: the model says G90 there
+      {iso, "G0 X0.\nG91 G0 X1.\n", std::nullopt, distance_mode::absolute, std::nullopt, ""},
+      {iso, "G91 G0 X1.\n", std::nullopt, std::nullopt, std::nullopt,
+       "t:1:8: error: incremental X (G91 of line 1) from a position the program does not say: no absolute X since the start of the program, so the move would start from wherever the machine stands; program an absolute X (G90) before it"},
       {id_of<haas::dialect>(), "G90 G18 G40\n", arc_plane::zx, distance_mode::absolute, cutter_side::off, ""},
       {lc, "G19 G90 G40\n", arc_plane::yz, distance_mode::absolute, cutter_side::off, ""},
       {lc, "G91 G28 Z0\nG1 X1 F100\n", std::nullopt, std::nullopt, std::nullopt,
-       "t:2:1: error: incremental positioning (G91 of line 1, not cancelled by G90) is not supported"},
+       "t:2:4: error: incremental X (G91 of line 1) from a position the program does not say: no absolute X since the start of the program, so the move would start from wherever the machine stands; program an absolute X (G90) before it"},
       {sie, "N10 G17 G90 G40\n", arc_plane::xy, distance_mode::absolute, cutter_side::off, ""},
       {sie, "N10 G018\n", arc_plane::zx, std::nullopt, std::nullopt, ""},
-      {sie, "N10 G91 X1\n", std::nullopt, std::nullopt, std::nullopt, "t:1:5: error: incremental positioning (G91) is not supported"},
+      {sie, "N10 G91 X1\n", std::nullopt, std::nullopt, std::nullopt,
+       "t:1:9: error: incremental X (G91 of line 1) from a position the program does not say: no absolute X since the start of the program, so the move would start from wherever the machine stands; program an absolute X (G90) before it"},
+      {sie, "N10 X0\nN20 G91 X1\n", std::nullopt, distance_mode::absolute, std::nullopt, ""},
+      {sie, "N10 G91\n", std::nullopt, distance_mode::incremental, std::nullopt, ""},
   };
   for (const row& r : rows) {
     INFO(r.text);

@@ -6,6 +6,9 @@
 /// where it changes), `F`, `FMAX`, `DR±` and M functions. `FAUTO` is refused.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include <cstddef>
 #include <iterator>
 #include <optional>
@@ -17,6 +20,7 @@
 #include "../block.hpp"
 #include "../number.hpp"
 #include "../units.hpp"
+#include "../incremental.hpp"
 #include "lexer.hpp"
 #include "../interp/parameter_store.hpp"
 #include "parameters.hpp"
@@ -30,6 +34,11 @@ struct reader_state {
   std::optional<double> last[3];
   /// The running program's parameters, which words like `FQ1` and `X+Q2` read (the executor's).
   const interp::parameter_store* parameters = nullptr;
+  /// X Y Z (mm) A B C: the last programmed position with its decimals, the base of incremental
+  /// words (program/incremental.hpp); a block's own decimals wait in `decimals` until it is done.
+  std::optional<axis_position> position[6];
+  std::size_t lost_line[6] = {};  ///< the M91/M92 line that made a position unknown (0: none)
+  int decimals[6] = {};
   arc_plane plane = arc_plane::xy;
   std::optional<vec3> centre;
   cutter_side radius = cutter_side::off;  ///< RL/RR in effect (modal until R0)
@@ -146,16 +155,30 @@ class motion_reader : public word_checks {
   std::optional<double> radius_;
   char direction_ = 0;
   std::optional<double> axis_[6], tool_axis_[3];
+  bool incremental_[6] = {};        // IX … IC
+  std::optional<int> parameter_decimals_;  // the decimals of the Q parameter the word being taken uses
+  std::size_t word_pos_[6] = {};    // where each axis word stands
 
   /// A word whose value is a Q parameter (`FQ1`, `X-Q2`) takes the parameter's value now.
   bool resolve(word& w) {
     if (!resolve_parameter(w, state_.parameters)) return false;
     w.parameter.reset();
+    parameter_decimals_ = decimals_of(*w.value);
     return true;
+  }
+
+  /// The decimals of a parameter's value, which has no written text: those of its shortest
+  /// form, at most 6 (a millionth of a millimetre or degree).
+  static int decimals_of(double v) {
+    double scale = 1;
+    for (int d = 0; d < 6; ++d, scale *= 10)
+      if (std::abs(std::round(v * scale) / scale - v) <= 1e-9 * std::max(1.0, std::abs(v))) return d;
+    return 6;
   }
 
   void take(word& w) {
     const std::string& key = w.key;
+    parameter_decimals_.reset();
     if (w.parameter && !resolve(w)) return;
     if (w.expression) {
       value_ok(w);
@@ -164,7 +187,7 @@ class motion_reader : public word_checks {
     } else if (key.size() == 1 && is_axis_letter(key[0])) {
       axis_word(w);
     } else if (key.size() == 2 && key[0] == 'I' && is_axis_letter(key[1])) {
-      error(w.pos, "incremental positioning (" + key + ") is not supported");
+      axis_word(w, 1);
     } else if (head_ == "LN" && key.size() == 2 && key[0] == 'T' && (key[1] == 'X' || key[1] == 'Y' || key[1] == 'Z')) {
       if (!value_ok(w)) return;
       const std::size_t a = static_cast<std::size_t>(key[1] - 'X');
@@ -179,12 +202,51 @@ class motion_reader : public word_checks {
     }
   }
 
-  void axis_word(word& w) {
+  /// X, or IX when `at` is 1 (incremental: TNC 640 User's Manual, "Absolute/incremental
+  /// coordinates"), and the other axes likewise.
+  void axis_word(word& w, std::size_t at = 0) {
     if (!value_ok(w)) return;
-    const std::size_t a = std::string_view("XYZABC").find(w.key[0]);
+    const std::size_t a = std::string_view("XYZABC").find(w.key[at]);
     if (a >= std::size(axis_)) return error(w.pos, "unknown axis '" + w.key + "'");  // not reached: callers pass axes
-    if (axis_[a]) return error(w.pos, "axis '" + w.key + "' given twice");
+    if (axis_[a]) return error(w.pos, "axis '" + std::string(1, w.key[at]) + "' given twice");
+    const bool inch = a < 3 && state_.mm_per_length() != 1.0;
     axis_[a] = a < 3 ? *w.value * state_.mm_per_length() : *w.value;
+    state_.decimals[a] = parameter_decimals_.value_or(decimals_written(w.written)) + (inch ? 1 : 0);  // ×25.4: one more
+    incremental_[a] = at == 1;
+    word_pos_[a] = w.pos;
+  }
+
+  /// IX … IC: the position reached from the last programmed one of the axis (a CC's centre
+  /// likewise). A base the program does not say (no absolute position yet, or M91/M92 since)
+  /// is refused at the word, unless the distance is 0 (the axis stays: the word is left out);
+  /// incremental words in an M91/M92 block, whose words are kept as written, are refused.
+  void absolute_positions() {
+    static constexpr char letters[] = "XYZABC";
+    for (std::size_t a = 0; a < 6; ++a) {
+      if (!axis_[a] || !incremental_[a]) continue;
+      const std::string letter(1, letters[a]);
+      if (b_.machine_coordinates) {
+        error(word_pos_[a], "I" + letter + " in a machine-coordinate block (M91/M92) is not supported (its words are "
+                                           "kept as written)");
+        continue;
+      }
+      if (state_.position[a]) {
+        const axis_position to = reached(*state_.position[a], *axis_[a], state_.decimals[a]);
+        axis_[a] = to.value, state_.decimals[a] = to.decimals;
+        continue;
+      }
+      if (*axis_[a] == 0) {
+        axis_[a].reset();
+        continue;
+      }
+      const std::string since = state_.lost_line[a] ? "since the machine-coordinate move (M91/M92) of line " +
+                                                          std::to_string(state_.lost_line[a])
+                                                    : "since the start of the program";
+      error(word_pos_[a], "incremental " + letter + " (I" + letter + ") from a position the program does not say: no "
+                          "absolute " + letter + " " + since + ", so the move would start from wherever the machine "
+                          "stands; program an absolute " + letter + " before it");
+      axis_[a].reset();
+    }
   }
 
   /// R, R0, RL/RR, DR±, F, FMAX, FAUTO, M.
@@ -239,6 +301,7 @@ class motion_reader : public word_checks {
 
   /// CC: two coordinates give the plane; missing ones come from the last position.
   void centre(std::size_t i) {
+    absolute_positions();
     const int given = (axis_[0] ? 1 : 0) + (axis_[1] ? 1 : 0) + (axis_[2] ? 1 : 0);
     if (axis_[3] || axis_[4] || axis_[5]) error(i, "CC takes linear axes only");
     if (given == 3) error(i, "CC takes at most two coordinates");
@@ -256,6 +319,7 @@ class motion_reader : public word_checks {
 
   /// L, LN, C, CR: the end point, the tool-axis vector, and the arc.
   void end_point(std::size_t i) {
+    absolute_positions();
     axis_words& ax = b_.axes;
     ax.x_mm = axis_[0], ax.y_mm = axis_[1], ax.z_mm = axis_[2];
     ax.a_deg = axis_[3], ax.b_deg = axis_[4], ax.c_deg = axis_[5];

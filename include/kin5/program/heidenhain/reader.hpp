@@ -16,9 +16,9 @@
 /// `CALL PGM` (another file), `FN` functions other than FN 0–FN 13, `M` blocks with other words
 /// (`M140 MB MAX`), `TOOL CALL` forms it does not read, `FUNCTION TCPM` options other than
 /// `F TCP`, `AXIS POS`, `PATHCTRL AXIS`, unknown keywords; so are Q parameters without a value,
-/// incremental `IX`… and active frame changes (`PLANE SPATIAL`…,
-/// `CYCL DEF 7/8/10/11/19/26`, `TRANS`). Block numbers are kept as written (repeated or missing
-/// is fine).
+/// and active frame changes (`PLANE SPATIAL`…, `CYCL DEF 7/8/10/11/19/26`, `TRANS`). Incremental
+/// `IX` … `IC` are resolved to the positions they reach (motion.hpp). Block numbers are kept as
+/// written (repeated or missing is fine).
 #pragma once
 
 #include <charconv>
@@ -87,6 +87,13 @@ class block_reader : public word_checks {
       if (b_.axes.x_mm) state_.last[0] = b_.axes.x_mm;
       if (b_.axes.y_mm) state_.last[1] = b_.axes.y_mm;
       if (b_.axes.z_mm) state_.last[2] = b_.axes.z_mm;
+      const std::optional<double> given[6] = {b_.axes.x_mm, b_.axes.y_mm, b_.axes.z_mm,
+                                              b_.axes.a_deg, b_.axes.b_deg, b_.axes.c_deg};
+      for (std::size_t a = 0; a < 6; ++a) {
+        if (!given[a]) continue;
+        if (b_.machine_coordinates) state_.position[a].reset(), state_.lost_line[a] = b_.where.line;
+        else state_.position[a] = axis_position{*given[a], state_.decimals[a]};
+      }
     }
     return std::move(b_);
   }

@@ -7,11 +7,12 @@
 /// `G43.4 H n`, `G43.5 H n` switch it on with offset n (without H: the last H of the program),
 /// `G43` after `G43.4` / `G43.5` ends tracking (one modal group, 08), `G49` off (`state.length_compensation`, `length_register`). Cutter radius compensation:
 /// `G41 D n` / `G42 D n` (without D: the last D), `G40` (`state.radius_compensation`,
-/// `radius_register`; start-up and cancel in an arc refused). Errors: G91 (except in `G91 G28`/`G30`
-/// homing blocks), G95, a unit change after motion, active frames (G68, G68.2, G51, G52 with
+/// `radius_register`; start-up and cancel in an arc refused). G91 axis words are resolved to the
+/// positions they reach (`absolute_positions`; refused where the position they add to is not
+/// known). Errors: G95, a unit change after motion, active frames (G68, G68.2, G51, G52 with
 /// offsets, G92), canned cycles, G10, macro and subprogram calls (G65, G66, M98, M97,
-/// M99), a move while G91 is in effect, G44, `H` without G43/G43.4/G43.5, G43 without H before
-/// any H, and any word not understood, moving or not: each at its word, naming it. G17/G18/G19, G90 (G91 of a homing block) and G40 are read into `state`
+/// M99), G44, `H` without G43/G43.4/G43.5, G43 without H before
+/// any H, and any word not understood, moving or not: each at its word, naming it. G17/G18/G19, G90/G91 and G40 are read into `state`
 /// (working plane, distance mode, radius compensation off), `G4 X2.` / `G4 P2000` into
 /// `state.dwell_s` (seconds; a block of its own). Harmless modal words (G05.1 Q1,
 /// D1, …) are kept as written; `%` lines pass through. Work offsets
@@ -115,6 +116,7 @@ class basic_reader {
   std::map<interp::parameter_key, parameter_literal> literals_;  // parameters last assigned a number, as written
   std::vector<interp::expression> values_;                // the computed values of this line's words
   std::deque<std::string> substituted_;                   // the text of this line's computed words
+  int decimals_[6] = {};                                  // the decimals of this line's X Y Z A B C positions
 
   void error(std::size_t column, std::string message) {
     result_.add_error({{file_, line_, column}, std::move(message)});
@@ -349,15 +351,13 @@ class basic_reader {
     radius_offset(b, l);
     if (l.extended && !b.state.work_offset && !l.suppress)
       error(l.extended->column, "G54.1 needs P n, the number of the extended work offset");
-    machine_or_incremental(b);
     if (b.motion) state_.motion = b.motion;
     inverse_time_feed(b, l);
     centre_or_vector(b, l);
-    if (!b.machine_coordinates) {
-      if (b.axes.x_mm) state_.last[0] = b.axes.x_mm;
-      if (b.axes.y_mm) state_.last[1] = b.axes.y_mm;
-      if (b.axes.z_mm) state_.last[2] = b.axes.z_mm;
-    }
+    if (!l.suppress) absolute_positions(b, l);  // after the G43.5 vector: a block that moves
+    if (!b.machine_coordinates)
+      for (int i = 0; i < 6; ++i)
+        if (const auto& p = axis_slot(b, i)) state_.last[i] = axis_position{*p, decimals_[i]};
     rates();
     if (state_.inch) inches_to_mm(b, !state_.inverse_time);
     state_.moved = state_.moved || b.moves();
@@ -560,9 +560,13 @@ class basic_reader {
     if (g == 170 || g == 180 || g == 190) {
       state_.plane = g == 170 ? arc_plane::xy : g == 180 ? arc_plane::zx : arc_plane::yz;
       b.state.working_plane = state_.plane;
-    } else if (g == 900) {
-      state_.incremental = false;
-      b.state.distance = distance_mode::absolute;
+    } else if (g == 900 || g == 910) {
+      if (l.distance && g_code(l.distance->value) != g)
+        return error(w.column, std::string(l.distance->text) + " and " + std::string(w.text) +
+                                   " in one block: two distance modes (modal group 03); write the one meant");
+      l.distance = &w;
+      if (g == 910 && !state_.incremental) state_.incremental_line = line_;
+      state_.incremental = g == 910;
     } else if (g == 400 || g == 410 || g == 420) {
       return;  // cutter radius compensation, with its D: `radius_offset`
     } else if (g >= 540 && g <= 590 && g % 10 == 0) {
@@ -571,10 +575,6 @@ class basic_reader {
       if (l.extended != &w) return error(w.column, "two work offsets in one block");
     } else if (kept_g(g) || (g == 520 && l.g52_reset)) {
       keep();
-    } else if (g == 910) {
-      if (!l.homing) return error(w.column, "incremental positioning (G91) is not supported");
-      state_.incremental = true, state_.incremental_line = line_;
-      b.state.distance = distance_mode::incremental;
     } else if (g == 930 || g == 940) {
       state_.inverse_time = g == 930;
       b.feed_mode = g == 930 ? feed_unit::inverse_time : feed_unit::per_minute;
@@ -669,16 +669,76 @@ class basic_reader {
                           "its time as F (write F in this block)");
   }
 
-  /// Machine-coordinate and homing blocks: the axis words are not workpiece positions.
-  void machine_or_incremental(const block& b) {
+  /// The block's axis word for axis `i` (X Y Z A B C).
+  static std::optional<double>& axis_slot(block& b, int i) {
+    std::optional<double>* slots[6] = {&b.axes.x_mm, &b.axes.y_mm, &b.axes.z_mm,
+                                       &b.axes.a_deg, &b.axes.b_deg, &b.axes.c_deg};
+    return *slots[i];
+  }
+
+  /// G90 / G91 (Fanuc 30i/31i/32i-B Operator's Manual, "Absolute and incremental programming";
+  /// LinuxCNC G-code reference, G90, G91): under G91 an axis word is a distance from the last
+  /// programmed position of its axis, linear and rotary alike. The block gets the position the
+  /// control reaches, so the model holds absolute positions and a writer writes them: an
+  /// incremental word whose base is not known — no absolute position of its axis yet, or a
+  /// machine-coordinate or home move since (G53, G28, G30: the workpiece position they leave is
+  /// the machine's) — is refused at the word. Machine-coordinate and home blocks keep their
+  /// words as written (G28's intermediate point is incremental under G91) and the distance mode
+  /// the control reads them in: `state.distance` says G91 there, and G90 on the next block that
+  /// moves; elsewhere it says what a block without motion writes (G90, G91) or G90 where needed.
+  /// A distance of 0 from an unknown position (`G91 G0 B0.` after `G28 B0.`) moves nothing: the
+  /// word is left out, and the position stays unknown.
+  void absolute_positions(block& b, const line_words& l) {
+    const auto said = state_.incremental ? distance_mode::incremental : distance_mode::absolute;
     if (b.machine_coordinates) {
-      if (b.axes.x_mm) state_.last[0].reset();
-      if (b.axes.y_mm) state_.last[1].reset();
-      if (b.axes.z_mm) state_.last[2].reset();
-    } else if (state_.incremental && b.moves()) {
-      // `G91 G28 Z0` homes; G91 stays in effect, so a move after it without G90 is incremental.
-      error(b.where.column, "incremental positioning (G91 of line " + std::to_string(state_.incremental_line) +
-                                ", not cancelled by G90) is not supported");
+      if (l.distance || state_.written_incremental != state_.incremental) b.state.distance = said;
+      state_.written_incremental = state_.incremental;
+      bool any = false;
+      for (int i = 0; i < 6; ++i)
+        if (axis_slot(b, i)) any = true;
+      for (int i = 0; i < 6; ++i)  // G28 / G30 without axis words send every axis home
+        if (axis_slot(b, i) || (l.homing && !any)) state_.last[i].reset(), state_.lost_line[i] = line_;
+      return;
+    }
+    static constexpr char letters[] = "XYZABC";
+    for (int i = 0; i < 6; ++i) {
+      const word* w = nullptr;
+      for (const word& x : words_)
+        if (x.letter == letters[i]) w = &x;
+      decimals_[i] = w ? decimals_written(w->digits) : 0;
+    }
+    if (state_.incremental) {
+      for (int i = 0; i < 6; ++i) {
+        auto& p = axis_slot(b, i);
+        if (!p) continue;
+        if (state_.last[i]) {
+          const axis_position to = reached(*state_.last[i], *p, decimals_[i]);
+          p = to.value, decimals_[i] = to.decimals;
+          continue;
+        }
+        if (*p == 0) {  // no distance: the axis stays wherever it is, which a block without the word says
+          p.reset();
+          continue;
+        }
+        const word* w = nullptr;
+        for (const word& x : words_)
+          if (x.letter == letters[i]) w = &x;
+        const std::string since = state_.lost_line[i] ? "since the machine-coordinate or home move of line " +
+                                                            std::to_string(state_.lost_line[i])
+                                                      : "since the start of the program";
+        error(w ? w->column : b.where.column,
+              "incremental " + std::string(1, letters[i]) + " (G91 of line " + std::to_string(state_.incremental_line) +
+                  ") from a position the program does not say: no absolute " + letters[i] + " " + since +
+                  ", so the move would start from wherever the machine stands; program an absolute " + letters[i] +
+                  " (G90) before it");
+      }
+    }
+    if (b.moves() || (b.motion && is_arc(*b.motion))) {
+      if (l.distance || state_.written_incremental) b.state.distance = distance_mode::absolute;
+      state_.written_incremental = false;
+    } else if (l.distance) {
+      b.state.distance = said;
+      state_.written_incremental = state_.incremental;
     }
   }
 
@@ -730,7 +790,7 @@ class basic_reader {
       const word* w = l.ijk_word[first] ? l.ijk_word[first] : l.ijk_word[second];
       error(w->column, "arc centre needs a known start point");
     } else {
-      double c[3] = {*last[0], *last[1], *last[2]};
+      double c[3] = {last[0]->value, last[1]->value, last[2]->value};
       if (l.ijk[first]) c[first] += *l.ijk[first];
       if (l.ijk[second]) c[second] += *l.ijk[second];
       a.centre_mm = vec3{c[0], c[1], c[2]};

@@ -1,7 +1,7 @@
 /// @file program/iso/reader_state.hpp
 /// What the ISO reader (reader.hpp) keeps: `line_words`, what one line's words say before they
 /// are taken (its G codes, I J K, R, the dwell), `reader_state`, the modal record carried from
-/// line to line (plane, last point, G91 of a homing block, inch, inverse time, the last H and
+/// line to line (plane, last position of each axis, G90/G91, inch, inverse time, the last H and
 /// D), and `no_own_words`, ISO's answers to what a dialect built on its reader decides itself
 /// (LinuxCNC's `own_words`): the words it owns, the parameters a program may set, the whole
 /// and the decimal-point addresses.
@@ -16,6 +16,7 @@
 #include "../block.hpp"
 #include "../interp/parameter_store.hpp"
 #include "expression.hpp"
+#include "../incremental.hpp"
 #include "lexer.hpp"
 #include "parameter_rules.hpp"
 #include "statements.hpp"
@@ -38,6 +39,7 @@ struct line_words {
   std::optional<double> ijk[3];
   const word* ijk_word[3] = {};
   std::optional<double> radius;
+  const word* distance = nullptr;  ///< G90 or G91
   const word* unknown = nullptr;  ///< the first word not understood
   bool suppress = false;          ///< a cycle's or frame's words: no further diagnostics
 
@@ -51,9 +53,11 @@ struct reader_state {
   arc_plane plane = arc_plane::xy;
   bool tcp = false;           // G43.4 or G43.5 active (modal group 08): G43 or G49 ends it
   bool vector_tcp = false;    // G43.5 active
-  bool incremental = false;   // G91 from a homing block, until G90
-  std::size_t incremental_line = 0;
-  std::optional<double> last[3];  // in the program's unit
+  bool incremental = false;          // G91 in effect, until G90
+  std::size_t incremental_line = 0;  // the line of that G91
+  bool written_incremental = false;  // the mode the written program is in: G91 said by a block kept as G91
+  std::optional<axis_position> last[6];  // X Y Z A B C: the last programmed position, in the program's unit
+  std::size_t lost_line[6] = {};     // the machine-coordinate or home move that made it unknown (0: none)
   bool inch = false;          // G20 active: lengths are inches
   bool inverse_time = false;  // G93 active: F is not a length
   bool moved = false;         // a block has moved: the unit is fixed

@@ -322,8 +322,13 @@ class writer {
   /// register the block names (ISO's, LinuxCNC's tool), else, as another dialect compensates
   /// with the active tool's own radius, that tool's register (D n = tool n, as for H); with no
   /// tool changed before, refused (FANUC B-63324EN/03 ch. 14; docs/dialects/compensation.md).
+  /// G91 only where it is not a block's positions: alone, or on a machine-coordinate or home
+  /// block (whose intermediate point it makes incremental).
   void state_words(const block& b) {
     const auto& s = b.state;
+    if (s.distance == distance_mode::incremental && b.moves() && !b.machine_coordinates)
+      fail(b, "G91 on a block that moves: a block holds the positions its axes reach (readers resolve incremental "
+              "words), so its words cannot be written as distances");
     if (s.distance) words_.push_back(*s.distance == distance_mode::absolute ? "G90" : "G91");
     if (s.working_plane) {
       plane_ = *s.working_plane;

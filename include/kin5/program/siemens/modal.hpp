@@ -11,6 +11,7 @@
 #include <string>
 
 #include "../block.hpp"
+#include "../incremental.hpp"
 
 namespace kin5::program::siemens::detail {
 
@@ -28,6 +29,26 @@ struct modal_state {
   bool tool_loaded = false;       ///< a tool change has been read (the reader's)
   bool radius_on = false;         ///< G41/G42 in effect (the reader's)
   bool startup_pending = false;   ///< G41/G42 said without motion: the next move starts it up
+  bool incremental = false;       ///< G91 in effect (the reader's)
+  std::size_t incremental_line = 0;  ///< the line of that G91 (the reader's)
+  bool written_incremental = false;  ///< the model's G91 in effect: a block kept G91 (the reader's)
+  /// X Y Z (mm) A B C: the last programmed position with its decimals, for incremental words
+  /// (the reader's; program/incremental.hpp), and the machine-coordinate line that made one
+  /// unknown.
+  std::array<std::optional<axis_position>, 6> last;
+  std::array<std::size_t, 6> lost_line{};
+
+  /// Takes block `b`'s axis words with the decimals each has (`reached`'s, for an inch word one
+  /// more than written: a millimetre value).
+  void reach(const block& b, const std::array<int, 6>& decimals) {
+    const std::array<std::optional<double>, 6> given = {b.axes.x_mm, b.axes.y_mm, b.axes.z_mm,
+                                                        b.axes.a_deg, b.axes.b_deg, b.axes.c_deg};
+    for (std::size_t i = 0; i < 6; ++i) {
+      if (!given[i]) continue;
+      if (b.machine_coordinates) last[i].reset(), lost_line[i] = b.where.line;
+      else last[i] = axis_position{*given[i], decimals[i]};
+    }
+  }
 
   /// Takes block `b`'s linear axis words (machine coordinates make them unknown).
   void move(const block& b) {

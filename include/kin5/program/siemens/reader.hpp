@@ -7,7 +7,8 @@
 /// programmed point) or `CR=` give arcs, `SUPA` / `G53` / `G153` mean machine coordinates.
 /// `G70`/`G700` inch blocks are read in millimetres (`units`). `G41`/`G42`/`G40` are cutter
 /// radius compensation with the first edge `D1` only (`compensation`). An R parameter assigned a number
-/// stands for it in `X=R1` (parameters.hpp). Expressions, `G91` / `IC()` and
+/// stands for it in `X=R1` (parameters.hpp). `G91`, `X=IC(…)` and `X=AC(…)` are resolved to the
+/// positions they reach (`incremental_words`). Expressions and
 /// active frame changes (`TRANS`, `ROT`, `CYCLE800`,
 /// …) are errors. A line without geometry that is not understood is kept verbatim (`passthrough`).
 /// Most lines of a long program (`N… G1 X… Y… Z… A… B… F…`) are read in one scan
@@ -15,6 +16,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -160,6 +162,72 @@ inline void units(line_parse& p, modal_state& state, std::vector<diagnostic>& er
   b.feed.reset();
 }
 
+/// G90 / G91 and `=AC(…)` / `=IC(…)` (SINUMERIK 840D sl Programming Manual Fundamentals,
+/// "Absolute dimensions (G90, AC)", "Incremental dimensions (G91, IC)"): an incremental axis word
+/// is a distance from the last programmed position of its axis, linear or rotary. The block gets
+/// the position the control reaches (millimetres: after `units`), so the model holds absolute
+/// positions; an incremental word whose base is not known (no absolute position yet, or a
+/// machine-coordinate move since: SUPA, G53, G153) is refused at the word, and so is IC or AC in
+/// a machine-coordinate block, whose words are kept as written. A distance of 0 from an unknown
+/// position moves nothing: the word is left out.
+inline void incremental_words(line_parse& p, modal_state& state, std::vector<diagnostic>& errors) {
+  block& b = p.b;
+  if (p.g91) {
+    if (p.g91->first && !state.incremental) state.incremental_line = b.where.line;
+    state.incremental = p.g91->first;
+  }
+  std::optional<double>* slots[6] = {&b.axes.x_mm, &b.axes.y_mm, &b.axes.z_mm, &b.axes.a_deg, &b.axes.b_deg, &b.axes.c_deg};
+  static constexpr char letters[] = "XYZABC";
+  for (std::size_t i = 0; i < 6; ++i) {
+    if (!*slots[i]) continue;
+    if (i < 3 && state.inch) ++p.axis_decimals[i];  // ×25.4: one decimal more
+    const std::size_t column = p.axis_column[i] + 1;
+    const std::string letter(1, letters[i]);
+    if (b.machine_coordinates) {
+      if (p.axis_incremental[i])
+        errors.push_back({{b.where.file, b.where.line, column},
+                          letter + "=" + (*p.axis_incremental[i] ? "IC" : "AC") +
+                              "(…) in a machine-coordinate block is not supported (its words are kept as written)"});
+      continue;
+    }
+    if (!p.axis_incremental[i].value_or(state.incremental)) continue;
+    if (state.last[i]) {
+      const axis_position to = reached(*state.last[i], **slots[i], p.axis_decimals[i]);
+      *slots[i] = to.value, p.axis_decimals[i] = to.decimals;
+      continue;
+    }
+    if (**slots[i] == 0) {  // no distance: the axis stays wherever it is, which a block without the word says
+      slots[i]->reset();
+      continue;
+    }
+    const std::string by = p.axis_incremental[i] ? letter + "=IC(…)" : "G91 of line " + std::to_string(state.incremental_line);
+    const std::string since = state.lost_line[i] ? "since the machine-coordinate move of line " + std::to_string(state.lost_line[i])
+                                                 : "since the start of the program";
+    errors.push_back({{b.where.file, b.where.line, column},
+                      "incremental " + letter + " (" + by + ") from a position the program does not say: no absolute " +
+                          letter + " " + since + ", so the move would start from wherever the machine stands; program an "
+                          "absolute " + letter + " (G90) before it"});
+  }
+}
+
+/// The distance mode the block says in the model (`state.distance`): a machine-coordinate block
+/// the control's own (its words are kept as written), a block that moves G90 where the model's
+/// G91 is in effect (its positions are absolute), another block the G90 or G91 it writes.
+inline void distance_written(line_parse& p, modal_state& state) {
+  block& b = p.b;
+  if (b.machine_coordinates) {
+    if (p.g91 || state.written_incremental != state.incremental)
+      b.state.distance = state.incremental ? distance_mode::incremental : distance_mode::absolute;
+    state.written_incremental = state.incremental;
+  } else if (b.moves() || (b.motion && is_arc(b.motion))) {
+    if (p.g91 || state.written_incremental) b.state.distance = distance_mode::absolute;
+    state.written_incremental = false;
+  } else if (p.g91) {
+    b.state.distance = state.incremental ? distance_mode::incremental : distance_mode::absolute;
+    state.written_incremental = state.incremental;
+  }
+}
+
 /// `G4 F2`: a dwell of F seconds, which the 840D takes only in a block of its own (SINUMERIK
 /// 840D sl Fundamentals 05/2017, "Dwell time (G4)"); no F, or other words with it, refused.
 inline void dwell(line_parse& p, std::vector<diagnostic>& errors) {
@@ -223,6 +291,7 @@ inline void finish(line_parse& p, modal_state& state, read_result& result) {
     {
       std::vector<diagnostic> found;
       units(p, state, found);
+      incremental_words(p, state, found);
       for (auto& d : found) keep_or_count(p.errors, p.errors_not_kept, std::move(d));
     }
     // Checks across words only on a line whose words read cleanly: one diagnostic per problem
@@ -236,7 +305,9 @@ inline void finish(line_parse& p, modal_state& state, read_result& result) {
       inverse_time_feed(b, state, motion_before, found);
       for (auto& d : found) keep_or_count(p.errors, p.errors_not_kept, std::move(d));
     }
+    distance_written(p, state);
     state.move(b);
+    state.reach(b, p.axis_decimals);
     program_end(b, state);
   }
   std::stable_sort(p.errors.begin(), p.errors.end(),
@@ -275,8 +346,12 @@ struct plain_motion {
   axis_words axes;
   std::optional<double> feed;
 
-  /// Takes word `letter` `v`; false if the full reader must judge it (twice, not whole, …).
-  bool take(char letter, double v) {
+  std::array<int, 6> decimals{};  ///< X Y Z A B C: the decimals written
+
+  /// Takes word `letter` `v`, written `text`; false if the full reader must judge it (twice, not
+  /// whole, …).
+  bool take(char letter, double v, std::string_view text) {
+    if (is_axis_letter(letter)) decimals[axis_index(letter)] = decimals_written(text);
     auto set = [v](std::optional<double>& field) {
       if (field) return false;
       field = v;
@@ -310,6 +385,7 @@ struct plain_motion {
 /// false: the full reader then reads it. A law checks that both readers agree on such lines.
 inline bool read_plain_motion(std::string_view line, block& b, modal_state& state) {
   if (state.inch) return false;  // the full reader converts
+  if (state.incremental || state.written_incremental) return false;  // the full reader resolves, says G90
   plain_motion words;
   std::size_t i = 0;
   for (;;) {
@@ -318,9 +394,10 @@ inline bool read_plain_motion(std::string_view line, block& b, modal_state& stat
     const char letter = line[i++];
     const parsed_number n = read_number(line.substr(i));
     if (n.error != number_error::none) return false;
+    const std::string_view text = line.substr(i, n.length);
     i += n.length;
     if (i < line.size() && !is_space(line[i])) return false;
-    if (!words.take(letter, n.value)) return false;
+    if (!words.take(letter, n.value, text)) return false;
   }
   if (is_arc(words.motion ? words.motion : state.motion) && words.axes.has_linear()) return false;  // needs its centre
   if (state.inverse_time) return false;  // the full reader carries the F of inverse time (`inverse_time_feed`)
@@ -330,6 +407,7 @@ inline bool read_plain_motion(std::string_view line, block& b, modal_state& stat
   b.feed = words.feed;
   if (words.motion) state.motion = words.motion;
   state.move(b);
+  state.reach(b, words.decimals);
   if (b.moves()) state.startup_pending = false;
   return true;
 }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../incremental.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
@@ -50,7 +51,16 @@ struct line_parse {
   std::optional<std::pair<std::string, std::size_t>> radius_word;  ///< G40, G41 or G42 (column)
   std::optional<long long> edge;                    ///< D n: the cutting edge selected
   bool only_assignments = false;  ///< the line assigns numbers (`_X=1 _Y=2`) and does nothing else
+  std::optional<std::pair<bool, std::size_t>> g91;  ///< G91 (true) or G90 (false), and its column
+  std::array<std::optional<bool>, 6> axis_incremental;  ///< X Y Z A B C: `=IC(…)` (true), `=AC(…)` (false)
+  std::array<int, 6> axis_decimals{};                    ///< X Y Z A B C: the decimals written
+  std::array<std::size_t, 6> axis_column{};              ///< X Y Z A B C: the word's column
 };
+
+/// The index of axis letter `c` in X Y Z A B C.
+constexpr std::size_t axis_index(char c) {
+  return c == 'X' ? 0 : c == 'Y' ? 1 : c == 'Z' ? 2 : c == 'A' ? 3 : c == 'B' ? 4 : 5;
+}
 
 inline const std::string expression_in_axis = "expressions and parameters in axis words are not supported";
 
@@ -154,8 +164,8 @@ class word_reader {
   void expression(const word& w, bool geometry) {
     const std::size_t start = w.column;
     const std::string value = lexing::upper(w.text);
-    if (value.rfind("IC(", 0) == 0) {
-      error(start, "incremental positioning (IC) is not supported");
+    if ((value.rfind("IC(", 0) == 0 || value.rfind("AC(", 0) == 0) && w.extension.empty() && geometry) {
+      return dimension(w, value[0] == 'I');
     } else if (value == "NAN" || value == "INF" || value == "-NAN" || value == "-INF" || value == "INFINITY") {
       error(start, "value out of range");
     } else if (geometry) {
@@ -165,6 +175,29 @@ class word_reader {
     }
     if (geometry) mark_geometry(start);
     else out_.has_content = true;
+  }
+
+  /// `X=IC(5)`, `X=AC(5)`: this axis word incremental or absolute whatever G90/G91 say (SINUMERIK
+  /// 840D sl Programming Manual Fundamentals, "Absolute dimensions (G90, AC)", "Incremental
+  /// dimensions (G91, IC)"), a plain number inside. I J K are incremental already: `I=IC(…)`
+  /// is `I…`, and an absolute centre `I=AC(…)` is refused.
+  void dimension(const word& w, bool incremental) {
+    const std::size_t start = w.column;
+    mark_geometry(start);
+    const std::string_view inside = w.text.size() >= 4 && w.text.back() == ')' ? w.text.substr(3, w.text.size() - 4)
+                                                                               : std::string_view{};
+    const std::string_view number = lexing::trim(inside);
+    const parsed_number n = read_number(number);
+    const std::string name = std::string(1, w.letter) + "=" + (incremental ? "IC" : "AC");
+    if (number.empty() || n.error != number_error::none || n.length != number.size())
+      return error(start, name + "(…) takes a plain number here: " + expression_in_axis);
+    if (is_centre_letter(w.letter)) {
+      if (!incremental) return error(start, name + "(…): an absolute arc centre is not supported (write I J K from the start point)");
+      return centre(w.letter, n.value, start);
+    }
+    const std::size_t i = axis_index(w.letter);
+    numbered(w.letter, n.value, number, start);
+    out_.axis_incremental[i] = incremental;
   }
 
   /// `X=…`: a plain number for X Y Z A B C I J K F S T, a string for T.
@@ -229,6 +262,10 @@ class word_reader {
 
   void numbered(char letter, double v, std::string_view number_text, std::size_t start) {
     block& b = out_.b;
+    if (is_axis_letter(letter)) {
+      out_.axis_decimals[axis_index(letter)] = decimals_written(number_text);
+      out_.axis_column[axis_index(letter)] = start;
+    }
     switch (letter) {
       case 'N':
         if (whole(letter, v, start) && !duplicate(b.number.has_value(), start, "N")) b.number = static_cast<long long>(v);
@@ -307,8 +344,10 @@ class word_reader {
     } else if (g >= 17 && g <= 19) {
       out_.plane = g == 17 ? arc_plane::xy : g == 18 ? arc_plane::zx : arc_plane::yz;
       b.state.working_plane = out_.plane;
-    } else if (g == 90) {
-      b.state.distance = distance_mode::absolute;
+    } else if (g == 90 || g == 91) {
+      if (out_.g91 && out_.g91->first != (g == 91))
+        return error(start, "G90 and G91 in one block: two distance modes; write the one meant");
+      out_.g91 = {g == 91, start};
     } else if (g == 40 || g == 41 || g == 42) {
       if (out_.radius_word && out_.radius_word->first != canonical)
         return error(start, "two cutter radius compensation words in one block");
@@ -333,8 +372,7 @@ class word_reader {
   }
 
   void other_g(long long g, const std::string& canonical, std::size_t start) {
-    if (g == 91) error(start, "incremental positioning (G91) is not supported");
-    else if (g == 70 || g == 71 || g == 700 || g == 710) unit_word(g, canonical, start);
+    if (g == 70 || g == 71 || g == 700 || g == 710) unit_word(g, canonical, start);
     else if (g == 53 || g == 153) out_.b.machine_coordinates = true;
     else if (g == 58 || g == 59) out_.frame_words.emplace_back(canonical, start);
     else if (g == 4) out_.dwell_column = start;

@@ -319,6 +319,9 @@ class writer {
   /// no reader gives them yet.
   void state_words(std::string& line, const block& b, const std::string& file) {
     const auto& s = b.state;
+    if (s.distance == distance_mode::incremental && b.moves() && !b.machine_coordinates)
+      fail(b, file, "G91 on a block that moves: a block holds the positions its axes reach (readers resolve "
+                    "incremental words), so its words cannot be written as distances");
     if (s.distance) detail::append_word(line, *s.distance == distance_mode::absolute ? "G90" : "G91");
     if (s.working_plane) {
       written_.plane = *s.working_plane;

@@ -2,6 +2,7 @@
 // drawn together with the block it must read as (the independent expectation), then spelled with
 // random case, blanks, signs, trailing and leading dots, block numbers (missing, repeated) and
 // line endings.
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -60,6 +61,7 @@ std::string draw_comment() {
 
 struct modal {
   std::optional<double> last[3];
+  std::optional<long long> position[3];  ///< X Y Z in thousandths, unknown after M91/M92: IX's base
   arc_plane plane = arc_plane::xy;
   std::optional<vec3> centre;
   long long number = 0;
@@ -119,11 +121,19 @@ item draw_item(modal& m) {
     case 2:
     case 3: {  // L
       t = draw_case("L");
+      std::string m_words;
+      add_m_codes(m_words, b);  // first: an M91/M92 block takes no incremental words
       const int required = *rc::gen::inRange(0, 6);  // an L has an end point: one axis at least
       for (int a = 0; a < 6; ++a) {
         if (a != required && !*rc::gen::arbitrary<bool>()) continue;
-        const double v = a < 3 ? draw_decimal(-2000, 2000, 3) : draw_decimal(-360, 360, 3);
-        t += gap() + value_word(letters[a], v, 3);
+        double v = a < 3 ? draw_decimal(-2000, 2000, 3) : draw_decimal(-360, 360, 3);
+        if (a < 3 && m.position[a] && !b.machine_coordinates && *rc::gen::inRange(0, 3) == 0) {
+          // IX: v on from the last position; the model holds the position reached
+          t += gap() + value_word("I" + letters[a], v, 3);
+          v = static_cast<double>(*m.position[a] + std::llround(v * 1000)) / 1000.0;
+        } else {
+          t += gap() + value_word(letters[a], v, 3);
+        }
         if (a < 3) linear(b, a) = v;
         if (a == 3) b.axes.a_deg = v;
         if (a == 4) b.axes.b_deg = v;
@@ -146,7 +156,7 @@ item draw_item(modal& m) {
           b.feed = f;
         }
       }
-      add_m_codes(t, b);
+      t += m_words;
       break;
     }
     case 4: {  // LN with a tool-axis vector
@@ -308,7 +318,10 @@ item draw_item(modal& m) {
   if (kind != 13 && kind != 10) add_comment(t, b);
   if (!b.passthrough)
     for (int a = 0; a < 3; ++a)
-      if (const auto v = linear(b, a)) m.last[a] = v;
+      if (const auto v = linear(b, a)) {
+        m.last[a] = v;
+        m.position[a] = b.machine_coordinates ? std::nullopt : std::optional<long long>(std::llround(*v * 1000));
+      }
   return it;
 }
 

@@ -6,6 +6,7 @@
 /// endings.
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -44,6 +45,7 @@ struct flavour {
 struct item {
   block expected;
   std::vector<std::string> words;  // spelled words, joined with random blanks
+  std::optional<bool> g91;         // G91 (true) or G90 (false) said in the block
 };
 
 /// What the generator knows of the program so far (the reader's record, drawn independently).
@@ -51,20 +53,22 @@ struct state {
   std::optional<motion_kind> motion;
   arc_plane plane = arc_plane::xy;
   bool vector_tcp = false;
-  bool incremental = false;  // G91 of a homing block: the next block says G90
+  bool g91 = false;          // G91 in effect: axis words are distances
+  bool written_g91 = false;  // the model's G91 in effect: a machine-coordinate block said it
   bool inverse_time = false;  // G93: every feed move gives its F
-  std::optional<double> last[3];
+  std::optional<long long> last[6];  // X Y Z A B C in thousandths: each incremental sum exact
 };
 
-/// The state words G17/G18/G19, G40 and G90 read into (`block::state`); false for another word.
+/// A position in thousandths as the double the reader gives (program/incremental.hpp).
+inline double thousandths(long long n) { return static_cast<double>(n) / 1000.0; }
+
+/// The state words G17/G18/G19 and G40 read into (`block::state`); false for another word.
 inline bool read_as_state(const std::string& g, block& b, state& st) {
   if (g == "G17" || g == "G18" || g == "G19") {
     st.plane = g == "G17" ? arc_plane::xy : g == "G18" ? arc_plane::zx : arc_plane::yz;
     b.state.working_plane = st.plane;
   } else if (g == "G40") {
     b.state.radius_compensation = cutter_side::off;
-  } else if (g == "G90") {
-    b.state.distance = distance_mode::absolute;
   } else {
     return false;
   }
@@ -83,6 +87,21 @@ inline void draw_motion(item& it, state& st, const flavour& f) {
   const bool arc = kind >= 2;
   const bool known = st.last[0] && st.last[1] && st.last[2];
   if (arc && !known) return draw_motion(it, st, f);
+  if (st.g91 && !(known && st.last[3] && st.last[4] && st.last[5])) {  // a distance from an unknown position
+    it.g91 = false;
+    st.g91 = false;
+  }
+  // Each axis word: a position, or under G91 a distance from the last one (the model holds the
+  // position it reaches).
+  const auto axis = [&](int k, char letter, long long at) {
+    (k == 0 ? b.axes.x_mm : k == 1 ? b.axes.y_mm : k == 2 ? b.axes.z_mm : k == 3 ? b.axes.a_deg
+     : k == 4 ? b.axes.b_deg : b.axes.c_deg) = thousandths(at);
+    it.words.push_back(spell_word(letter, thousandths(st.g91 ? at - *st.last[k] : at), 3, true));
+  };
+  const auto draw_at = [&](int k, long long range) {  // a position, or a distance of at most `range`
+    const long long d = std::llround(draw_decimal(-static_cast<double>(range), static_cast<double>(range), 3) * 1000);
+    return st.g91 ? *st.last[k] + d : d;
+  };
   const bool write_g = arc || !st.motion || *rc::gen::arbitrary<bool>();
   const motion_kind m = kind == 0 ? motion_kind::rapid : kind == 1 ? motion_kind::linear : kind == 2 ? motion_kind::arc_cw : motion_kind::arc_ccw;
   const motion_kind effective = write_g ? m : *st.motion;
@@ -92,36 +111,25 @@ inline void draw_motion(item& it, state& st, const flavour& f) {
   }
   st.motion = effective;
   const bool arc_effective = effective == motion_kind::arc_cw || effective == motion_kind::arc_ccw;
-  double pos[3];
-  bool have[3] = {false, false, false};
-  const char* names = "XYZ";
+  long long pos[6];
+  bool have[6] = {false, false, false, false, false, false};
+  const char* names = "XYZABC";
   for (int k = 0; k < 3; ++k) {
     if (*rc::gen::inRange(0, 3) != 0) {
-      pos[k] = draw_decimal(-1000, 1000, 3);
+      pos[k] = draw_at(k, 1000);
       have[k] = true;
     }
   }
   if (!have[0] && !have[1] && !have[2] && (arc_effective || *rc::gen::arbitrary<bool>())) {
-    pos[0] = draw_decimal(-1000, 1000, 3);
+    pos[0] = draw_at(0, 1000);
     have[0] = true;
   }
-  for (int k = 0; k < 3; ++k)
-    if (have[k]) {
-      (k == 0 ? b.axes.x_mm : k == 1 ? b.axes.y_mm : b.axes.z_mm) = pos[k];
-      it.words.push_back(spell_word(names[k], pos[k], 3, true));
-    }
-  const char* rot = "ABC";
-  for (int k = 0; k < 3; ++k)
-    if (*rc::gen::inRange(0, 3) == 0) {
-      const double v = draw_decimal(-360, 360, 3);
-      (k == 0 ? b.axes.a_deg : k == 1 ? b.axes.b_deg : b.axes.c_deg) = v;
-      it.words.push_back(spell_word(rot[k], v, 3, true));
-    }
-  if (!b.moves()) {  // at least one axis word
-    const double v = draw_decimal(-360, 360, 3);
-    b.axes.c_deg = v;
-    it.words.push_back(spell_word('C', v, 3, true));
-  }
+  for (int k = 3; k < 6; ++k)
+    if (*rc::gen::inRange(0, 3) == 0) pos[k] = draw_at(k, 360), have[k] = true;
+  if (!have[0] && !have[1] && !have[2] && !have[3] && !have[4] && !have[5])  // at least one axis word
+    pos[5] = draw_at(5, 360), have[5] = true;
+  for (int k = 0; k < 6; ++k)
+    if (have[k]) axis(k, names[k], pos[k]);
   if (arc_effective) {
     arc_words a;
     a.plane = st.plane;
@@ -132,7 +140,7 @@ inline void draw_motion(item& it, state& st, const flavour& f) {
     } else {
       const int first = st.plane == arc_plane::xy ? 0 : st.plane == arc_plane::zx ? 0 : 1;
       const int second = st.plane == arc_plane::xy ? 1 : 2;
-      double c[3] = {*st.last[0], *st.last[1], *st.last[2]};
+      double c[3] = {thousandths(*st.last[0]), thousandths(*st.last[1]), thousandths(*st.last[2])};
       const bool skip_first = *rc::gen::inRange(0, 4) == 0, skip_second = !skip_first && *rc::gen::inRange(0, 4) == 0;
       for (int k : {first, second})
         if (k == first ? !skip_first : !skip_second) {
@@ -150,7 +158,7 @@ inline void draw_motion(item& it, state& st, const flavour& f) {
     it.words.push_back(spell_word('J', j, 7, true));
     it.words.push_back(spell_word('K', k, 7, true));
   }
-  for (int k = 0; k < 3; ++k)
+  for (int k = 0; k < 6; ++k)
     if (have[k]) st.last[k] = pos[k];
   if (*rc::gen::inRange(0, 3) == 0 || (st.inverse_time && effective != motion_kind::rapid)) {
     const double f = draw_decimal(0.1, 20000, 1);
@@ -174,7 +182,11 @@ inline void draw_dwell(item& it, const flavour& f) {
 inline item draw_item(state& st, const flavour& f) {
   item it;
   block& b = it.expected;
-  const bool cancel_incremental = st.incremental;  // after `G91 G28 Z0`: G90 before any move
+  const bool g91_before = st.g91;
+  if (*rc::gen::inRange(0, 6) == 0) {  // G90 or G91 in this block
+    it.g91 = *rc::gen::arbitrary<bool>();
+    st.g91 = *it.g91;
+  }
   if (*rc::gen::inRange(0, 5) == 0) {
     const auto n = *rc::gen::inRange<long long>(0, 100000);
     b.number = n;
@@ -185,7 +197,7 @@ inline item draw_item(state& st, const flavour& f) {
       draw_motion(it, st, f);
       break;
     case 6: {  // harmless modal words, plane selection
-      for (const char* g : {"G17", "G18", "G19", "G40", "G54", "G64", "G90", "G80", "G54.1", "G98"}) {
+      for (const char* g : {"G17", "G18", "G19", "G40", "G54", "G64", "G80", "G54.1", "G98"}) {
         if (*rc::gen::inRange(0, 4) != 0) continue;
         if (std::string(g).rfind("G54", 0) == 0) {  // a work offset, one per block: G54 … G59, extended n
           if (b.state.work_offset) continue;
@@ -204,7 +216,7 @@ inline item draw_item(state& st, const flavour& f) {
         if (!read_as_state(g, b, st)) b.kept_words.push_back(w);
         it.words.push_back(w);
       }
-      if (it.words.empty()) it.words.push_back("G90"), b.state.distance = distance_mode::absolute;
+      if (it.words.empty() && !it.g91) it.g91 = st.g91 = false;
       if (*rc::gen::arbitrary<bool>()) draw_motion(it, st, f);
       break;
     }
@@ -280,17 +292,13 @@ inline item draw_item(state& st, const flavour& f) {
       const int kind = *rc::gen::inRange(0, 4);
       const char* g = kind == 0 ? "G53" : kind == 2 ? "G30" : "G28";
       b.machine_coordinates = true;
-      if (kind == 3) {  // the homing idiom `G91 G28 Z0`: accepted (a later move needs G90 first)
-        b.state.distance = distance_mode::incremental;
-        it.words.push_back(draw_case("G91"));
-        st.incremental = true;
-      }
+      if (kind == 3) it.g91 = st.g91 = true;  // the homing idiom `G91 G28 Z0`
       b.kept_words.push_back(draw_case(g));
       it.words.push_back(b.kept_words.back());
       const double z = draw_decimal(-500, 500, 3);
       b.axes.z_mm = z;
       it.words.push_back(spell_word('Z', z, 3, true));
-      st.last[2].reset();
+      st.last[2].reset();  // the machine's position
       break;
     }
     case 14: {  // controller modes
@@ -300,10 +308,11 @@ inline item draw_item(state& st, const flavour& f) {
       b.number.reset();
       break;
     }
-    case 15:  // a dwell; after `G91 G28 Z0` the G90 below comes first
-      if (!st.incremental) draw_dwell(it, f);
+    case 15:  // a dwell, a block of its own
+      if (!it.g91) draw_dwell(it, f);
       break;
     default: {  // not understood, no axis words
+      st.g91 = g91_before;
       b = block{};
       b.passthrough = true;
       b.text = *rc::gen::element<std::string>("%", "%_N_X");  // words not understood are refused
@@ -311,17 +320,26 @@ inline item draw_item(state& st, const flavour& f) {
       return it;
     }
   }
-  if (cancel_incremental && b.state.distance != distance_mode::incremental) {
-    it.words.push_back(draw_case("G90"));
-    b.state.distance = distance_mode::absolute;
-    st.incremental = false;
-  }
+  if (it.g91) it.words.insert(it.words.begin() + (b.number ? 1 : 0), draw_case(*it.g91 ? "G91" : "G90"));
   if (*rc::gen::inRange(0, 4) == 0) {
     const std::string c = draw_words();
     b.comment = c;
     it.words.push_back(*rc::gen::arbitrary<bool>() ? "(" + draw_blanks() + c + draw_blanks() + ")" : ";" + c);
   }
-  if (it.words.empty()) it.words.push_back("G90"), b.state.distance = distance_mode::absolute;
+  if (it.words.empty()) it.words.push_back("G90"), it.g91 = st.g91 = false;
+  // The distance mode the model says (iso/reader.hpp, `absolute_positions`): a machine-coordinate
+  // block the control's own, a move G90 where the model's G91 is in effect, another block what
+  // it writes.
+  if (b.machine_coordinates) {
+    if (it.g91 || st.written_g91 != st.g91) b.state.distance = st.g91 ? distance_mode::incremental : distance_mode::absolute;
+    st.written_g91 = st.g91;
+  } else if (b.moves() || (b.motion && (*b.motion == motion_kind::arc_cw || *b.motion == motion_kind::arc_ccw))) {
+    if (it.g91 || st.written_g91) b.state.distance = distance_mode::absolute;
+    st.written_g91 = false;
+  } else if (it.g91) {
+    b.state.distance = st.g91 ? distance_mode::incremental : distance_mode::absolute;
+    st.written_g91 = st.g91;
+  }
   return it;
 }
 

@@ -2,6 +2,7 @@
 // the block it must read as (the independent expectation), then spelled with random case,
 // blanks, signs, dots and line endings. Tracking (M428, G12.1 P1) is switched on only where G43
 // holds the loaded tool's length, as the reader requires.
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,13 +27,16 @@ using kin5::test::draw_words;
 struct item {
   block expected;
   std::vector<std::string> words;
+  std::optional<bool> g91;  // G91 (true) or G90 (false) said in the block
 };
 
 /// What the generator knows of the program so far, drawn independently of the reader.
 struct state {
   std::optional<motion_kind> motion;
   arc_plane plane = arc_plane::xy;
-  std::optional<double> last[3];
+  std::optional<long long> last[6];  // X Y Z A B C in thousandths: each incremental sum exact
+  bool g91 = false;                  // G91 in effect: axis words are distances
+  bool written_g91 = false;          // the model's G91 in effect (said on a line without motion)
   bool tracking = false, length = false;  // M428 on; G43 holds the loaded tool's length
   std::optional<long long> loaded;        // the tool of the last M6: G43 without H is its length
   bool inverse_time = false;              // G93: every feed move gives its F
@@ -42,24 +46,26 @@ std::string spell_code(char letter, int v) {
   return draw_case(std::string(1, letter)) + (v < 10 && *rc::gen::arbitrary<bool>() ? "0" : "") + std::to_string(v);
 }
 
-/// X Y Z (at least one when nothing else moves), A B C, each drawn on its own.
+/// A position in thousandths as the double the reader gives (program/incremental.hpp).
+double thousandths(long long n) { return static_cast<double>(n) / 1000.0; }
+
+/// X Y Z (at least one when nothing else moves), A B C, each drawn on its own: a position, or
+/// under G91 a distance from the last one (the model holds the position it reaches; G90 first
+/// where an axis has none yet).
 void draw_axes(item& it, state& st, bool arc) {
   block& b = it.expected;
-  const char* names = "XYZ";
-  for (int k = 0; k < 3; ++k)
-    if (*rc::gen::inRange(0, 3) != 0 || (k == 0 && arc)) {
-      const double v = draw_decimal(-1000, 1000, 3);
-      (k == 0 ? b.axes.x_mm : k == 1 ? b.axes.y_mm : b.axes.z_mm) = v;
-      it.words.push_back(spell_word(names[k], v, 3));
+  if (st.g91)
+    for (const auto& l : st.last)
+      if (!l) it.g91 = st.g91 = false;
+  const char* names = "XYZABC";
+  std::optional<double>* slot[6] = {&b.axes.x_mm, &b.axes.y_mm, &b.axes.z_mm, &b.axes.a_deg, &b.axes.b_deg, &b.axes.c_deg};
+  for (int k = 0; k < 6; ++k)
+    if (k < 3 ? (*rc::gen::inRange(0, 3) != 0 || (k == 0 && arc)) : (*rc::gen::inRange(0, 3) == 0 || (k == 5 && !b.moves()))) {
+      const long long d = std::llround(draw_decimal(k < 3 ? -1000 : -360, k < 3 ? 1000 : 360, 3) * 1000);
+      const long long at = st.g91 ? *st.last[k] + d : d;
+      *slot[k] = thousandths(at);
+      it.words.push_back(spell_word(names[k], thousandths(d), 3));
     }
-  const char* rot = "ABC";
-  for (int k = 0; k < 3; ++k)
-    if (*rc::gen::inRange(0, 3) == 0 || (k == 2 && !b.moves())) {
-      const double v = draw_decimal(-360, 360, 3);
-      (k == 0 ? b.axes.a_deg : k == 1 ? b.axes.b_deg : b.axes.c_deg) = v;
-      it.words.push_back(spell_word(rot[k], v, 3));
-    }
-  static_cast<void>(st);
 }
 
 /// The arc data of an arc block: R, or I J (K) as the offset of the centre from the last point.
@@ -73,7 +79,7 @@ void draw_arc(item& it, state& st) {
   } else {
     const int first = st.plane == arc_plane::yz ? 1 : 0;
     const int second = st.plane == arc_plane::xy ? 1 : 2;
-    double c[3] = {*st.last[0], *st.last[1], *st.last[2]};
+    double c[3] = {thousandths(*st.last[0]), thousandths(*st.last[1]), thousandths(*st.last[2])};
     for (int k : {first, second}) {
       const double off = draw_decimal(-300, 300, 3);
       c[k] += off;
@@ -97,9 +103,9 @@ void draw_motion(item& it, state& st) {
   const bool arc = *st.motion == motion_kind::arc_cw || *st.motion == motion_kind::arc_ccw;
   draw_axes(it, st, arc);
   if (arc) draw_arc(it, st);
-  const std::optional<double>* xyz[3] = {&b.axes.x_mm, &b.axes.y_mm, &b.axes.z_mm};
-  for (int k = 0; k < 3; ++k)
-    if (*xyz[k]) st.last[k] = **xyz[k];
+  const std::optional<double>* at[6] = {&b.axes.x_mm, &b.axes.y_mm, &b.axes.z_mm, &b.axes.a_deg, &b.axes.b_deg, &b.axes.c_deg};
+  for (int k = 0; k < 6; ++k)
+    if (*at[k]) st.last[k] = std::llround(**at[k] * 1000);
   if (*rc::gen::inRange(0, 3) == 0 || (st.inverse_time && *st.motion != motion_kind::rapid)) {
     b.feed = draw_decimal(0.1, 20000, 1);
     it.words.push_back(spell_word('F', *b.feed, 1));
@@ -109,7 +115,7 @@ void draw_motion(item& it, state& st) {
 /// Harmless modal words and work offsets G54 … G59.3.
 void draw_modes(item& it, state& st) {
   block& b = it.expected;
-  for (const char* g : {"G17", "G18", "G19", "G40", "G90", "G80", "G61", "G98"}) {
+  for (const char* g : {"G17", "G18", "G19", "G40", "G80", "G61", "G98"}) {
     if (*rc::gen::inRange(0, 4) != 0) continue;
     const std::string name = g;
     it.words.push_back(draw_case(g));
@@ -118,8 +124,6 @@ void draw_modes(item& it, state& st) {
       b.state.working_plane = st.plane;
     } else if (name == "G40") {
       b.state.radius_compensation = cutter_side::off;
-    } else if (name == "G90") {
-      b.state.distance = distance_mode::absolute;
     } else {
       b.kept_words.push_back(it.words.back());
     }
@@ -129,7 +133,7 @@ void draw_modes(item& it, state& st) {
     b.state.work_offset = work_offset{work_offset_family::g54, n};
     it.words.push_back(draw_case(spelling(*b.state.work_offset)));
   }
-  if (it.words.empty()) it.words.push_back("G90"), b.state.distance = distance_mode::absolute;
+  if (it.words.empty() && !it.g91) it.g91 = st.g91 = false;
 }
 
 /// Tracking on (only with the loaded tool's length in effect: G43 in the line if need be) or off.
@@ -201,6 +205,11 @@ item draw_item(state& st) {
     b.number = *rc::gen::inRange<long long>(0, 100000);
     it.words.push_back(spell_code('N', static_cast<int>(*b.number)));
   }
+  const bool g91_before = st.g91;
+  if (*rc::gen::inRange(0, 5) == 0) {  // G90 or G91 in this block
+    it.g91 = *rc::gen::arbitrary<bool>();
+    st.g91 = *it.g91;
+  }
   switch (*rc::gen::inRange(0, 15)) {
     case 0: case 1: case 2: case 3: case 4:
       draw_motion(it, st);
@@ -223,6 +232,7 @@ item draw_item(state& st) {
       it.words.push_back(draw_case(*b.program_end));
       break;
     case 12: {  // dwell, seconds, in a block of its own
+      if (it.g91) break;
       const double s = draw_decimal(0, 100, 2);
       b.state.dwell_s = s;  // the block holds only its number so far
       it.words.push_back(draw_case("G4"));
@@ -237,11 +247,22 @@ item draw_item(state& st) {
       return it;
     }
     default:
+      st.g91 = g91_before;
       b = block{};
       b.passthrough = true;
       b.text = "%";
       it.words = {b.text};
       return it;
+  }
+  if (it.g91) it.words.insert(it.words.begin() + (b.number ? 1 : 0), draw_case(*it.g91 ? "G91" : "G90"));
+  // The distance mode the model says (iso/reader.hpp, `absolute_positions`): a move G90 where
+  // the model's G91 is in effect, another block what it writes.
+  if (b.moves() || (b.motion && (*b.motion == motion_kind::arc_cw || *b.motion == motion_kind::arc_ccw))) {
+    if (it.g91 || st.written_g91) b.state.distance = distance_mode::absolute;
+    st.written_g91 = false;
+  } else if (it.g91) {
+    b.state.distance = *it.g91 ? distance_mode::incremental : distance_mode::absolute;
+    st.written_g91 = *it.g91;
   }
   if (*rc::gen::inRange(0, 4) == 0) {
     const std::string c = draw_words();

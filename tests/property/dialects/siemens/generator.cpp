@@ -4,6 +4,7 @@
 // comments of either kind, and LF / CRLF / CR line endings.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -138,8 +139,23 @@ void move_block(line& l, state& s) {
   const bool arc = s.motion == motion_kind::arc_cw || s.motion == motion_kind::arc_ccw;
   const std::array<const char*, 3> linear = {"X", "Y", "Z"};
   std::array<std::optional<double>, 3> xyz;
-  for (std::size_t i = 0; i < 3; ++i)
-    if (coin()) xyz[i] = draw_decimal(-2'000'000, 2'000'000, 3), l.words.push_back(spell_address(linear[i], *xyz[i], 3));
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (!coin()) continue;
+    const double v = draw_decimal(-2'000'000, 2'000'000, 3);
+    const int form = *rc::gen::inRange(0, 4);
+    if (form == 0 && s.position[i]) {  // X=IC(d): d on from the last position, which the model holds
+      xyz[i] = static_cast<double>(std::llround(*s.position[i] * 1000) + std::llround(v * 1000)) / 1000.0;
+      l.words.push_back(draw_case(linear[i]) + draw_blanks(1) + "=" + draw_blanks(1) + draw_case("IC") + "(" +
+                        spell_value(v, 3) + ")");
+    } else if (form == 1) {  // X=AC(v): v, as in G90
+      xyz[i] = v;
+      l.words.push_back(draw_case(linear[i]) + draw_blanks(1) + "=" + draw_blanks(1) + draw_case("AC") + "(" +
+                        spell_value(v, 3) + ")");
+    } else {
+      xyz[i] = v;
+      l.words.push_back(spell_address(linear[i], v, 3));
+    }
+  }
   b.axes.x_mm = xyz[0], b.axes.y_mm = xyz[1], b.axes.z_mm = xyz[2];
   switch (*rc::gen::inRange(0, 3)) {
     case 0: {
