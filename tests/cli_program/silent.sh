@@ -447,16 +447,16 @@ case "$name" in
     for d in linuxcnc iso haas siemens heidenhain; do
       run 0 translate --from xyzac-trt --to xyzac-trt --from-dialect linuxcnc --to-dialect "$d" -o "a.$d" a.ngc
       case $d in
-        linuxcnc) alarm='\(ABORT, probe failed\)' ;;
+        linuxcnc) alarm='\(probe\) \(ABORT, probe failed\)' ;;
         iso | haas) alarm='#3000=1 \(probe failed\)' ;;
-        siemens) alarm='SETAL\(65000,"probe failed"\)' ;;
+        siemens) alarm='SETAL\(65000,"probe failed"\) ; probe' ;;
         heidenhain) alarm='[0-9]+ FN 14: ERROR = 1 ;probe failed' ;;
       esac
       count_is "a.$d" "$alarm" 1
       run 0 translate --from xyzac-trt --to xyzac-trt --from-dialect "$d" --to-dialect linuxcnc -o "b.$d.ngc" "a.$d"
-      count_is "b.$d.ngc" '(N[0-9]+ )?\(ABORT, probe failed\)' 1
+      count_is "b.$d.ngc" '(N[0-9]+ )?(\([^()]*\) )?\(ABORT, probe failed\)' 1
       # the abort between the two moves, as in the source (block numbers where the source had them)
-      awk '/^(N[0-9]+ )?G1 X0 /{m=NR} /^(N[0-9]+ )?\(ABORT, probe failed\)$/{a=NR} /^(N[0-9]+ )?G1 X10 /{n=NR}
+      awk '/^(N[0-9]+ )?G1 X0 /{m=NR} /^(N[0-9]+ )?(\([^()]*\) )?\(ABORT, probe failed\)$/{a=NR} /^(N[0-9]+ )?G1 X10 /{n=NR}
            END{exit !(m && a > m && n > a)}' \
         "b.$d.ngc" || { report "b.$d.ngc: the abort is not between the moves"; show "b.$d.ngc"; }
     done
