@@ -64,9 +64,10 @@ class basic_reader {
       : file_(file), result_(result), on_block_(on_block) {}
 
   /// Runs the program `text` (see the file comment), its lines executed at most as `limits` says.
-  /// After the line that ends the program (M30, M2) the control stops; the tape marks `%` and
-  /// comments after it are read, up to the first other line (`O1000`, `N1000`: the subprograms
-  /// of the file, run only where they are called).
+  /// After the line that ends the program (M30, M2) the control stops; the lines after it are
+  /// read as written (a writer of another dialect refuses one with an effect), up to the first
+  /// that starts a part of the file the program calls (`O1000`, the `N1000` of an M97) or is a
+  /// statement.
   void run(std::string_view text, interp::execution_limits limits = {current_read_limits().max_executed_lines}) {
     interp::executor x{text, Own::parameter_rules(), limits};
     store_ = &x.parameters();
@@ -92,9 +93,11 @@ class basic_reader {
         std::string_view s = text.substr(offset, (lf == std::string_view::npos ? text.size() : lf) - offset);
         if (const std::size_t cr = s.find('\r'); cr != std::string_view::npos) s = s.substr(0, cr);
         const text_line line{s, ++number};
-        const std::size_t first = lexing::skip_blanks(s, 0);
-        if (first < s.size() && s[first] != '%' && detail::only_comments(s, first, s.size())) break;
-        read_line(line, interp::statement{});
+        const interp::statement st = syntax.statement_of(line);
+        if (st.kind != interp::statement_kind::ordinary || st.error || st.condition || !st.assignments.empty() ||
+            syntax.starts_called_part(st))
+          break;
+        read_line(line, st);
         offset = lf;
       }
     }

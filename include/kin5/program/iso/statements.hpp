@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -176,6 +177,12 @@ class basic_macro_statements {
     return program ? label + "@O" + std::to_string(*program) : label;
   }
 
+  /// Whether `s`, a line after the program's end, starts a part of the file the program calls
+  /// or may call: a program (`O1000`) or a block a call went to (M97's `N1000`).
+  bool starts_called_part(const interp::statement& s) const {
+    return !s.label.empty() && (s.label[0] == 'O' || called_.count(s.label) > 0);
+  }
+
   /// A flow error's message in this dialect's terms.
   static std::string explain(const std::string& message) {
     if (message == "returns from a call, but no call is open")
@@ -189,6 +196,7 @@ class basic_macro_statements {
   /// Block labels are made once a GOTO or M97 needs them (before, none is searched for).
   mutable bool labels_wanted_ = false;
   mutable std::optional<std::vector<std::pair<std::size_t, long>>> programs_;  // the O lines: offset, number
+  mutable std::set<std::string> called_;  // the labels calls have named
 
   /// Whether keyword `w` (upper case) is at `i`, not run on into a letter.
   static bool keyword(std::string_view s, std::size_t i, std::size_t end, std::string_view w) {
@@ -407,6 +415,7 @@ class basic_macro_statements {
     out.kind = interp::statement_kind::call;
     labels_wanted_ = true;
     out.target = found == 97 ? block_label(number, text) : "O" + std::to_string(number);
+    called_.insert(out.target);
     out.call_frame = found == 65;
     out.ends_program = false;
     return out;

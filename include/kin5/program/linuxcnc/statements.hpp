@@ -68,6 +68,10 @@ class statements {
     return o_word(s, i, end, line);
   }
 
+  /// Whether a line after the program's end starts a called part: LinuxCNC's statements end no
+  /// program (its subroutines skip themselves where the flow meets them), so no line comes after.
+  static bool starts_called_part(const interp::statement&) { return true; }
+
   /// A flow error's message in this dialect's terms: the executor's.
   static std::string explain(const std::string& message) { return message; }
 
