@@ -47,7 +47,7 @@ TEST_CASE("every block is accounted for, and unreachable blocks are all listed w
       if (kind == 0) {  // a non-motion block: comment, M function or spindle speed
         auto& b = test::add_block(p);
         b.comment = "c" + std::to_string(k);
-        b.m_codes = {8};
+        b.state.coolant_flood = true;
         continue;
       }
       double a = *test::uniform(-120.0, 30.0);
