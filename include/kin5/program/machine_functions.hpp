@@ -2,10 +2,9 @@
 /// The M functions whose meaning DIN 66025 / ISO 6983 fix and every kin5 dialect reads the same
 /// way, as the state words they mean (state_words.hpp): M0/M1 stop, M3/M4/M5 spindle, M6 tool
 /// change, M7/M8/M9 coolant, and Heidenhain's M13/M14 (spindle and coolant in one). Readers take
-/// them into `block::state` (`take_machine_function`), so that a block built by meaning and one
-/// read from text are the same block; writers spell the state words back
-/// (`machine_functions_of`). Any other M function is the machine maker's and stays a number in
-/// `block::m_codes`.
+/// them into `block::state` (`read_machine_function`), so that a block built by meaning and one
+/// read from text are the same block; writers spell the state words back (`m_words_of`). Any
+/// other M function is the machine maker's and stays a number in `block::m_codes`.
 /// @code
 ///   kin5::program::state_words s;
 ///   take_machine_function(s, 3);                 // true: s.spindle == clockwise
@@ -96,7 +95,8 @@ inline void read_machine_function(block& b, long long m, machine_function_set se
       g != 0 && std::any_of(b.m_codes.begin(), b.m_codes.end(), [&](int n) { return (groups(n) & g) != 0; });
   if (!later && take_machine_function(b.state, m, set)) return;
   state_words alone;  // what `m` says by itself: a word that says it again (`M5 M5`) is read once
-  const bool again = !later && take_machine_function(alone, m, set) && (!alone.spindle || alone.spindle == b.state.spindle) &&
+  const bool again = !later && take_machine_function(alone, m, set) &&
+                     (!alone.spindle || alone.spindle == b.state.spindle) &&
                      (!alone.coolant_flood || alone.coolant_flood == b.state.coolant_flood) &&
                      (!alone.coolant_mist || alone.coolant_mist == b.state.coolant_mist) &&
                      (!alone.stop || alone.stop == b.state.stop) && (!alone.tool_change || b.state.tool_change);
@@ -138,8 +138,8 @@ inline bool says_m_function(const block& b) {
 /// Appends to `out` every M function block `b` says, each once: M6 first when the block changes
 /// the tool and `tool_change_m6` (a dialect whose tool change is M6), then its state words'
 /// (`machine_functions_of`), then its other numbers as written (an M6 among them too: a writer
-/// whose tool change is not M6 leaves it out). Returns why when a state word
-/// has no M function, else empty.
+/// whose tool change is not M6 leaves it out). Returns why when a state word has no M function,
+/// else empty.
 inline std::string m_words_of(const block& b, machine_function_set set, bool tool_change_m6, std::vector<int>& out) {
   if (tool_change_m6 && changes_tool(b)) out.push_back(6);
   std::string why = machine_functions_of(b.state, set, out);
