@@ -45,7 +45,7 @@ inline program::program tcp_program(program::dialect language, std::string file 
   if (tool) {
     program::block& change = add_block(p);
     change.tool = *tool;
-    change.m_codes = {6};
+    change.state.tool_change = true;
   }
   add_block(p).tcp = true;
   return p;

@@ -117,7 +117,10 @@ struct block {
   std::optional<long long> tool;             ///< tool call / T number
   std::optional<std::string> tool_name;      ///< TOOL CALL "NAME", T="NAME": the tool by name
   std::optional<double> spindle_rpm;         ///< S
-  std::vector<int> m_codes;                  ///< M functions other than those mapped above and `program_end`'s
+  /// M functions whose meaning is the machine maker's (M428, M126, …), as read. Those with one
+  /// meaning in every dialect are state words instead (`state`; machine_functions.hpp), the
+  /// program end is `program_end`, TCP switches `tcp`.
+  std::vector<int> m_codes;
   std::optional<motion_kind> motion;         ///< set when the block commands a motion word (G0-G3, L, C)
   axis_words axes;                           ///< axis words present in the block
   std::optional<arc_words> arc;              ///< circle data of an arc block

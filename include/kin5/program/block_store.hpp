@@ -2,12 +2,17 @@
 /// A compact, append-only record of the blocks of one program, to be replayed in order: what a
 /// second pass over a program reads instead of parsing the text again.
 ///
-/// Each block is packed into a byte record: one word of flags (which fields are present; its last
-/// bit says a byte of flags for the rarer fields follows), then only the fields present, numbers as their exact bytes, strings with their length. A motion
-/// block `N… G1 X Y Z A B F` takes about 70 bytes, a quarter of `sizeof(block)` and without
+/// Each block is packed into a byte record: a word of flags (which fields are present), then
+/// only the fields present, numbers as their exact bytes, strings with their length. The fields a
+/// motion block rarely has (program name and end, comment, modes, tool, kept words, the alarm
+/// stop and the block's kinds) are one group and the state words another: each group has a word of its own
+/// with a bit per field, written only when the group says anything. A motion block
+/// `N… G1 X Y Z A B F` takes about 70 bytes, a quarter of `sizeof(block)` and without
 /// its heap parts. Records go into chunks, so the store grows without copying: a record that
 /// does not fit the rest of the last chunk starts a new one, of its own size if it is larger.
 /// Chunks double from 64 KiB up to 1 MiB, so a short program does not take a whole 1 MiB.
+/// Every field of `block` and of `state_words` has its codec here: the field counts are checked
+/// at compile time (`field_count`), and `block_store_laws` draws every field.
 /// `replay` gives back blocks equal (`==`) to those stored, except:
 /// - `where.file` is the store's file name (one per program, not one per block);
 /// - `text` is dropped where the caller asks (`keep_text`), for blocks whose consumer never
@@ -22,12 +27,25 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "../core/field_count.hpp"
 #include "block.hpp"
+#include "state_words.hpp"
 
 namespace kin5::program {
+
+namespace detail {
+/// Bits of a state field in the store's state word: an `optional<bool>` two, present and value;
+/// a `bool` one, its value; any other `optional` one, present.
+template <class T>
+constexpr unsigned state_bits_of() {
+  return std::is_same_v<T, std::optional<bool>> ? 2 : 1;
+}
+}  // namespace detail
 
 /// The blocks of one program as compact records, replayed in the order stored.
 class block_store {
@@ -88,22 +106,42 @@ class block_store {
   }
 
  private:
-  // One bit per optional field or flag, in the order the fields follow the flags.
+  // The record's first word: one bit per field a motion block may have, in the order the fields
+  // follow the flags, and one per group that has a word of its own.
   enum flag : std::uint32_t {
-    has_text = 1u << 0, has_number = 1u << 1, has_begin = 1u << 2, has_end = 1u << 3, has_comment = 1u << 4,
-    has_tcp = 1u << 5, tcp_on = 1u << 6, has_feed_mode = 1u << 7, has_metric = 1u << 8, metric_on = 1u << 9,
-    has_tool = 1u << 10, has_rpm = 1u << 11, has_m = 1u << 12, has_motion = 1u << 13, has_x = 1u << 14,
-    has_y = 1u << 15, has_z = 1u << 16, has_a = 1u << 17, has_b = 1u << 18, has_c = 1u << 19,
-    has_tool_axis = 1u << 20, has_arc = 1u << 21, arc_centre = 1u << 22, arc_radius = 1u << 23,
-    has_feed = 1u << 24, feed_rapid = 1u << 25, machine_coordinates = 1u << 26, has_kept = 1u << 27,
-    passthrough = 1u << 28, has_state = 1u << 29, framing = 1u << 30,
-    has_more = 1u << 31,  // a byte of `more_fields` follows the flags
+    has_text = 1u << 0, has_number = 1u << 1, has_rpm = 1u << 2, has_m = 1u << 3, has_motion = 1u << 4,
+    has_x = 1u << 5, has_y = 1u << 6, has_z = 1u << 7, has_a = 1u << 8, has_b = 1u << 9, has_c = 1u << 10,
+    has_tool_axis = 1u << 11, has_arc = 1u << 12, arc_centre = 1u << 13, arc_radius = 1u << 14,
+    has_feed = 1u << 15, feed_rapid = 1u << 16,
+    has_other = 1u << 17,  // an `other` word follows
+    has_state = 1u << 18,  // a word of `state_words` follows
   };
-  // The byte after the flags when `has_more` is set: the rarer fields and flags, so that the
-  // common records keep one word of flags.
-  enum more_fields : unsigned char { assignment = 1u << 0, has_alarm = 1u << 1, alarm_number = 1u << 2 };
-  // The byte after the flags' `has_tool`: which of the tool's fields follow.
-  enum tool_fields : unsigned char { tool_number = 1u << 0, tool_named = 1u << 1 };
+  // The word of the fields a motion block rarely has, after the flags' `has_other`.
+  enum other : std::uint32_t {
+    has_begin = 1u << 0, has_end = 1u << 1, has_comment = 1u << 2, has_tcp = 1u << 3, tcp_on = 1u << 4,
+    has_feed_mode = 1u << 5, has_metric = 1u << 6, metric_on = 1u << 7, has_tool = 1u << 8, has_tool_name = 1u << 9,
+    has_kept = 1u << 10, machine_coordinates = 1u << 11, passthrough = 1u << 12, framing = 1u << 13,
+    assignment = 1u << 14, has_alarm = 1u << 15, alarm_number = 1u << 16,
+  };
+  static_assert(field_count<block>() == 25,
+                "a field of `block` has no codec: give it one in block_store.hpp and draw it in block_store_laws");
+  static_assert(field_count<axis_words>() == 7 && field_count<arc_words>() == 3,
+                "a field of `axis_words` or `arc_words` has no codec: give it one in block_store.hpp and draw it "
+                "in block_store_laws");
+
+  // The state words, one codec for all: each field in this list takes bits of the state's word
+  // in turn (a `bool` one, its value; an `optional<bool>` two, present and value; any other
+  // `optional` one, present, and then its value's bytes).
+  static constexpr auto state_fields = std::tuple{
+      &state_words::tool_change,          &state_words::tool_spindle_axis,   &state_words::tool_length_delta_mm,
+      &state_words::tool_radius_delta_mm, &state_words::length_compensation, &state_words::length_register,
+      &state_words::radius_compensation,  &state_words::radius_register,     &state_words::cutting_edge,
+      &state_words::spindle,              &state_words::coolant_flood,       &state_words::coolant_mist,
+      &state_words::work_offset,          &state_words::working_plane,       &state_words::distance,
+      &state_words::dwell_s,              &state_words::stop};
+  static_assert(field_count<state_words>() == std::tuple_size_v<decltype(state_fields)>,
+                "a field of `state_words` has no codec: add it to block_store::state_fields and draw it in "
+                "block_store_laws");
 
   std::string file_;
   std::vector<std::unique_ptr<unsigned char[]>> chunks_;
@@ -163,76 +201,135 @@ class block_store {
     return p;
   }
 
+  // The state words' codec (`state_fields`).
+  static constexpr unsigned state_bit_count = std::apply(
+      [](auto... field) { return (detail::state_bits_of<std::remove_cvref_t<decltype(state_words{}.*field)>>() + ...); },
+      state_fields);
+  static_assert(state_bit_count <= 32, "the state words' word has a bit for each");
+  static_assert(std::is_trivially_copyable_v<state_words>, "state values are kept as their bytes");
+
+  template <class T>
+  static void state_bit(const T& v, std::uint32_t& bits, unsigned& bit) {
+    if constexpr (std::is_same_v<T, std::optional<bool>>) {
+      if (v) bits |= 1u << bit;
+      if (v.value_or(false)) bits |= 1u << (bit + 1);
+    } else if (v) {  // a bool's value, or an optional's presence
+      bits |= 1u << bit;
+    }
+    bit += detail::state_bits_of<T>();
+  }
+  template <class T>
+  void put_state_value(const T& v) {
+    if constexpr (!std::is_same_v<T, bool> && !std::is_same_v<T, std::optional<bool>>)
+      if (v) put(*v);
+  }
+  void put_state(const state_words& s) {
+    std::uint32_t bits = 0;
+    unsigned bit = 0;
+    std::apply([&](auto... field) { (state_bit(s.*field, bits, bit), ...); }, state_fields);
+    put(bits);
+    std::apply([&](auto... field) { (put_state_value(s.*field), ...); }, state_fields);
+  }
+  template <class T>
+  static const unsigned char* get_state_field(const unsigned char* p, std::uint32_t bits, unsigned& bit, T& v) {
+    const bool on = (bits >> bit & 1u) != 0;
+    if constexpr (std::is_same_v<T, bool>) {
+      v = on;
+    } else if constexpr (std::is_same_v<T, std::optional<bool>>) {
+      if (on) v = (bits >> (bit + 1) & 1u) != 0;
+    } else if (on) {
+      typename T::value_type value{};
+      p = get(p, value);
+      v = value;
+    }
+    bit += detail::state_bits_of<T>();
+    return p;
+  }
+  static const unsigned char* get_state(const unsigned char* p, state_words& s) {
+    std::uint32_t bits = 0;
+    p = get(p, bits);
+    unsigned bit = 0;
+    std::apply([&](auto... field) { ((p = get_state_field(p, bits, bit, s.*field)), ...); }, state_fields);
+    return p;
+  }
+
   void encode(const block& b, bool keep_text) {
-    std::uint32_t flags = 0;
-    const auto set = [&](bool on, std::uint32_t bit) {
-      if (on) flags |= bit;
+    std::uint32_t flags = 0, others = 0;
+    const auto set = [](std::uint32_t& word, bool on, std::uint32_t bit) {
+      if (on) word |= bit;
     };
-    set(keep_text && !b.text.empty(), has_text);
-    set(b.number.has_value(), has_number);
-    set(b.program_begin.has_value(), has_begin);
-    set(b.program_end.has_value(), has_end);
-    set(b.comment.has_value(), has_comment);
-    set(b.tcp.has_value(), has_tcp);
-    set(b.tcp.value_or(false), tcp_on);
-    set(b.feed_mode.has_value(), has_feed_mode);
-    set(b.metric.has_value(), has_metric);
-    set(b.metric.value_or(false), metric_on);
-    set(b.tool || b.tool_name, has_tool);  // then a byte says which: tool_number, tool_name
-    set(b.spindle_rpm.has_value(), has_rpm);
-    set(!b.m_codes.empty(), has_m);
-    set(b.motion.has_value(), has_motion);
-    set(b.axes.x_mm.has_value(), has_x);
-    set(b.axes.y_mm.has_value(), has_y);
-    set(b.axes.z_mm.has_value(), has_z);
-    set(b.axes.a_deg.has_value(), has_a);
-    set(b.axes.b_deg.has_value(), has_b);
-    set(b.axes.c_deg.has_value(), has_c);
-    set(b.axes.tool_axis.has_value(), has_tool_axis);
-    set(b.arc.has_value(), has_arc);
-    set(b.arc && b.arc->centre_mm, arc_centre);
-    set(b.arc && b.arc->radius_mm, arc_radius);
-    set(b.feed.has_value(), has_feed);
-    set(b.feed_rapid, feed_rapid);
-    set(b.machine_coordinates, machine_coordinates);
-    set(!b.kept_words.empty(), has_kept);
-    set(b.passthrough, passthrough);
-    set(b.framing, framing);
-    set(!b.state.empty(), has_state);
-    unsigned char more = 0;
-    if (b.assignment) more |= assignment;
-    if (b.alarm) more |= has_alarm;
-    if (b.alarm && b.alarm->number) more |= alarm_number;
-    set(more != 0, has_more);
+    set(flags, keep_text && !b.text.empty(), has_text);
+    set(flags, b.number.has_value(), has_number);
+    set(flags, b.spindle_rpm.has_value(), has_rpm);
+    set(flags, !b.m_codes.empty(), has_m);
+    set(flags, b.motion.has_value(), has_motion);
+    set(flags, b.axes.x_mm.has_value(), has_x);
+    set(flags, b.axes.y_mm.has_value(), has_y);
+    set(flags, b.axes.z_mm.has_value(), has_z);
+    set(flags, b.axes.a_deg.has_value(), has_a);
+    set(flags, b.axes.b_deg.has_value(), has_b);
+    set(flags, b.axes.c_deg.has_value(), has_c);
+    set(flags, b.axes.tool_axis.has_value(), has_tool_axis);
+    set(flags, b.arc.has_value(), has_arc);
+    set(flags, b.arc && b.arc->centre_mm, arc_centre);
+    set(flags, b.arc && b.arc->radius_mm, arc_radius);
+    set(flags, b.feed.has_value(), has_feed);
+    set(flags, b.feed_rapid, feed_rapid);
+    set(flags, !b.state.empty(), has_state);
+    set(others, b.program_begin.has_value(), has_begin);
+    set(others, b.program_end.has_value(), has_end);
+    set(others, b.comment.has_value(), has_comment);
+    set(others, b.tcp.has_value(), has_tcp);
+    set(others, b.tcp.value_or(false), tcp_on);
+    set(others, b.feed_mode.has_value(), has_feed_mode);
+    set(others, b.metric.has_value(), has_metric);
+    set(others, b.metric.value_or(false), metric_on);
+    set(others, b.tool.has_value(), has_tool);
+    set(others, b.tool_name.has_value(), has_tool_name);
+    set(others, !b.kept_words.empty(), has_kept);
+    set(others, b.machine_coordinates, machine_coordinates);
+    set(others, b.passthrough, passthrough);
+    set(others, b.framing, framing);
+    set(others, b.assignment, assignment);
+    set(others, b.alarm.has_value(), has_alarm);
+    set(others, b.alarm && b.alarm->number, alarm_number);
+    set(flags, others != 0, has_other);
     // An upper bound of the record's size: the fixed part, then the strings and lists (a
     // LEB128 size takes at most 10 bytes).
     constexpr std::size_t leb = 10;
-    std::size_t size = sizeof flags + 2 * leb + sizeof(long long) + sizeof(feed_unit) + 1 + sizeof(long long) +
-                       sizeof(double) + sizeof(motion_kind) + 6 * sizeof(double) + sizeof(vec3) + sizeof(arc_plane) +
-                       sizeof(vec3) + sizeof(double) + sizeof(double) + leb + sizeof(state_words) + 1 +
-                       sizeof(long long);
+    std::size_t size = sizeof flags + sizeof others + 2 * leb + sizeof(long long) + sizeof(feed_unit) +
+                       sizeof(long long) + sizeof(double) + sizeof(motion_kind) + 6 * sizeof(double) + sizeof(vec3) +
+                       sizeof(arc_plane) + sizeof(vec3) + sizeof(double) + sizeof(double) + leb + sizeof(std::uint32_t) +
+                       sizeof(state_words) + sizeof(long long);
     if (flags & has_text) size += leb + b.text.size();
+    if (b.alarm) size += leb + b.alarm->message.size();
     for (const auto* s : {&b.program_begin, &b.program_end, &b.comment, &b.tool_name})
       if (*s) size += leb + (*s)->size();
     size += leb + sizeof(int) * b.m_codes.size();
     for (const auto& w : b.kept_words) size += leb + w.size();
-    if (b.alarm) size += leb + b.alarm->message.size();
     record_.resize(size);
     write_ = record_.data();
     put(flags);
-    if (flags & has_more) put(more);
     put_size(b.where.line);
     put_size(b.where.column);
     if (flags & has_text) put_string(b.text);
     if (flags & has_number) put(*b.number);
-    if (flags & has_begin) put_string(*b.program_begin);
-    if (flags & has_end) put_string(*b.program_end);
-    if (flags & has_comment) put_string(*b.comment);
-    if (flags & has_feed_mode) put(*b.feed_mode);
-    if (flags & has_tool) {
-      put(static_cast<unsigned char>((b.tool ? tool_number : 0) | (b.tool_name ? tool_named : 0)));
-      if (b.tool) put(*b.tool);
-      if (b.tool_name) put_string(*b.tool_name);
+    if (flags & has_other) {
+      put(others);
+      if (others & has_begin) put_string(*b.program_begin);
+      if (others & has_end) put_string(*b.program_end);
+      if (others & has_comment) put_string(*b.comment);
+      if (others & has_feed_mode) put(*b.feed_mode);
+      if (others & has_tool) put(*b.tool);
+      if (others & has_tool_name) put_string(*b.tool_name);
+      if (others & has_kept) {
+        put_size(b.kept_words.size());
+        for (const auto& w : b.kept_words) put_string(w);
+      }
+      if (others & has_alarm) {
+        put_string(b.alarm->message);
+        if (others & alarm_number) put(*b.alarm->number);
+      }
     }
     if (flags & has_rpm) put(*b.spindle_rpm);
     if (flags & has_m) {
@@ -251,15 +348,7 @@ class block_store {
     if (flags & arc_centre) put(*b.arc->centre_mm);
     if (flags & arc_radius) put(*b.arc->radius_mm);
     if (flags & has_feed) put(*b.feed);
-    if (flags & has_kept) {
-      put_size(b.kept_words.size());
-      for (const auto& w : b.kept_words) put_string(w);
-    }
-    if (flags & has_state) put(b.state);  // trivially copyable (state_words.hpp)
-    if (more & has_alarm) {
-      put_string(b.alarm->message);
-      if (more & alarm_number) put(*b.alarm->number);
-    }
+    if (flags & has_state) put_state(b.state);
   }
 
   /// Reads one record into `b`, every field but `where.file` replaced.
@@ -283,10 +372,8 @@ class block_store {
     b.kept_words.clear();
     b.state = {};
     b.alarm.reset();
-    std::uint32_t flags = 0;
+    std::uint32_t flags = 0, others = 0;
     p = get(p, flags);
-    unsigned char more = 0;
-    if (flags & has_more) p = get(p, more);
     std::uint64_t v = 0;
     p = get_size(p, v);
     b.where.line = static_cast<std::size_t>(v);
@@ -294,17 +381,26 @@ class block_store {
     b.where.column = static_cast<std::size_t>(v);
     if (flags & has_text) p = get_string(p, b.text);
     p = get_optional(p, flags, has_number, b.number);
-    if (flags & has_begin) p = get_string(p, b.program_begin.emplace());
-    if (flags & has_end) p = get_string(p, b.program_end.emplace());
-    if (flags & has_comment) p = get_string(p, b.comment.emplace());
-    if (flags & has_tcp) b.tcp = (flags & tcp_on) != 0;
-    p = get_optional(p, flags, has_feed_mode, b.feed_mode);
-    if (flags & has_metric) b.metric = (flags & metric_on) != 0;
-    if (flags & has_tool) {
-      unsigned char which = 0;
-      p = get(p, which);
-      p = get_optional(p, which & tool_number ? flags : 0, has_tool, b.tool);
-      if (which & tool_named) p = get_string(p, b.tool_name.emplace());
+    if (flags & has_other) {
+      p = get(p, others);
+      if (others & has_begin) p = get_string(p, b.program_begin.emplace());
+      if (others & has_end) p = get_string(p, b.program_end.emplace());
+      if (others & has_comment) p = get_string(p, b.comment.emplace());
+      if (others & has_tcp) b.tcp = (others & tcp_on) != 0;
+      p = get_optional(p, others, has_feed_mode, b.feed_mode);
+      if (others & has_metric) b.metric = (others & metric_on) != 0;
+      p = get_optional(p, others, has_tool, b.tool);
+      if (others & has_tool_name) p = get_string(p, b.tool_name.emplace());
+      if (others & has_kept) {
+        p = get_size(p, v);
+        b.kept_words.resize(static_cast<std::size_t>(v));
+        for (auto& w : b.kept_words) p = get_string(p, w);
+      }
+      if (others & has_alarm) {
+        alarm_stop& alarm = b.alarm.emplace();
+        p = get_string(p, alarm.message);
+        p = get_optional(p, others, alarm_number, alarm.number);
+      }
     }
     p = get_optional(p, flags, has_rpm, b.spindle_rpm);
     if (flags & has_m) {
@@ -328,21 +424,11 @@ class block_store {
     }
     p = get_optional(p, flags, has_feed, b.feed);
     b.feed_rapid = (flags & feed_rapid) != 0;
-    b.machine_coordinates = (flags & machine_coordinates) != 0;
-    if (flags & has_kept) {
-      p = get_size(p, v);
-      b.kept_words.resize(static_cast<std::size_t>(v));
-      for (auto& w : b.kept_words) p = get_string(p, w);
-    }
-    if (flags & has_state) p = get(p, b.state);
-    if (more & has_alarm) {
-      alarm_stop& alarm = b.alarm.emplace();
-      p = get_string(p, alarm.message);
-      p = get_optional(p, more, alarm_number, alarm.number);
-    }
-    b.passthrough = (flags & passthrough) != 0;
-    b.framing = (flags & framing) != 0;
-    b.assignment = (more & assignment) != 0;
+    b.machine_coordinates = (others & machine_coordinates) != 0;
+    b.passthrough = (others & passthrough) != 0;
+    b.framing = (others & framing) != 0;
+    b.assignment = (others & assignment) != 0;
+    if (flags & has_state) p = get_state(p, b.state);
     return p;
   }
 };

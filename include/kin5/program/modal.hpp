@@ -24,18 +24,13 @@
 #include <string>
 
 #include "block.hpp"
+#include "machine_functions.hpp"
 
 namespace kin5::program {
 
 /// Whether `b` moves the tool in the workpiece frame: it has axis words, not in machine
 /// coordinates.
 inline bool is_motion(const block& b) { return b.moves() && !b.machine_coordinates; }
-
-/// Whether block `b` changes the tool: `state.tool_change`, or M6, which every reader gives a
-/// tool change (`T5 M6`, `TOOL CALL 5`, `LOAD/TOOL,5`).
-inline bool changes_tool(const block& b) {
-  return b.state.tool_change || std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
-}
 
 /// Whether motion kind `k` is a circular move (G2/G3, C DR±).
 inline bool is_arc(motion_kind k) { return k == motion_kind::arc_cw || k == motion_kind::arc_ccw; }

@@ -30,7 +30,9 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 
+#include "../program/block.hpp"
 #include "../program/dialect.hpp"
 
 namespace kin5 {
@@ -84,16 +86,37 @@ class m_map {
   }
 };
 
-/// The M functions of `b` as written into a program of dialect `to` (mapped by `map`; the
-/// unmapped ones as they are).
-inline std::vector<int> mapped_m_codes(const program::block& b, const m_map& map) {
+/// Applies the user's mapping `map` to the M functions of block `b`, as it is written into a
+/// program of another dialect: each number mapped is renamed or dropped, the unmapped ones stay.
+/// A state word counts as its M function (tool change M6, spindle M3/M4/M5, coolant M7/M8/M9,
+/// stop M0/M1; machine_functions.hpp): when the map names that number, the word becomes the
+/// number the map gives, or nothing.
+inline void map_m_codes(program::block& b, const m_map& map) {
   std::vector<int> out;
+  const auto take = [&](bool says, int m, auto&& unsay) {
+    if (!says) return;
+    const auto t = map.target_of(m);
+    if (!t) return;
+    unsay();
+    if (*t) out.push_back(**t);
+  };
+  program::state_words& s = b.state;
+  take(s.tool_change, 6, [&] { s.tool_change = false; });
+  if (s.spindle) {
+    const int m = *s.spindle == program::spindle_rotation::clockwise ? 3
+                : *s.spindle == program::spindle_rotation::counter_clockwise ? 4 : 5;
+    take(true, m, [&] { s.spindle.reset(); });
+  }
+  take(s.coolant_flood == false && s.coolant_mist == false, 9, [&] { s.coolant_flood.reset(), s.coolant_mist.reset(); });
+  take(s.coolant_mist == true, 7, [&] { s.coolant_mist.reset(); });
+  take(s.coolant_flood == true, 8, [&] { s.coolant_flood.reset(); });
+  if (s.stop) take(true, *s.stop == program::program_stop::stop ? 0 : 1, [&] { s.stop.reset(); });
   for (int m : b.m_codes) {
     const auto t = map.target_of(m);
     if (!t) out.push_back(m);
     else if (*t) out.push_back(**t);
   }
-  return out;
+  b.m_codes = std::move(out);
 }
 
 }  // namespace kin5

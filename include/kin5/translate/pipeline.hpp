@@ -141,9 +141,9 @@ class two_pass_translator final : public block_translator {
     source_step s = second_.next(b, nullptr, !Target::plans_with_tool_axis);
     if (Target::plans_with_tool_axis && s.what == source_step::kind::motion) s.principal = principal_[motion_++];
     std::optional<program::block> mapped;  // with the user's M and work-offset mappings, when they apply
-    if (!common_.m_codes.empty() && !b.m_codes.empty() && source_.language != source_.output) {
+    if (!common_.m_codes.empty() && program::says_m_function(b) && source_.language != source_.output) {
       mapped = b;
-      mapped->m_codes = mapped_m_codes(b, common_.m_codes);
+      map_m_codes(*mapped, common_.m_codes);
     }
     if (b.state.work_offset) {  // refused in the first pass when it cannot be written
       const auto t = work_offset_into(*b.state.work_offset, source_.language, source_.output, common_.work_offsets);

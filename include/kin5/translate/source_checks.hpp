@@ -34,12 +34,14 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "../core/units.hpp"
 #include "../kinematics/machine.hpp"
 #include "../program/address_words.hpp"
 #include "../program/block.hpp"
 #include "../program/dialect.hpp"
+#include "../program/machine_functions.hpp"
 #include "angle_tolerance.hpp"
 #include "m_codes.hpp"
 #include "options.hpp"
@@ -168,12 +170,15 @@ bool check_source_axes(const program::block& b, const source_context& ctx) {
   return check_source_axes(From::model, b, ctx);
 }
 
-/// Checks the M functions of block `b` against the output dialect (m_codes.hpp): each is
+/// Checks the M functions of block `b`, its state words' and its numbers, against the output
+/// dialect (m_codes.hpp): each is
 /// carried when its meaning is shared or the user maps it, else refused at its word. False on
 /// an error, reported to `ctx.out` when given.
 inline bool check_m_codes(const program::block& b, const source_context& ctx) {
   bool ok = true;
-  for (int m : b.m_codes) {
+  std::vector<int> ms;  // the state words as their M functions (machine_functions.hpp), then the numbers
+  (void)program::m_words_of(b, {}, true, ms);  // what no M function says is the writer's to refuse
+  for (int m : ms) {
     if (shared_m_code(m, ctx.language, ctx.output, b.machine_coordinates)) continue;
     if (ctx.m_codes && ctx.m_codes->target_of(m)) continue;
     ok = false;

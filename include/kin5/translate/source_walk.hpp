@@ -154,7 +154,7 @@ inline const char* words_of_a_whole_block(const program::block& b) {
   if (b.program_end) return "the program end";
   if (b.tool || b.tool_name) return "a tool";
   if (b.spindle_rpm) return "a spindle speed";
-  if (!b.m_codes.empty()) return "an M function";
+  if (program::says_m_function(b)) return "an M function";
   if (!b.state.empty()) return "a tool, spindle, coolant, offset, plane, dwell or stop word";
   if (!b.kept_words.empty()) return "a kept word";
   return nullptr;
@@ -292,7 +292,7 @@ class source_walker {
     const bool tool_ok = !b.tool_name || check_tool_name(b, ctx);
     s.compensated = modal_.radius_compensation && *modal_.radius_compensation != program::cutter_side::off;
     if (!compensation_ok(b, s.compensated, to) || !kept_ok || !offset_ok || !speed_ok || !dwell_ok || !tool_ok ||
-        (!b.m_codes.empty() && !check_m_codes(b, ctx)) ||
+        (program::says_m_function(b) && !check_m_codes(b, ctx)) ||
         (b.moves() && !source_.check(b, ctx))) {
       s.what = source_step::kind::failed;
       return s;

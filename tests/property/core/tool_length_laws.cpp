@@ -34,7 +34,6 @@ program::block tool_change(long long n, std::size_t line) {
   b.where = {"t.nc", line, 1};
   b.tool = n;
   b.state.tool_change = true;
-  b.m_codes = {6};
   return b;
 }
 

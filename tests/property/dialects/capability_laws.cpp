@@ -128,7 +128,7 @@ block change_to_tool_1() {
   block b;
   b.where = {"in.nc", 2, 1};
   b.tool = 1;
-  b.m_codes = {6};
+  b.state.tool_change = true;
   return b;
 }
 
@@ -183,7 +183,7 @@ struct tool_names {
     block change;
     change.where = {"in.nc", 2, 1};
     change.tool_name = "MILL_D10";
-    change.m_codes = {6};
+    change.state.tool_change = true;
     // A dialect that calls tools by name writes the name and reads it back; one that takes only
     // numbers refuses it (a number made up for it would call another tool).
     const auto back = written_and_read<D>(of({change, move(1, 2, 3, 4)}));

@@ -2,6 +2,7 @@
 // present, including strings with any bytes, extreme numbers and records across chunk ends.
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <limits>
 #include <string>
 #include <vector>
@@ -36,53 +37,87 @@ rc::Gen<std::string> any_string() {
 
 kin5::vec3 any_vec3() { return {*any_double(), *any_double(), *any_double()}; }
 
+template <class E>
+std::optional<E> maybe_element(std::initializer_list<E> values) {
+  return maybe(rc::gen::elementOf(std::vector<E>(values)));
+}
+
+/// Every field of the state words, each present or not. The structured binding names every
+/// field: one added to `state_words` stops this from compiling until it is drawn here.
+state_words any_state() {
+  state_words s;
+  auto& [tool_change, tool_spindle_axis, tool_length_delta_mm, tool_radius_delta_mm, length_compensation,
+         length_register, radius_compensation, radius_register, cutting_edge, spindle, coolant_flood, coolant_mist,
+         work_offset, working_plane, distance, dwell_s, stop] = s;
+  tool_change = *rc::gen::arbitrary<bool>();
+  tool_spindle_axis = maybe_element({spindle_axis::x, spindle_axis::y, spindle_axis::z});
+  tool_length_delta_mm = maybe(any_double());
+  tool_radius_delta_mm = maybe(any_double());
+  length_compensation = maybe(rc::gen::arbitrary<bool>());
+  length_register = maybe(rc::gen::arbitrary<long long>());
+  radius_compensation = maybe_element({cutter_side::off, cutter_side::left, cutter_side::right});
+  radius_register = maybe(rc::gen::arbitrary<long long>());
+  cutting_edge = maybe(rc::gen::arbitrary<long long>());
+  spindle = maybe_element(
+      {spindle_rotation::clockwise, spindle_rotation::counter_clockwise, spindle_rotation::stopped});
+  coolant_flood = maybe(rc::gen::arbitrary<bool>());
+  coolant_mist = maybe(rc::gen::arbitrary<bool>());
+  if (*rc::gen::inRange(0, 2))
+    work_offset = kin5::program::work_offset{
+        *rc::gen::element(work_offset_family::g54, work_offset_family::extended, work_offset_family::siemens,
+                          work_offset_family::preset),
+        *rc::gen::arbitrary<int>()};
+  working_plane = maybe_element({arc_plane::xy, arc_plane::zx, arc_plane::yz});
+  distance = maybe_element({distance_mode::absolute, distance_mode::incremental});
+  dwell_s = maybe(any_double());
+  stop = maybe_element({program_stop::stop, program_stop::optional_stop});
+  return s;
+}
+
+/// Every field of a block, each present or not. As in `any_state`, the structured binding names
+/// every field of `block`.
 block any_block(const std::string& file) {
   block b;
-  b.where = {file, *rc::gen::inRange<std::size_t>(0, 1u << 31), *rc::gen::inRange<std::size_t>(0, 5000)};
-  b.text = *any_string();
-  b.number = maybe(rc::gen::arbitrary<long long>());
-  b.program_begin = maybe(any_string());
-  b.program_end = maybe(any_string());
-  b.comment = maybe(any_string());
-  b.tcp = maybe(rc::gen::arbitrary<bool>());
-  b.feed_mode = maybe(rc::gen::element(feed_unit::per_minute, feed_unit::inverse_time));
-  b.metric = maybe(rc::gen::arbitrary<bool>());
-  b.tool = maybe(rc::gen::arbitrary<long long>());
-  b.tool_name = maybe(any_string());
-  b.spindle_rpm = maybe(any_double());
-  b.m_codes = *rc::gen::container<std::vector<int>>(*rc::gen::inRange(0, 4), rc::gen::arbitrary<int>());
-  b.motion = maybe(rc::gen::element(motion_kind::rapid, motion_kind::linear, motion_kind::arc_cw, motion_kind::arc_ccw));
-  b.axes.x_mm = maybe(any_double());
-  b.axes.y_mm = maybe(any_double());
-  b.axes.z_mm = maybe(any_double());
-  b.axes.a_deg = maybe(any_double());
-  b.axes.b_deg = maybe(any_double());
-  b.axes.c_deg = maybe(any_double());
-  if (*rc::gen::inRange(0, 2)) b.axes.tool_axis = any_vec3();
+  auto& [where, text, number, program_begin, program_end, comment, tcp, feed_mode, metric, tool, tool_name,
+         spindle_rpm, m_codes, motion, axes, arc, feed, feed_rapid, machine_coordinates, kept_words, passthrough,
+         framing, assignment, state, alarm] = b;
+  where = {file, *rc::gen::inRange<std::size_t>(0, 1u << 31), *rc::gen::inRange<std::size_t>(0, 5000)};
+  text = *any_string();
+  number = maybe(rc::gen::arbitrary<long long>());
+  program_begin = maybe(any_string());
+  program_end = maybe(any_string());
+  comment = maybe(any_string());
+  tcp = maybe(rc::gen::arbitrary<bool>());
+  feed_mode = maybe_element({feed_unit::per_minute, feed_unit::inverse_time});
+  metric = maybe(rc::gen::arbitrary<bool>());
+  tool = maybe(rc::gen::arbitrary<long long>());
+  tool_name = maybe(any_string());
+  spindle_rpm = maybe(any_double());
+  m_codes = *rc::gen::container<std::vector<int>>(*rc::gen::inRange(0, 4), rc::gen::arbitrary<int>());
+  motion = maybe_element({motion_kind::rapid, motion_kind::linear, motion_kind::arc_cw, motion_kind::arc_ccw});
+  auto& [x_mm, y_mm, z_mm, a_deg, b_deg, c_deg, tool_axis] = axes;
+  x_mm = maybe(any_double());
+  y_mm = maybe(any_double());
+  z_mm = maybe(any_double());
+  a_deg = maybe(any_double());
+  b_deg = maybe(any_double());
+  c_deg = maybe(any_double());
+  if (*rc::gen::inRange(0, 2)) tool_axis = any_vec3();
   if (*rc::gen::inRange(0, 2)) {
-    arc_words arc;
-    arc.plane = *rc::gen::element(arc_plane::xy, arc_plane::zx, arc_plane::yz);
-    if (*rc::gen::inRange(0, 2)) arc.centre_mm = any_vec3();
-    arc.radius_mm = maybe(any_double());
-    b.arc = arc;
+    auto& [plane, centre_mm, radius_mm] = arc.emplace();
+    plane = *rc::gen::element(arc_plane::xy, arc_plane::zx, arc_plane::yz);
+    if (*rc::gen::inRange(0, 2)) centre_mm = any_vec3();
+    radius_mm = maybe(any_double());
   }
-  b.feed = maybe(any_double());
-  b.feed_rapid = *rc::gen::arbitrary<bool>();
-  b.machine_coordinates = *rc::gen::arbitrary<bool>();
-  b.kept_words = *rc::gen::container<std::vector<std::string>>(*rc::gen::inRange(0, 4), any_string());
-  b.passthrough = *rc::gen::arbitrary<bool>();
-  b.framing = *rc::gen::arbitrary<bool>();
-  b.assignment = *rc::gen::arbitrary<bool>();
-  if (*rc::gen::inRange(0, 2)) b.alarm = alarm_stop{*any_string(), maybe(rc::gen::arbitrary<long long>())};
-  if (*rc::gen::inRange(0, 2)) {  // the state words, kept as bytes
-    b.state.tool_change = *rc::gen::arbitrary<bool>();
-    if (*rc::gen::inRange(0, 2))
-      b.state.work_offset = work_offset{*rc::gen::element(work_offset_family::g54, work_offset_family::extended,
-                                                          work_offset_family::siemens, work_offset_family::preset),
-                                        *rc::gen::arbitrary<int>()};
-    b.state.dwell_s = maybe(any_double());
-    b.state.radius_register = maybe(rc::gen::arbitrary<long long>());
-  }
+  feed = maybe(any_double());
+  feed_rapid = *rc::gen::arbitrary<bool>();
+  machine_coordinates = *rc::gen::arbitrary<bool>();
+  kept_words = *rc::gen::container<std::vector<std::string>>(*rc::gen::inRange(0, 4), any_string());
+  passthrough = *rc::gen::arbitrary<bool>();
+  framing = *rc::gen::arbitrary<bool>();
+  assignment = *rc::gen::arbitrary<bool>();
+  if (*rc::gen::inRange(0, 3)) state = any_state();  // often, but not always, empty
+  if (*rc::gen::inRange(0, 2)) alarm = alarm_stop{*any_string(), maybe(rc::gen::arbitrary<long long>())};
   return b;
 }
 

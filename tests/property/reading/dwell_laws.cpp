@@ -86,7 +86,7 @@ std::vector<block> draw_program(use u, dialect from) {
     block change;
     change.metric = true;
     change.tool = 1;
-    change.m_codes = {6};
+    change.state.tool_change = true;
     out.push_back(change);
   }
   const int n = *rc::gen::inRange(1, 12);

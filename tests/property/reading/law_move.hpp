@@ -27,7 +27,7 @@ inline program::block law_move(double x_mm, bool rotary = false) {
 inline std::vector<program::block> tracking_start(program::dialect from) {
   program::block change, on;
   change.tool = 1;
-  change.m_codes = {6};
+  change.state.tool_change = true;
   on.tcp = true;
   if (from == program::id_of<program::linuxcnc::dialect>()) on.state.length_compensation = true;  // G43 M428
   return {change, on};

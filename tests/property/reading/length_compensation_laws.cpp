@@ -97,7 +97,7 @@ std::optional<std::pair<std::string, std::size_t>> expected_refusal(const std::v
 block tool_change(long long tool) {
   block b;
   b.tool = tool;
-  b.m_codes = {6};
+  b.state.tool_change = true;
   return b;
 }
 

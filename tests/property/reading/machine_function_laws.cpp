@@ -7,6 +7,7 @@
 // (translate/m_codes.hpp: M7 into Heidenhain is refused there); a writer itself may refuse only
 // nothing here (a refusal fails the law; `documented_refusal` names the only one a future
 // writer may add: mist coolant, M7).
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -18,6 +19,7 @@
 
 #include <kin5/program/io.hpp>
 
+#include "../m_numbers.hpp"
 #include "dialect_pairs.hpp"
 
 using namespace kin5::program;
@@ -40,7 +42,7 @@ std::vector<at_move> trace_of(const std::vector<block>& blocks) {
   at_move now;
   for (const block& b : blocks) {
     if (b.spindle_rpm) now.rpm = *b.spindle_rpm;
-    for (int m : b.m_codes) {
+    for (int m : kin5::test::m_numbers_of(b)) {
       if (m == 3 || m == 4 || m == 5) now.spindle = m;
       if (m == 13 || m == 14) now.spindle = m - 10, now.flood = true;
       if (m == 7) now.mist = true;
@@ -119,4 +121,112 @@ TEST_CASE("machine functions: every ordered pair of dialects keeps spindle, cool
     if (!source || !through(to, *source)) return;
     RC_TAG("written");
   }, kin5::test::pairs::distinct);
+}
+
+namespace {
+
+/// A program built by meaning, as a library user builds one: a tool change, spindle, coolant and
+/// stops, set in `block::state` only (no M numbers).
+program built_by_meaning() {
+  program p;
+  p.file = "meaning";
+  const auto add = [&p](auto&& fill) {
+    block b;
+    b.where = {"meaning", p.blocks.size() + 1, 1};
+    fill(b);
+    p.blocks.push_back(b);
+  };
+  add([](block& b) { b.tool = 5, b.state.tool_change = true; });
+  add([](block& b) { b.spindle_rpm = 6000, b.state.spindle = spindle_rotation::clockwise; });
+  add([](block& b) { b.state.coolant_flood = true; });
+  add([](block& b) { b.state.stop = program_stop::optional_stop; });
+  add([](block& b) { b.state.spindle = spindle_rotation::stopped, b.state.coolant_flood = b.state.coolant_mist = false; });
+  add([](block& b) { b.state.stop = program_stop::stop; });
+  add([](block& b) { b.state.spindle = spindle_rotation::counter_clockwise; });
+  add([](block& b) { b.program_end = ""; });
+  return p;
+}
+
+/// The meanings `blocks` say, in order, one string each.
+std::vector<std::string> meanings_of(const std::vector<block>& blocks) {
+  std::vector<std::string> out;
+  for (const block& b : blocks) {
+    const state_words& s = b.state;
+    if (s.tool_change) out.push_back("tool change " + std::to_string(b.tool.value_or(-1)));
+    if (s.spindle) out.push_back("spindle " + std::to_string(static_cast<int>(*s.spindle)));
+    if (s.coolant_flood) out.push_back(std::string("flood ") + (*s.coolant_flood ? "on" : "off"));
+    if (s.coolant_mist) out.push_back(std::string("mist ") + (*s.coolant_mist ? "on" : "off"));
+    if (s.stop) out.push_back(*s.stop == program_stop::stop ? "stop" : "optional stop");
+  }
+  return out;
+}
+
+/// The lines of `text` that say one of the program's meanings, in order.
+std::vector<std::string> lines_with(const std::string& text, const std::vector<std::string>& wanted) {
+  std::vector<std::string> out;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    const std::string line = text.substr(at, end - at);
+    for (const std::string& w : wanted)
+      if (line == w) out.push_back(line);
+    at = end + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("machine functions built by meaning: each NC dialect writes its own words and reads the meanings back") {
+  const program p = built_by_meaning();
+  // Each dialect's spelling of the program, line by line (docs/dialects/*.md).
+  const std::vector<std::pair<dialect, std::vector<std::string>>> spelled = {
+      {id_of<iso::dialect>(), {"T5 M6", "S6000 M3", "M8", "M1", "M5 M9", "M0", "M4"}},
+      {id_of<haas::dialect>(), {"T5 M6", "S6000 M3", "M8", "M1", "M5 M9", "M0", "M4"}},
+      {id_of<linuxcnc::dialect>(), {"T5 M6", "S6000 M3", "M8", "M1", "M5 M9", "M0", "M4"}},
+      {id_of<siemens::dialect>(), {"T5 M6", "S6000 M3", "M8", "M1", "M5 M9", "M0", "M4"}},
+      {id_of<heidenhain::dialect>(),
+       {"1 TOOL CALL 5 Z", "2 TOOL CALL S6000", "3 M3", "4 M8", "5 M1", "6 M5 M9", "7 M0", "8 M4"}},
+  };
+  for (const auto& [d, lines] : spelled) {
+    CAPTURE(name(d));
+    const std::string text = write(d, p);
+    CAPTURE(text);
+    CHECK(lines_with(text, lines) == lines);
+    const read_result back = read(d, text, "back");
+    REQUIRE(back.ok());
+    CHECK(meanings_of(back.parsed.blocks) == meanings_of(p.blocks));
+    for (const block& b : back.parsed.blocks)  // every word read as its meaning (a TNC's M30 line is an M function)
+      CHECK((b.m_codes.empty() || (d == id_of<heidenhain::dialect>() && b.m_codes == std::vector<int>{30})));
+  }
+}
+
+TEST_CASE("machine functions built by meaning: APT CL data writes its statements and reads the meanings back") {
+  program p = built_by_meaning();
+  p.blocks[2].state.coolant_flood.reset(), p.blocks[2].state.coolant_mist = true;  // COOLNT/MIST as well
+  const std::string text = write(id_of<apt::dialect>(), p);
+  CAPTURE(text);
+  CHECK(lines_with(text, {"LOADTL/5", "SPINDL/6000,CLW", "COOLNT/MIST", "OPSTOP", "SPINDL/OFF", "COOLNT/OFF", "STOP",
+                          "SPINDL/CCLW"}) == std::vector<std::string>{"LOADTL/5", "SPINDL/6000,CLW", "COOLNT/MIST",
+                                                                       "OPSTOP", "SPINDL/OFF", "COOLNT/OFF", "STOP",
+                                                                       "SPINDL/CCLW"});
+  const read_result back = read(id_of<apt::dialect>(), text, "back");
+  REQUIRE(back.ok());
+  CHECK(meanings_of(back.parsed.blocks) == meanings_of(p.blocks));
+}
+
+TEST_CASE("machine functions built by meaning: what no M function says is refused, not written otherwise") {
+  block off;  // flood off, mist unsaid: M9 would switch mist off too
+  off.state.coolant_flood = false;
+  block mist;  // no standard M7 on a TNC
+  mist.state.coolant_mist = true;
+  for (const dialect d : {id_of<iso::dialect>(), id_of<siemens::dialect>(), id_of<heidenhain::dialect>()}) {
+    program p;
+    p.blocks = {off};
+    CHECK_THROWS_WITH(write(d, p), Catch::Contains("one coolant switched off without the other"));
+  }
+  program p;
+  p.blocks = {mist};
+  CHECK_THROWS_WITH(write(id_of<heidenhain::dialect>(), p), Catch::Contains("mist coolant (M7)"));
+  CHECK_NOTHROW(write(id_of<iso::dialect>(), p));
 }

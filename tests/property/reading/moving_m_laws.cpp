@@ -16,6 +16,7 @@
 
 #include <kin5/kin5.hpp>
 
+#include "../m_numbers.hpp"
 #include "law_translation.hpp"
 
 using namespace kin5;
@@ -61,12 +62,13 @@ std::vector<at_move> trace_of(const std::vector<block>& blocks, dialect d) {
   std::vector<at_move> out;
   at_move now;
   for (const block& b : blocks) {
-    for (int m : b.m_codes)
+    const std::vector<int> ms = kin5::test::m_numbers_of(b);
+    for (int m : ms)
       if (!b.moves() || !after_move(m, d)) apply(now, m);
     if (!b.moves()) continue;
     out.push_back(now);
     now.stops = now.optional_stops = 0;
-    for (int m : b.m_codes)
+    for (int m : ms)
       if (after_move(m, d)) apply(now, m);
   }
   out.push_back(now);
@@ -77,10 +79,10 @@ std::vector<at_move> trace_of(const std::vector<block>& blocks, dialect d) {
 /// on them and between them (no M7 where the controller has none: Heidenhain).
 std::vector<block> draw_program(dialect from) {
   std::vector<block> out(3);
-  out[0].tool = 1, out[0].m_codes = {6};
+  out[0].tool = 1, out[0].state.tool_change = true;
   out[1].tcp = true;
   if (from == id_of<linuxcnc::dialect>()) out[1].state.length_compensation = true;  // G43 M428
-  out[2].spindle_rpm = 1000, out[2].m_codes = {3};
+  out[2].spindle_rpm = 1000, out[2].state.spindle = spindle_rotation::clockwise;
   const bool mist = controller_of(from).m7_mist_coolant;
   const int n = *rc::gen::inRange(1, 12);
   double x = 0;

@@ -15,6 +15,7 @@
 
 #include <kin5/program/io.hpp>
 
+#include "../m_numbers.hpp"
 #include "dialect_pairs.hpp"
 #include "law_move.hpp"
 
@@ -36,7 +37,7 @@ struct trace {
 };
 
 bool has_m(const block& b, int m) {
-  for (int k : b.m_codes)
+  for (int k : kin5::test::m_numbers_of(b))
     if (k == m) return true;
   return false;
 }
@@ -102,14 +103,14 @@ std::vector<block> draw_program(dialect from) {
     switch (*rc::gen::inRange(0, 6)) {
       case 0:  // a change naming its tool: T5 M6, TOOL CALL 5, LOADTL/5, TOOL CALL "MILL_D10"
         draw_tool(b, names);
-        b.m_codes = {6};
+        b.state.tool_change = true;
         break;
       case 1:  // T5 … M6
         if (!selects) continue;
         draw_tool(b, names);
         out.push_back(b);
         b = block{};
-        b.m_codes = {6};
+        b.state.tool_change = true;
         break;
       case 2:
         if (!tracking) continue;

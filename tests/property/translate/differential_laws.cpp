@@ -217,7 +217,7 @@ program_case make_case(const choice& c, draws& d) {
   {
     pg::block s;
     s.spindle_rpm = std::round(d.uniform(1000, 12000));
-    s.m_codes = {3};
+    s.state.spindle = pg::spindle_rotation::clockwise;
     out.opening.push_back(s);
   }
   const bool arcs = pg::capabilities_of(c.source).arcs && pg::capabilities_of(c.target).arcs;

@@ -52,7 +52,7 @@ TEST_CASE("every block is accounted for, and unreachable blocks are all listed w
       if (kind == 0) {  // a non-motion block: comment, M function or spindle speed
         auto& b = test::add_block(p);
         b.comment = "c" + std::to_string(k);
-        b.m_codes = {8};
+        b.state.coolant_flood = true;
         continue;
       }
       // The DMU 80P reaches A <= 0 (the reach boundary S3 at A = 0). A value past it by no more

@@ -423,6 +423,33 @@ TEST_CASE("M functions whose meaning is the machine maker's are refused across d
   CHECK_FALSE(bad.add("1=-2"));
 }
 
+TEST_CASE("spindle and coolant M functions are state words across dialects: Heidenhain M13, --m-map of M8") {
+  using M = machines::dmu_80p;
+  const std::string text = "0 BEGIN PGM T MM\n1 TOOL CALL 3 Z S8000\n2 M128\n3 L X+0 Y+0 Z+50 B+10 C+0 F500 M13\n"
+                           "4 L X+1 M5 M9\n5 M129\n6 END PGM T MM\n";
+  const auto run = [&](dialect out, const std::vector<std::string>& map) {
+    auto options = test::options(feed_policy::tcp, out);
+    for (const auto& m : map) REQUIRE(options.common.m_codes.add(m));
+    const auto t = make_translator<M, M>(program::id_of<program::heidenhain::dialect>(), "m.h", options);
+    string_sink written;
+    const auto r = stream_text(*t, text, program::id_of<program::heidenhain::dialect>(), "m.h", out, written);
+    REQUIRE(r.input.ok());
+    return std::pair{t->result(), r.ok(*t) ? written.text : std::string()};
+  };
+  // M13 is spindle on clockwise with coolant on (a TNC's own function): M3 M8 in a G-code dialect.
+  const auto [ok, iso] = run(program::id_of<program::iso::dialect>(), {});
+  CHECK(ok.ok());
+  CHECK(iso.find(" M3 M8\n") != std::string::npos);
+  CHECK(iso.find("M13") == std::string::npos);
+  CHECK(iso.find(" M5 M9\n") != std::string::npos);
+  // --m-map names a state word by its M function: coolant on written as M50, coolant off dropped.
+  const auto [mapped, siemens] = run(program::id_of<program::siemens::dialect>(), {"8=50", "9="});
+  CHECK(mapped.ok());
+  CHECK(siemens.find(" M3 M50\n") != std::string::npos);
+  CHECK(siemens.find(" M5\n") != std::string::npos);
+  CHECK(siemens.find("M9") == std::string::npos);
+}
+
 TEST_CASE("across dialects, a kept word whose effect a comment would lose is refused at its block") {
   using program::id_of;
   using program::read_result;

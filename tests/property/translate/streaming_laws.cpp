@@ -35,7 +35,7 @@ TEST_CASE("two passes block by block write what translate + write produce, and c
       if (kind == 0) {
         auto& b = test::add_block(p);
         b.comment = "c" + std::to_string(k);
-        b.m_codes = {8};
+        b.state.coolant_flood = true;
         continue;
       }
       const double a = *test::uniform(-120.0, 10.0);

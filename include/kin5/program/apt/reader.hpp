@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../machine_functions.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
@@ -157,12 +158,12 @@ class statement_reader {
     } else if (m == "MULTAX") {
       multax(b, word);
     } else if (m == "COOLNT") {
-      if (word == "ON" || word == "FLOOD") b.m_codes.push_back(8);
-      else if (word == "MIST") b.m_codes.push_back(7);
-      else if (word == "OFF") b.m_codes.push_back(9);
+      if (word == "ON" || word == "FLOOD") take_machine_function(b.state, 8);
+      else if (word == "MIST") take_machine_function(b.state, 7);
+      else if (word == "OFF") take_machine_function(b.state, 9);
       else error(c_.major_at, "COOLNT/" + word + " is not supported (only ON, FLOOD, MIST and OFF are read)", "COOLNT");
     } else if (m == "STOP" || m == "OPSTOP") {
-      if (no_values()) b.m_codes.push_back(m == "STOP" ? 0 : 1);
+      if (no_values()) b.state.stop = m == "STOP" ? program_stop::stop : program_stop::optional_stop;
     } else if (m == "DELAY" && args_.size() == 1 && !args_[0].text.empty() && !is_letter(args_[0].text.front())) {
       delay(b);
     } else {
@@ -284,7 +285,7 @@ class statement_reader {
     int direction = 0;
     for (const argument& a : args_) {
       const std::string word = lexing::upper(a.text);
-      if (word == "OFF" && args_.size() == 1) b.m_codes.push_back(5);
+      if (word == "OFF" && args_.size() == 1) b.state.spindle = spindle_rotation::stopped;
       else if (word == "ON" || word == "CLW") direction = 3;
       else if (word == "CCLW") direction = 4;
       else if (word == "RPM") continue;
@@ -292,14 +293,14 @@ class statement_reader {
       else if (!value && !a.text.empty() && !is_letter(a.text.front())) value = &a;
       else return error(a.offset, "unexpected '" + std::string(a.text) + "' after SPINDL");
     }
-    if (!value && !direction && b.m_codes.empty()) return error(c_.major_at, message);
+    if (!value && !direction && !b.state.spindle) return error(c_.major_at, message);
     if (value) {
       double s = 0;
       if (!number(*value, s)) return;
       if (auto why = unwritable_rate(s, finest_rate_decimals, "spindle speed")) return error(value->offset, *why);
       b.spindle_rpm = s;
     }
-    if (direction) b.m_codes.push_back(direction);
+    if (direction) take_machine_function(b.state, direction);
   }
 
   /// `DELAY/t`: a dwell of t seconds (PTC Creo Parametric Help, "Supported CL Data Commands":
@@ -323,7 +324,7 @@ class statement_reader {
     b.kept_words.push_back(word.empty() ? "MULTAX" : "MULTAX/" + word);
   }
 
-  /// `LOADTL/n` (`at` = 0) or `LOAD/TOOL,n` (`at` = 1): a tool change, the tool and M6;
+  /// `LOADTL/n` (`at` = 0) or `LOAD/TOOL,n` (`at` = 1): a tool change, the tool and `tool_change`;
   /// `SELECT/TOOL,n` (`change` false): the tool made ready, as ISO's `T n` alone.
   void load_tool(block& b, std::size_t at, bool change = true) {
     double t = 0;
@@ -333,7 +334,7 @@ class statement_reader {
     if (t < 0 || t != static_cast<double>(static_cast<long long>(t)))
       return error(args_[at].offset, "tool number must be a whole number");
     b.tool = static_cast<long long>(t);
-    if (change) b.m_codes.push_back(6);
+    if (change) b.state.tool_change = true;
   }
 };
 

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../machine_functions.hpp"
 #include "../number.hpp"
 #include "../program_end.hpp"
 #include "../text.hpp"
@@ -209,7 +210,7 @@ class writer {
     }
     if (b.metric) lines_.push_back(*b.metric ? "UNITS/MM" : "UNITS/INCHES");
     // LOADTL is the change (M6, TOOL CALL n); a T alone only selects: SELECT/TOOL.
-    const bool change = std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
+    const bool change = changes_tool(b);
     if (b.tool) selected_tool_ = *b.tool;
     if (change && !selected_tool_) fail(b, "tool change (M6) without a tool number");
     if (change) lines_.push_back("LOADTL/" + std::to_string(*selected_tool_));
@@ -228,7 +229,9 @@ class writer {
                                                                     options_.finest_feed_decimals, "spindle speed"))
                       : "";
     bool rpm_written = !b.spindle_rpm;
-    for (int m : b.m_codes) {
+    std::vector<int> ms;
+    if (const std::string why = m_words_of(b, {}, true, ms); !why.empty()) fail(b, why);
+    for (int m : ms) {
       if (m == 3 || m == 4) {
         lines_.push_back("SPINDL/" + (rpm_written ? "" : rpm + ",") + (m == 3 ? "CLW" : "CCLW"));
         rpm_written = true;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../machine_functions.hpp"
 #include "../number.hpp"
 #include "../units.hpp"
 #include "../incremental.hpp"
@@ -118,13 +119,14 @@ class word_checks {
     return true;
   }
 
-  /// M128 / M129 switch TCP; M91 / M92 mean machine coordinates; all others are kept as M codes.
+  /// M128 / M129 switch TCP; M91 / M92 mean machine coordinates; M0 M1 M3 M4 M5 M6 M8 M9 M13 M14 are
+  /// state words (machine_functions.hpp); all others are kept as M codes.
   static void set_m(block& t, long long m) {
     if (m == 128) t.tcp = true;
     else if (m == 129) t.tcp = false;
     else {
       if (m == 91 || m == 92) t.machine_coordinates = true;
-      t.m_codes.push_back(static_cast<int>(m));
+      read_machine_function(t, m, {.m7_mist = false, .m13_m14 = true});
     }
   }
 };

@@ -33,6 +33,7 @@
 
 #include "../block.hpp"
 #include "../interp/executor.hpp"
+#include "../machine_functions.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../read_limits.hpp"
@@ -232,13 +233,13 @@ class block_reader : public word_checks {
     understood = understood && (!ws.empty() || name);
     const word* oversize = nullptr;  // DL, DR, DR2 other than 0
     block t = b_;
-    if (name) t.tool_name = std::move(name), t.m_codes.push_back(6);  // TOOL CALL "NAME" changes the tool
+    if (name) t.tool_name = std::move(name), t.state.tool_change = true;  // TOOL CALL "NAME" changes the tool
     for (word& w : ws) {
       if (w.key.empty() && w.value && !t.tool && !t.tool_name && !t.spindle_rpm && t.kept_words.empty()) {
         long long n = 0;
         if (!integer_word(w, n)) understood = false;
         t.tool = n;
-        t.m_codes.push_back(6);  // TOOL CALL n changes the tool: M6 in every dialect's model
+        t.state.tool_change = true;  // TOOL CALL n changes the tool
       } else if (w.key.size() == 1 && (w.key == "X" || w.key == "Y" || w.key == "Z") && !w.value && !w.sign &&
                  !w.expression && w.error == number_error::none) {
         t.kept_words.push_back(w.key);
@@ -458,7 +459,7 @@ class block_reader : public word_checks {
     } else if (head == "BLK" || scan_.keywords(i, {"TOOL", "DEF"})) {
       b_.passthrough = true;  // the blank's shape, a tool made ready: no motion
     } else if (head == "STOP" && only_comment_after(i + head.size())) {
-      b_.m_codes.push_back(0);
+      b_.state.stop = program_stop::stop;
     } else if (head == "CT" || head == "CP" || head == "LP" || head == "CTP" || head == "RND" || head == "CHF" ||
                head == "APPR" || head == "DEP" || head == "FL" || head == "FLT" || head == "FC" || head == "FCT" ||
                head == "FPOL" || head == "CCA") {

@@ -28,6 +28,7 @@
 #include "../block.hpp"
 #include "../cutter_radius.hpp"
 #include "../lexing.hpp"
+#include "../machine_functions.hpp"
 #include "../number.hpp"
 #include "../program_end.hpp"
 #include "../program_name.hpp"
@@ -94,13 +95,13 @@ class writer {
     std::vector<std::string> kept = b.kept_words;  // written verbatim (same dialect) or into the comment
     std::vector<std::string> foreign;
     if (!same_) foreign.swap(kept);
-    const bool change = !same_ && has_m(b, 6);
+    const bool change = !same_ && changes_tool(b);
     if (change) tool_change(b, moves, bi);
     else if (b.tool && !same_) add("TOOL DEF " + std::to_string(*b.tool));  // selected, not changed
     if (!change && (((b.tool || b.tool_name) && same_) || b.spindle_rpm)) tool_call(b, moves, kept, bi, same_);
     if (b.tool) selected_tool_ = *b.tool, selected_name_.reset();
     if (b.tool_name) selected_name_ = *b.tool_name, selected_tool_.reset();
-    const std::string m_words = m_functions(b) + end_word(b);
+    const std::string m_words = m_functions(b, bi) + end_word(b);
     if (b.tcp && options_.tcp) {
       // A chosen form replaces a read FUNCTION TCPM's options, which mean what M128 means.
       if (same_ && *b.tcp) std::erase_if(kept, is_tcpm_option);
@@ -111,7 +112,7 @@ class writer {
       add(cc_line(*b.arc));
     } else if (moves) {
       motion_line(b, kept, m_words, bi);
-    } else if (b.tcp && *b.tcp && same_ && !options_.tcp && !kept.empty() && b.m_codes.empty() &&
+    } else if (b.tcp && *b.tcp && same_ && !options_.tcp && !kept.empty() && !says_m_function(b) &&
                !b.machine_coordinates) {
       std::string l = "FUNCTION TCPM";
       for (const std::string& w : kept) l += " " + w;
@@ -306,8 +307,6 @@ class writer {
     return b.motion || b.feed_rapid || (b.feed && !(b.tool || b.tool_name || b.spindle_rpm));
   }
 
-  static bool has_m(const block& b, int m) { return std::find(b.m_codes.begin(), b.m_codes.end(), m) != b.m_codes.end(); }
-
   /// A tool change of another dialect (M6, `LOADTL`): `TOOL CALL n Z S… F…`, the spindle along Z
   /// (the G-code dialects and APT name no spindle axis), with TCP switched off before it and on
   /// again after it when TCP is on (the TNC refuses a TOOL CALL under M128: TNC 640 User's
@@ -443,9 +442,13 @@ class writer {
 
   /// ` M3 M8 M91 M128`: the block's M functions, M91 for machine coordinates, M128/M129 for TCP
   /// (with `tcp_word::function_tcpm`, `write` puts the switch on a block of its own instead).
-  std::string m_functions(const block& b) const {
+  std::string m_functions(const block& b, std::size_t bi) const {
     std::string m_words;
-    for (int m : b.m_codes)
+    std::vector<int> ms;
+    // A TNC has no standard M7; M6 only for a TNC program's own M6 line (TOOL CALL is the change).
+    const std::string why = m_words_of(b, {.m7_mist = false}, same_ && !b.tool && !b.tool_name, ms);
+    if (!why.empty()) fail(b, bi, why);
+    for (int m : ms)
       if (!(m == 6 && (b.tool || b.tool_name || !same_))) m_words += " M" + std::to_string(m);  // TOOL CALL is the change: no M6
     if (b.machine_coordinates &&
         std::find_if(b.m_codes.begin(), b.m_codes.end(), [](int m) { return m == 91 || m == 92; }) == b.m_codes.end())

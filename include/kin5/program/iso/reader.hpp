@@ -43,6 +43,7 @@
 #include "../interp/evaluate.hpp"
 #include "../interp/executor.hpp"
 #include "../lexing.hpp"
+#include "../machine_functions.hpp"
 #include "../modal.hpp"
 #include "../number.hpp"
 #include "../parameters.hpp"
@@ -542,7 +543,7 @@ class basic_reader {
       error(w.column, "M99: a subprogram return or loop is not supported (the path would depend on it)");
       l.suppress = true;
     } else if (m == 30 || m == 2) b.program_end = "M" + std::to_string(m);
-    else b.m_codes.push_back(m);
+    else read_machine_function(b, m);
   }
 
   void axis_word(block& b, const word& w, line_words& l) {

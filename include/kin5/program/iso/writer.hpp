@@ -29,6 +29,7 @@
 
 #include "../block.hpp"
 #include "../cutter_radius.hpp"
+#include "../machine_functions.hpp"
 #include "../number.hpp"
 #include "../program_end.hpp"
 #include "../program_name.hpp"
@@ -166,7 +167,7 @@ class writer {
     moved_ = moved_ || b.moves();
     if (b.feed_mode) inverse_time_ = *b.feed_mode == feed_unit::inverse_time;
     if (inch_) mm_to_inches(in_unit, !inverse_time_);
-    const bool loads = std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
+    const bool loads = changes_tool(b);
     const bool change = !same_ && loads;
     if (b.tool_name)  // ISO's T takes a number: a name is not written as something else
       fail(b, "a tool by name (\"" + *b.tool_name + "\") has no " + std::string(options_.spell.name) +
@@ -206,6 +207,7 @@ class writer {
 
  private:
   bool same_;  // the blocks were read as ISO
+  std::vector<int> m_words_;  // the M functions of the block being written (`codes`)
   write_options options_;
   source_end end_;       // where another dialect's program stops running
   bool opened_ = false;  // `%` and `O` written, the closing `%` not yet
@@ -460,7 +462,9 @@ class writer {
     }
     if (b.tool) words_.push_back(code('T', *b.tool));
     bool ends = false;  // an M2 / M30 written in this block
-    for (int m : b.m_codes) {
+    m_words_.clear();
+    if (const std::string why = m_words_of(b, {}, true, m_words_); !why.empty()) fail(b, why);
+    for (int m : m_words_) {
       // M91 / M92 of another dialect are machine coordinates, already written as G53
       if (!same_ && b.machine_coordinates && (m == 91 || m == 92)) continue;
       words_.push_back(code('M', m));

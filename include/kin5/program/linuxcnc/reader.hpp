@@ -138,8 +138,7 @@ class own_words {
       error(b.where.column, "G4: a dwell is read in a block of its own (N, P and a comment): every other dialect writes "
                             "it so");
     if (b.tool) selected_ = *b.tool;
-    for (int m : b.m_codes)
-      if (m == 6) loaded_ = selected_, length_of_loaded_ = false, refused_ = false;
+    if (changes_tool(b)) loaded_ = selected_, length_of_loaded_ = false, refused_ = false;
     if (const auto& on = b.state.length_compensation) {
       const auto& h = b.state.length_register;
       length_of_loaded_ = *on && (!h || (loaded_ && *h == *loaded_));

@@ -28,6 +28,7 @@
 #include "../dwell.hpp"
 #include "../number.hpp"
 #include "../iso/writer.hpp"
+#include "../machine_functions.hpp"
 #include "../program_end.hpp"
 #include "../text.hpp"
 #include "../tool_length.hpp"
@@ -178,7 +179,7 @@ class writer {
     }
   }
 
-  static bool changes_tool(const block& b) { return std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end(); }
+  static bool changes_tool(const block& b) { return kin5::program::changes_tool(b); }
 
   /// Another dialect's tool change under tracking: identity kinematics for the change (M429),
   /// then the new tool's length and tracking again.

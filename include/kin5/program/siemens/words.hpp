@@ -15,6 +15,7 @@
 
 #include "../block.hpp"
 #include "../incremental.hpp"
+#include "../machine_functions.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
 #include "../text.hpp"
@@ -288,7 +289,7 @@ class word_reader {
         return;
       case 'M':
         out_.has_content = true;
-        if (whole(letter, v, start)) b.m_codes.push_back(static_cast<int>(v));
+        if (whole(letter, v, start)) read_machine_function(b, static_cast<long long>(v));
         return;
       case 'D': case 'H':
         out_.has_content = true;

@@ -24,10 +24,12 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "../block.hpp"
 #include "../cutter_radius.hpp"
 #include "../lexing.hpp"
+#include "../machine_functions.hpp"
 #include "../number.hpp"
 #include "../program_end.hpp"
 #include "../program_name.hpp"
@@ -177,7 +179,7 @@ class writer {
       written_ = detail::modal_state{};
       model_motion_.reset();
     }
-    const bool change = !same_ && std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
+    const bool change = !same_ && changes_tool(b);
     source_.apply(b);
     if (b.tool) selected_tool_ = *b.tool, selected_name_.reset();
     if (b.tool_name) selected_name_ = *b.tool_name, selected_tool_.reset();
@@ -208,6 +210,7 @@ class writer {
 
  private:
   bool same_;                                // the blocks were read as Siemens
+  std::vector<int> m_words_;                 // the M functions of the block being written (`tail`)
   bool opened_ = false;                      // the header written (another dialect's program)
   source_end end_;                           // where another dialect's program stops running
   std::string program_file_;
@@ -475,7 +478,9 @@ class writer {
         if (detail::is_late_kept(w)) detail::append_word(line, w);
     }
     bool ends = false;  // an M2 / M30 written in this block: never a second one
-    for (int m : b.m_codes) {
+    m_words_.clear();
+    if (const std::string why = m_words_of(b, {}, true, m_words_); !why.empty()) fail(b, file, why);
+    for (int m : m_words_) {
       // M91 / M92 of another dialect are machine coordinates, already written as SUPA
       if (!same_ && b.machine_coordinates && (m == 91 || m == 92)) continue;
       detail::append_code(line, 'M', m);

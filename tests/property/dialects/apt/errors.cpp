@@ -25,9 +25,9 @@ TEST_CASE("apt: LOAD/TOOL and LOADTL are a tool change, SELECT/TOOL a selection,
   REQUIRE(r.ok());
   const auto& b = r.parsed.blocks;
   REQUIRE(b.size() == 5);
-  CHECK((b[0].tool == 12 && b[0].m_codes == std::vector<int>{6} && !b[0].passthrough));
-  CHECK((b[1].tool == 3 && b[1].m_codes == std::vector<int>{6}));
-  CHECK((b[2].tool == 6 && b[2].m_codes.empty() && !b[2].passthrough));  // a tool made ready, as ISO's T6 alone
+  CHECK((b[0].tool == 12 && b[0].state.tool_change && !b[0].passthrough));
+  CHECK((b[1].tool == 3 && b[1].state.tool_change));
+  CHECK((b[2].tool == 6 && !b[2].state.tool_change && b[2].m_codes.empty() && !b[2].passthrough));  // a tool made ready, as ISO's T6 alone
   CHECK(b[3].passthrough);
   CHECK((b[4].kept_words == std::vector<std::string>{"MULTAX/ON"} && !b[4].passthrough));
   // Written back in APT the change is LOADTL; in ISO it is T n M6.

@@ -35,9 +35,9 @@ TEST_CASE("apt: a post-processor style file") {
   CHECK(b[1].program_begin == "BRACKET 7");
   CHECK((b[2].passthrough && b[2].text == "MACHIN/MILL,1"));
   CHECK(b[3].metric == true);
-  CHECK((b[4].tool == 4 && b[4].m_codes == std::vector<int>{6}));
-  CHECK((b[5].spindle_rpm == 8000.0 && b[5].m_codes == std::vector<int>{3}));
-  CHECK(b[6].m_codes == std::vector<int>{8});
+  CHECK((b[4].tool == 4 && b[4].state.tool_change && b[4].m_codes.empty()));
+  CHECK((b[5].spindle_rpm == 8000.0 && b[5].state.spindle == spindle_rotation::clockwise));
+  CHECK((b[6].state.coolant_flood == true && !b[6].state.coolant_mist && b[6].m_codes.empty()));
   CHECK((b[7].kept_words == std::vector<std::string>{"MULTAX/ON"} && !b[7].passthrough));
   CHECK((b[8].motion == motion_kind::rapid && b[8].feed_rapid && b[8].axes.empty()));
   CHECK(b[9].motion == motion_kind::rapid);
@@ -54,8 +54,8 @@ TEST_CASE("apt: a post-processor style file") {
   CHECK((b[12].motion == motion_kind::linear && b[12].axes.x_mm == 11.0 && !b[12].axes.tool_axis));
   CHECK(b[13].comment == "CHECK DEPTH");
   CHECK((b[14].feed == 12.5 && b[14].feed_mode == feed_unit::inverse_time));
-  CHECK(b[15].m_codes == std::vector<int>{5});
-  CHECK(b[16].m_codes == std::vector<int>{9});
+  CHECK(b[15].state.spindle == spindle_rotation::stopped);
+  CHECK((b[16].state.coolant_flood == false && b[16].state.coolant_mist == false));
   CHECK(b[17].program_end == std::string());
 }
 
@@ -77,8 +77,8 @@ TEST_CASE("apt: the writer's own spelling") {
     p.blocks.push_back(b);
   };
   add([](block& b) { b.program_begin = "P1"; });
-  add([](block& b) { b.tool = 3, b.m_codes = {6}; });  // a tool change (T alone would be SELECT/TOOL)
-  add([](block& b) { b.spindle_rpm = 1000, b.m_codes = {4}; });
+  add([](block& b) { b.tool = 3, b.state.tool_change = true; });  // a tool change (T alone would be SELECT/TOOL)
+  add([](block& b) { b.spindle_rpm = 1000, b.state.spindle = spindle_rotation::counter_clockwise; });
   add([](block& b) { b.feed = 250.25, b.feed_mode = feed_unit::per_minute; });
   add([](block& b) { b.motion = motion_kind::rapid, b.axes.x_mm = 1.23456, b.axes.y_mm = 0, b.axes.z_mm = -0.0001; });
   add([](block& b) {

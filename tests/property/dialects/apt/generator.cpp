@@ -78,31 +78,33 @@ item draw_item(bool& rapid_pending) {
     case 5: {
       const int form = *rc::gen::inRange(0, 6);
       const double s = draw_decimal(1, 40000, 1);
-      if (form == 0) b.m_codes = {5}, it.text = statement("SPINDL", {draw_case("OFF")});
+      if (form == 0) b.state.spindle = spindle_rotation::stopped, it.text = statement("SPINDL", {draw_case("OFF")});
       else if (form == 1) b.spindle_rpm = s, it.text = statement("SPINDL", {draw_spelling(s, 1)});
-      else if (form == 2) b.spindle_rpm = s, b.m_codes = {3}, it.text = statement("SPINDL", {draw_spelling(s, 1), draw_case("CLW")});
-      else if (form == 3) b.spindle_rpm = s, b.m_codes = {4}, it.text = statement("SPINDL", {draw_case("RPM"), draw_spelling(s, 1), draw_case("CCLW")});
-      else if (form == 4) b.m_codes = {3}, it.text = statement("SPINDL", {draw_case("ON")});
-      else b.m_codes = {4}, it.text = statement("SPINDL", {draw_case("CCLW")});
+      else if (form == 2) b.spindle_rpm = s, b.state.spindle = spindle_rotation::clockwise, it.text = statement("SPINDL", {draw_spelling(s, 1), draw_case("CLW")});
+      else if (form == 3) b.spindle_rpm = s, b.state.spindle = spindle_rotation::counter_clockwise, it.text = statement("SPINDL", {draw_case("RPM"), draw_spelling(s, 1), draw_case("CCLW")});
+      else if (form == 4) b.state.spindle = spindle_rotation::clockwise, it.text = statement("SPINDL", {draw_case("ON")});
+      else b.state.spindle = spindle_rotation::counter_clockwise, it.text = statement("SPINDL", {draw_case("CCLW")});
       break;
     }
     case 6: {
       const auto t = *rc::gen::inRange<long long>(0, 1000);
       b.tool = t;
-      b.m_codes = {6};  // a tool change, as ISO's T n M6
+      b.state.tool_change = true;  // as ISO's T n M6
       it.text = *rc::gen::arbitrary<bool>() ? statement("LOADTL", {draw_spelling(static_cast<double>(t), 0)})
                                             : statement("LOAD", {draw_case("TOOL"), draw_spelling(static_cast<double>(t), 0)});
       break;
     }
     case 7: {
       const int form = *rc::gen::inRange(0, 4);
-      b.m_codes = {form == 3 ? 7 : form == 2 ? 9 : 8};
+      if (form == 3) b.state.coolant_mist = true;
+      else if (form == 2) b.state.coolant_flood = b.state.coolant_mist = false;
+      else b.state.coolant_flood = true;
       it.text = statement("COOLNT", {draw_case(form == 0 ? "ON" : form == 1 ? "FLOOD" : form == 2 ? "OFF" : "MIST")});
       break;
     }
     case 8: {
       const bool stop = *rc::gen::arbitrary<bool>();
-      b.m_codes = {stop ? 0 : 1};
+      b.state.stop = stop ? program_stop::stop : program_stop::optional_stop;
       it.text = draw_case(stop ? "STOP" : "OPSTOP");
       break;
     }

@@ -34,7 +34,7 @@ TEST_CASE("haas: a UMC program with G234, G154, leading zeros, inch and a dwell"
   CHECK(b[1].program_begin == "04410");
   CHECK((b[2].metric == false && b[2].tcp == false && b[2].state.length_compensation == false));
   CHECK(b[3].state.work_offset == work_offset{work_offset_family::extended, 12});
-  CHECK((b[4].tool == 2 && b[4].m_codes == std::vector<int>{6}));
+  CHECK((b[4].tool == 2 && b[4].state.tool_change && b[4].m_codes.empty()));
   CHECK((b[6].tcp == true && b[6].state.length_compensation == true && b[6].state.length_register == 2));
   CHECK((b[7].axes.x_mm == Approx(25.4) && b[7].axes.b_deg == 0.0));
   CHECK(b[8].feed == Approx(25 * 25.4));  // inches per minute, read as mm

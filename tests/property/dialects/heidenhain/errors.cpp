@@ -38,10 +38,10 @@ TEST_CASE("heidenhain: resets and control bytes inside comments are not errors")
   }
 }
 
-TEST_CASE("heidenhain: STOP is M0, its comment kept") {
+TEST_CASE("heidenhain: STOP is a program stop (M0), its comment kept") {
   const read_result stop = heidenhain::read("STOP ; check\n", "t.h");
   REQUIRE(stop.ok());
-  CHECK((stop.parsed.blocks[0].m_codes == std::vector<int>{0} && stop.parsed.blocks[0].comment == " check"));
+  CHECK((stop.parsed.blocks[0].state.stop == program_stop::stop && stop.parsed.blocks[0].comment == " check"));
 }
 
 TEST_CASE("heidenhain: CYCL DEF 247 selects the preset of its Q339, the block kept whole") {

@@ -56,11 +56,11 @@ TEST_CASE("heidenhain: a program in NX and hand-edit style") {
   CHECK((b[4].number == 1 && b[4].comment == " " && b[4].where.line == 6));
   CHECK(b[5].comment == "  OPERATION: ROUGH - TOOL: T3 D10.0");
   CHECK((b[6].tool == 3 && b[6].spindle_rpm == 8000.0 && b[6].kept_words == std::vector<std::string>{"Z"}));
-  CHECK(b[6].m_codes == std::vector<int>{6});  // TOOL CALL n is a tool change, M6 in every dialect's model
+  CHECK((b[6].state.tool_change && b[6].m_codes.empty()));  // TOOL CALL n is a tool change
   CHECK((b[7].motion == motion_kind::rapid && b[7].feed_rapid && b[7].axes.x_mm == -450.0 && b[7].axes.y_mm == -10.0));
   CHECK((b[7].machine_coordinates && b[7].m_codes == std::vector<int>{91}));
   CHECK((b[8].axes.b_deg == 0.0 && b[8].axes.c_deg == 0.0 && !b[8].axes.has_linear()));
-  CHECK((b[9].number == 6 && b[9].axes.x_mm == 61.0 && b[9].axes.y_mm == 0.5 && b[9].m_codes == std::vector<int>{3}));
+  CHECK((b[9].number == 6 && b[9].axes.x_mm == 61.0 && b[9].axes.y_mm == 0.5 && b[9].state.spindle == spindle_rotation::clockwise));
   CHECK((b[10].number == 6 && b[10].where.line == 13 && b[10].axes.z_mm == -0.25 && b[10].feed == 1000.0));
   CHECK((b[10].motion == motion_kind::linear && !b[10].feed_rapid && b[10].comment == " plunge"));
   CHECK((b[11].comment == " - FINISH \xC4\xE3" && !b[11].number));
@@ -84,7 +84,8 @@ TEST_CASE("heidenhain: a program in NX and hand-edit style") {
   CHECK(b[19].tcp == false);
   CHECK((b[20].passthrough && b[20].text == "16 TOOL DEF 5"));
   CHECK((b[21].number == 17 && !b[21].comment && !b[21].passthrough && !b[21].motion));
-  CHECK(b[22].m_codes == std::vector<int>{5, 9});
+  CHECK((b[22].m_codes.empty() && b[22].state.spindle == spindle_rotation::stopped &&
+         b[22].state.coolant_flood == false && b[22].state.coolant_mist == false));
   CHECK(b[23].m_codes == std::vector<int>{30});
   CHECK((b[24].program_end == "BRACKET" && b[24].metric == true));
 }
@@ -101,7 +102,7 @@ TEST_CASE("heidenhain: a tool call by name is read, TOOL CALL's axis sets the pl
   REQUIRE(r.parsed.blocks.size() == 4);
   CHECK(r.parsed.blocks[0].tool_name == "MILL_D10");
   CHECK_FALSE(r.parsed.blocks[0].tool);
-  CHECK(r.parsed.blocks[0].m_codes == std::vector<int>{6});
+  CHECK(r.parsed.blocks[0].state.tool_change);
   CHECK(r.parsed.blocks[0].spindle_rpm == 5000);
   CHECK(r.parsed.blocks[3].passthrough);
   CHECK((r.parsed.blocks[1].tool == 5 && r.parsed.blocks[1].kept_words == std::vector<std::string>{"Y"}));
@@ -167,7 +168,7 @@ TEST_CASE("heidenhain: blocks from another dialect are written, and what has no 
   p.blocks.push_back(b);
   b = {};
   b.tool = 4;
-  b.m_codes = {6};
+  b.state.tool_change = true;
   p.blocks.push_back(b);
   b = {};
   b.motion = motion_kind::rapid;  // G53 G0 Z0

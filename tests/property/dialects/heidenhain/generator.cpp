@@ -87,7 +87,7 @@ void add_m_codes(std::string& text, block& b) {
       tcp_seen = true;
       b.tcp = m == 128;
     } else {
-      b.m_codes.push_back(m);
+      read_machine_function(b, m, {.m7_mist = false, .m13_m14 = true});
       if (m == 91 || m == 92) b.machine_coordinates = true;
     }
     text += gap() + draw_case("M") + std::to_string(m);
@@ -238,9 +238,9 @@ item draw_item(modal& m) {
       const bool tool = tool_kind != 0;
       if (tool_kind == 1) {  // a name of the characters a TNC takes (TNC 640 User's Manual §5.2)
         b.tool_name = *rc::gen::element<std::string>("MILL_D10", "BALL-R3.5", "T#1", "DRILL$6&,%");
-        t += gap() + "\"" + *b.tool_name + "\"", b.m_codes = {6};
+        t += gap() + "\"" + *b.tool_name + "\"", b.state.tool_change = true;
       } else if (tool) {
-        b.tool = *rc::gen::inRange(0, 1000), t += gap() + std::to_string(*b.tool), b.m_codes = {6};  // a change
+        b.tool = *rc::gen::inRange(0, 1000), t += gap() + std::to_string(*b.tool), b.state.tool_change = true;
       }
       const std::string axis = *rc::gen::element<std::string>("", "X", "Y", "Z", "Z");
       if (!axis.empty()) {
@@ -270,9 +270,12 @@ item draw_item(modal& m) {
       t = draw_case("M") + std::to_string(*rc::gen::element(3, 5, 9, 30, 91, 128, 129));
       b.m_codes.clear();
       const int first = std::stoi(t.substr(1));
+      const auto take = [&b](int m) {
+        read_machine_function(b, m, {.m7_mist = false, .m13_m14 = true});
+      };
       if (first == 128 || first == 129) b.tcp = first == 128;
-      else b.m_codes.push_back(first), b.machine_coordinates = first == 91;
-      if (*rc::gen::arbitrary<bool>()) t += gap() + draw_case("M") + "8", b.m_codes.push_back(8);
+      else take(first), b.machine_coordinates = first == 91;
+      if (*rc::gen::arbitrary<bool>()) t += gap() + draw_case("M") + "8", take(8);
       break;
     }
     case 10: {  // comment lines

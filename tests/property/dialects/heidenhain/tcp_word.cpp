@@ -32,7 +32,7 @@ std::vector<tracked_move> moves_of(const program& p, bool& tool_call_under_tcp) 
   bool tcp = false;
   for (const block& b : p.blocks) {
     if (b.tcp) tcp = *b.tcp;
-    const bool change = b.state.tool_change || std::find(b.m_codes.begin(), b.m_codes.end(), 6) != b.m_codes.end();
+    const bool change = b.state.tool_change;
     if (change && tcp) tool_call_under_tcp = true;
     if (b.moves()) out.push_back({b.axes.x_mm, b.axes.a_deg, tcp});
   }
@@ -52,7 +52,6 @@ program draw_iso_program() {
     switch (*rc::gen::inRange(0, 4)) {
       case 0:  // a tool change
         b.tool = *rc::gen::inRange(1, 99);
-        b.m_codes = {6};
         b.state.tool_change = true;
         break;
       case 1:  // TCP switched with a move, or alone

@@ -52,13 +52,13 @@ TEST_CASE("iso: a Fanuc post style program with G43.4, homing and arcs") {
   CHECK((b[2].tcp == false && b[2].metric == true));
   CHECK((b[3].machine_coordinates && b[3].kept_words == strings{"G28"} && b[3].axes.z_mm == 0.0));
   CHECK(b[3].state.distance == distance_mode::incremental);
-  CHECK(b[3].m_codes == std::vector<int>{5});
+  CHECK((b[3].m_codes.empty() && b[3].state.spindle == spindle_rotation::stopped));
   CHECK((b[4].machine_coordinates && b[4].axes.b_deg == 0.0));
-  CHECK((b[5].tool == 5 && b[5].m_codes == std::vector<int>{6}));
+  CHECK((b[5].tool == 5 && b[5].state.tool_change && b[5].m_codes.empty()));
   CHECK(b[6].kept_words == strings{"G05.1", "Q1"});
   CHECK((b[7].kept_words.empty() && b[7].state.work_offset == work_offset{work_offset_family::g54, 1}));
   CHECK((b[8].motion == motion_kind::rapid && b[8].axes.b_deg == -30.0 && b[8].axes.c_deg == 45.0));
-  CHECK((b[8].spindle_rpm == 8000.0 && b[8].m_codes == std::vector<int>{3}));
+  CHECK((b[8].spindle_rpm == 8000.0 && b[8].state.spindle == spindle_rotation::clockwise));
   CHECK(b[8].state.distance == distance_mode::absolute);
   CHECK((b[9].tcp == true && b[9].kept_words.empty() && b[9].axes.x_mm == 10.0));
   CHECK((b[9].state.length_compensation == true && b[9].state.length_register == 5));
@@ -92,7 +92,7 @@ TEST_CASE("iso: LinuxCNC style: M428 remap, semicolon comments, G93, G43 is not 
   const auto b = kin5::test::read_example<iso::dialect>(text, "l.ngc", 10);
   CHECK((b[1].m_codes == std::vector<int>{428} && !b[1].tcp && b[1].comment == "TCP:xyzbc"));
   CHECK((b[2].motion == motion_kind::rapid && b[2].feed_mode == feed_unit::per_minute));
-  CHECK((!b[4].tcp && b[4].kept_words.empty() && b[4].m_codes == std::vector<int>{8}));
+  CHECK((!b[4].tcp && b[4].kept_words.empty() && b[4].state.coolant_flood == true && b[4].m_codes.empty()));
   CHECK((b[4].state.length_compensation == true && b[4].state.length_register == 3));
   CHECK(b[5].feed_mode == feed_unit::inverse_time);
   CHECK((b[6].feed == 120.75 && b[6].axes.z_mm == -0.25 && b[6].axes.c_deg == -90.0));
@@ -190,7 +190,7 @@ TEST_CASE("iso: a parameter in a whole-number word reads as the control rounds i
   CHECK(b[5].state.length_compensation == true);
   CHECK(b[5].state.length_register == 1);
   CHECK(b[6].spindle_rpm == 1001.0);
-  CHECK(b[6].m_codes == std::vector<int>{4});
+  CHECK((b[6].m_codes.empty() && b[6].state.spindle == spindle_rotation::counter_clockwise));
   CHECK(b[7].axes.x_mm == 10.1234);
 }
 

@@ -271,7 +271,7 @@ inline item draw_item(state& st, const flavour& f) {
       const int count = *rc::gen::inRange(b.spindle_rpm || b.tool ? 0 : 1, 3);
       for (int k = 0; k < count; ++k) {
         const int m = *rc::gen::element(0, 1, 3, 4, 5, 6, 8, 9, 428);
-        b.m_codes.push_back(m);
+        read_machine_function(b, m);
         it.words.push_back(spell_code('M', m));
       }
       break;

@@ -47,9 +47,10 @@ TEST_CASE("linuxcnc: a trt program: M428/M429, G43 without H, G59.1, G93, G4 P i
          b[2].state.radius_compensation == cutter_side::off));
   CHECK(b[2].metric == true);
   CHECK(b[3].state.work_offset == work_offset{work_offset_family::g54, 7});
-  CHECK((b[4].tool == 7 && b[4].m_codes == std::vector<int>{6}));
+  CHECK((b[4].tool == 7 && b[4].state.tool_change && b[4].m_codes.empty()));
   CHECK((b[5].state.length_compensation == true && b[5].state.length_register == 7));  // G43: the loaded T7
-  CHECK(b[6].m_codes == std::vector<int>{3, 8, 7});
+  CHECK((b[6].m_codes.empty() && b[6].state.spindle == spindle_rotation::clockwise && b[6].state.coolant_flood == true &&
+         b[6].state.coolant_mist == true));
   CHECK((b[7].tcp == true && b[7].comment == "tcp kinematics" && b[7].m_codes.empty()));
   CHECK((b[8].motion == motion_kind::rapid && b[8].axes.a_deg == -10.0 && b[8].axes.c_deg == 20.0));
   CHECK(b[9].feed_mode == feed_unit::inverse_time);

@@ -167,7 +167,7 @@ void draw_tool(item& it, state& st) {
   b.tool = t;
   it.words.push_back(spell_code('T', t));
   if (*rc::gen::arbitrary<bool>()) {
-    b.m_codes.push_back(6);
+    b.state.tool_change = true;
     it.words.push_back(spell_code('M', 6));
     st.length = false;
     st.loaded = t;
@@ -193,7 +193,7 @@ void draw_codes(item& it) {
   const int count = *rc::gen::inRange(b.spindle_rpm ? 0 : 1, 3);
   for (int k = 0; k < count; ++k) {
     const int m = *rc::gen::element(0, 1, 3, 4, 5, 7, 8, 9);
-    b.m_codes.push_back(m);
+    read_machine_function(b, m);
     it.words.push_back(spell_code('M', m));
   }
 }

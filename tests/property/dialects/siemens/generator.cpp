@@ -200,7 +200,7 @@ void move_block(line& l, state& s) {
   if (*rc::gen::inRange(0, 4) == 0) b.spindle_rpm = draw_decimal(0, 240'000, 1), l.words.push_back(spell_address("S", *b.spindle_rpm, 1));
   if (*rc::gen::inRange(0, 6) == 0) {
     const int m = *rc::gen::element(3, 4, 5, 8, 9);
-    b.m_codes.push_back(m);
+    read_machine_function(b, m);
     l.words.push_back(spell_code('M', m));
   }
   if (b.moves() && *rc::gen::inRange(0, 6) == 0) {
@@ -241,8 +241,8 @@ line draw_line(state& s) {
       if (coin()) b.tool = *rc::gen::inRange(0, 1000), l.words.push_back(spell_address("T", static_cast<double>(*b.tool), 0));
       else if (coin()) b.tool_name = "Mill 10", l.words.push_back(draw_case("T") + "=\"Mill 10\"");
       if (coin()) b.spindle_rpm = draw_decimal(0, 240'000, 1), l.words.push_back(spell_address("S", *b.spindle_rpm, 1));
-      if (coin()) b.m_codes.push_back(6), l.words.push_back(spell_code('M', 6));
-      if (l.words.empty()) b.m_codes.push_back(5), l.words.push_back(spell_code('M', 5));
+      if (coin()) b.state.tool_change = true, l.words.push_back(spell_code('M', 6));
+      if (l.words.empty()) b.state.spindle = spindle_rotation::stopped, l.words.push_back(spell_code('M', 5));
       break;
     }
     case 8: {  // machine coordinates
