@@ -126,6 +126,8 @@ class executor {
       if (!next) return false;
       if (!calls_.empty() && calls_.back().ends == call_end::calling_line && next->offset == calls_.back().from.offset)
         next = finish_pass();
+      else if (!calls_.empty() && calls_.back().ends == call_end::end_label && at.offset == calls_.back().end.offset)
+        next = finish_pass();
       if (next->offset >= text_.size() && !calls_.empty())
         return fail(on_error, here.line,
                     "the text ends inside the call from line " + std::to_string(calls_.back().from.number));
@@ -149,6 +151,7 @@ class executor {
     position start;                 ///< the first line of each pass
     std::uint64_t passes_left = 1;  ///< this pass included
     call_end ends{};
+    position end{};                 ///< `call_end::end_label`: each pass's last line
     bool frame = true;              ///< the call opened a frame of local parameters
     std::size_t loops_open = 0;     ///< loops open when the call began
   };
@@ -159,6 +162,8 @@ class executor {
     std::string key;
     loop_kind kind{};
     std::uint64_t runs_left = 0;    ///< counted loops
+    double last = 0;                ///< counting loops: the counter's last value
+    std::optional<parameter_key> counter{};  ///< counting loops
     std::size_t call_depth = 0;     ///< calls open when it began
   };
   struct label_entry {
@@ -271,6 +276,7 @@ class executor {
       const line_at l = line_of(p);
       statement s = syntax.statement_of(l.line);
       if (!s.label.empty()) labels_->push_back({std::move(s.label), p});
+      if (!s.block_label.empty()) labels_->push_back({std::move(s.block_label), p});
       p = l.next;
     }
   }
@@ -290,12 +296,22 @@ class executor {
     return nearest;
   }
 
+  /// The first line at or after `from` that defines label `name`.
+  template <class Syntax>
+  std::optional<position> find_label_at_or_after(Syntax& syntax, const std::string& name, position from) {
+    if (!labels_) index_labels(syntax);
+    for (const label_entry& e : *labels_)
+      if (e.at.offset >= from.offset && e.name == name) return e.at;
+    return std::nullopt;
+  }
+
   template <class Syntax, class OnError>
   std::optional<position> jump(Syntax& syntax, const statement& s, position at, const text_line& line, OnError& on_error) {
     const auto taken = holds(s.condition, line, on_error);
     if (!taken) return std::nullopt;
     if (!*taken) return after(at);
     const auto target = find_label(syntax, s.target, s.direction, at);
+    if (!target && s.target_optional) return after(at);
     if (!target) return failed(on_error, line, "jump to " + s.target + ": no such label " + where_searched(s.direction));
     leave_loops_for(syntax, *target);
     return target;
@@ -311,6 +327,14 @@ class executor {
     const statement first = syntax.statement_of(line_of(*target).line);
     const position start =
         first.kind == statement_kind::label || first.kind == statement_kind::subprogram ? after(*target) : *target;
+    position end{};
+    if (s.ends == call_end::end_label) {
+      const auto last = find_label_at_or_after(syntax, s.end_target, *target);
+      if (!last)
+        return failed(on_error, here.line, "repeat of " + s.target + " to " + s.end_target + ": no label " + s.end_target +
+                                               " after " + s.target);
+      end = *last;
+    }
     if (s.call_frame) {
       if (!parameters_.enter_call())
         return failed(on_error, here.line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) + " deep");
@@ -322,7 +346,7 @@ class executor {
     } else if (calls_.size() >= parameter_store::max_call_depth) {
       return failed(on_error, here.line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) + " deep");
     }
-    calls_.push_back({at, here.next, start, *count, s.ends, s.call_frame, loops_.size()});
+    calls_.push_back({at, here.next, start, *count, s.ends, end, s.call_frame, loops_.size()});
     call_lines_.push_back(here.line.number);
     return start;
   }
@@ -418,13 +442,34 @@ class executor {
         if (!c) return std::nullopt;
         runs = *c;
       }
-      loops_.push_back({at, here.next, std::nullopt, s.key, s.loop, runs, calls_.size()});
+      loops_.push_back({at, here.next, std::nullopt, s.key, s.loop, runs, 0, std::nullopt, calls_.size()});
       if (s.loop == loop_kind::counted && runs == 0) return leave_loop(syntax, here.line, on_error);
+      if (s.loop == loop_kind::counting) return count_from(syntax, s, here, on_error);
     }
     if (s.loop != loop_kind::test_first) return here.next;
     const auto go_on = holds(s.condition, here.line, on_error);
     if (!go_on) return std::nullopt;
     return *go_on ? std::optional<position>(here.next) : leave_loop(syntax, here.line, on_error);
+  }
+
+  /// A counting loop begins: its counter takes its first value and its last is evaluated; no
+  /// run when the first is past the last.
+  template <class Syntax, class OnError>
+  std::optional<position> count_from(Syntax& syntax, const statement& s, const line_at& here, OnError& on_error) {
+    open_loop& l = loops_.back();
+    if (!s.counter || !s.count) return failed(on_error, here.line, "a counting loop without its counter or last value");
+    const evaluation first = evaluate(s.counter->value, parameters_);
+    if (!first.ok()) return failed(on_error, here.line, first.error->message, first.error->where.column);
+    const evaluation last = evaluate(*s.count, parameters_);
+    if (!last.ok()) return failed(on_error, here.line, last.error->message, last.error->where.column);
+    const parameter_target t = parameter_of(s.counter->target, parameters_);
+    if (!t.key) return failed(on_error, here.line, t.error->message, t.error->where.column);
+    if (auto why = parameters_.assign(*t.key, first.value))
+      return failed(on_error, here.line, *why, s.counter->target.at(s.counter->target.root).where.column);
+    l.counter = *t.key;
+    l.last = last.value;
+    if (first.value <= last.value) return here.next;
+    return leave_loop(syntax, here.line, on_error);
   }
 
   template <class OnError>
@@ -437,6 +482,13 @@ class executor {
       case loop_kind::test_first: return l.begin;  // the test is at the top
       case loop_kind::counted: again = --l.runs_left > 0; break;
       case loop_kind::endless: break;
+      case loop_kind::counting: {
+        const parameter_read c = parameters_.read(*l.counter);
+        if (!c.value) return failed(on_error, here.line, c.why);
+        if (auto why = parameters_.assign(*l.counter, *c.value + 1)) return failed(on_error, here.line, *why);
+        again = *c.value + 1 <= l.last;
+        break;
+      }
       case loop_kind::test_last: {
         const auto h = holds(s.condition, here.line, on_error);
         if (!h) return std::nullopt;
