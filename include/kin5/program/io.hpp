@@ -43,7 +43,19 @@ read_result read(dialect d, std::string_view text, std::string file_name, const 
     return refused;
   }
   return visit_dialect<List>(
-      d, [&]<class D>(std::type_identity<D>) { return read_whole(d, text, std::move(file_name), &D::read_blocks); },
+      d,
+      [&]<class D>(std::type_identity<D>) {
+        if constexpr (requires(read_result& r, const block_sink& sink) { D::read_blocks(text, file_name, r, sink, limits); }) {
+          read_result result;  // a reader that executes the program: within `limits.max_executed_lines`
+          result.parsed.language = d;
+          result.parsed.file = std::move(file_name);
+          D::read_blocks(text, result.parsed.file, result,
+                         [&](block&& b) { result.parsed.blocks.push_back(std::move(b)); }, limits);
+          return result;
+        } else {
+          return read_whole(d, text, std::move(file_name), &D::read_blocks);
+        }
+      },
       [] { return read_result{}; });
 }
 
@@ -60,7 +72,10 @@ inline void read_blocks(dialect d, std::string_view text, const std::string& fil
   visit_dialect(
       d,
       [&]<class D>(std::type_identity<D>) {
-        D::read_blocks(text, file_name, diagnostics, on_block);
+        if constexpr (requires { D::read_blocks(text, file_name, diagnostics, on_block, limits); })
+          D::read_blocks(text, file_name, diagnostics, on_block, limits);  // a reader that executes the program
+        else
+          D::read_blocks(text, file_name, diagnostics, on_block);
         return true;
       },
       [] { return false; });

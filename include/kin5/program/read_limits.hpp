@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <optional>
 #include <string>
@@ -28,6 +29,9 @@ struct read_limits {
   /// Words of one line, counted as `starts_word` does (a block continued over several lines,
   /// Heidenhain `~` or APT `$`, is counted line by line).
   std::size_t max_block_words = 100'000;
+  /// Lines a program may execute, a loop's lines once per run (interp/executor.hpp): past it the
+  /// program is taken to loop for ever. Only the readers that execute programs use it.
+  std::uint64_t max_executed_lines = 100'000'000;
 };
 
 /// Whether byte `c` after byte `previous` (a blank at the line's start) starts a word in the

@@ -181,12 +181,12 @@ class executor {
   std::optional<std::vector<label_entry>> labels_;  // in file order, once scanned
   bool entering_else_if_ = false;                   // a false branch passed control to this ELSEIF
 
+  /// The line at `p`: it ends at LF, CR LF or a lone CR, as `for_each_line` (text.hpp) has it.
   line_at line_of(position p) const {
-    const std::size_t lf = text_.find('\n', p.offset);
-    const std::size_t stop = lf == std::string_view::npos ? text_.size() : lf;
-    std::string_view s = text_.substr(p.offset, stop - p.offset);
-    if (const std::size_t cr = s.find('\r'); cr != std::string_view::npos) s = s.substr(0, cr);
-    return {{s, p.number}, {lf == std::string_view::npos ? text_.size() : lf + 1, p.number + 1}};
+    const std::size_t end = text_.find_first_of("\r\n", p.offset);
+    if (end == std::string_view::npos) return {{text_.substr(p.offset), p.number}, {text_.size(), p.number + 1}};
+    const std::size_t next = text_[end] == '\r' && end + 1 < text_.size() && text_[end + 1] == '\n' ? end + 2 : end + 1;
+    return {{text_.substr(p.offset, end - p.offset), p.number}, {next, p.number + 1}};
   }
 
   position after(position p) const { return line_of(p).next; }
@@ -264,7 +264,8 @@ class executor {
     switch (d) {
       case jump_direction::forward: return "after this line";
       case jump_direction::backward: return "before this line";
-      case jump_direction::either: break;
+      case jump_direction::either:
+      case jump_direction::backward_then_forward: break;
     }
     return "in this file";
   }
@@ -286,6 +287,10 @@ class executor {
   template <class Syntax>
   std::optional<position> find_label(Syntax& syntax, const std::string& name, jump_direction direction, position from) {
     if (!labels_) index_labels(syntax);
+    if (direction == jump_direction::backward_then_forward) {
+      if (auto before = find_label(syntax, name, jump_direction::backward, from)) return before;
+      return find_label(syntax, name, jump_direction::forward, from);
+    }
     if (direction != jump_direction::backward)
       for (const label_entry& e : *labels_)
         if (e.at.offset > from.offset && e.name == name) return e.at;

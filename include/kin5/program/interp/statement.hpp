@@ -49,6 +49,7 @@ enum class jump_direction : unsigned char {
   forward,   ///< the nearest after (Siemens `GOTOF`)
   backward,  ///< the nearest before (Siemens `GOTOB`)
   either,    ///< the nearest after, else the nearest before (Siemens `GOTO`, FANUC `GOTO`, calls)
+  backward_then_forward,  ///< the nearest before, else the nearest after (Siemens `REPEAT a b`, `REPEATB`)
 };
 
 /// When a pass of a called part ends.
