@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -77,6 +78,10 @@ void add_limit_options(CLI::App* sub, program::read_limits& limits) {
                   "Refuse a line of the input with more words than this (every run of letters, number after a "
                   "blank and other mark counts); default 100000")
       ->check(CLI::Range(std::size_t{1}, std::numeric_limits<std::size_t>::max()));
+  sub->add_option("--max-executed-lines", limits.max_executed_lines,
+                  "Stop a program that executes more lines than this (each run of a loop counts its lines again): "
+                  "it is taken to loop for ever; default 100000000")
+      ->check(CLI::Range(std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max()));
 }
 
 }  // namespace kin5::tool

@@ -66,6 +66,7 @@ struct toy_syntax {
     else if (op == "JC") s.kind = K::jump, s.target = word(0), s.target_optional = true;
     else if (op == "SE") {
       s.kind = K::call, s.target = word(0), s.end_target = word(1), s.ends = ip::call_end::end_label, s.call_frame = false;
+      s.direction = ip::jump_direction::backward_then_forward;
       if (auto [c, col] = after_word(2); !c.empty()) s.count = expr(c, l, col);
     } else if (op == "F") {
       s.kind = K::loop_begin, s.loop = ip::loop_kind::counting;
@@ -131,6 +132,7 @@ TEST_CASE("executor: a program without control flow runs line by line", "[execut
   const auto r = run("P a\nP b\r\nP c");
   CHECK(r.ok);
   CHECK(r.lines == lines({"P a", "P b", "P c"}));
+  CHECK(run("P a\rP b\rJ x\rP c\rL x\r").lines == lines({"P a", "P b"}));  // a lone CR ends a line, as for_each_line has it
 }
 
 TEST_CASE("executor: jumps forward, backward, conditional, and a missing label", "[executor]") {
@@ -238,6 +240,9 @@ TEST_CASE("executor: counting loops, optional jumps, sections between two labels
   CHECK(run("P a\nSE s e 2\nP b\nE\nL s\nP in\nL e\nP never\n").lines == lines({"P a", "P in", "P in", "P b", "E"}));
   CHECK(run("PL s\nP x\nSE s s 2\nP end\n").lines == lines({"PL s", "P x", "PL s", "PL s", "P end"}));  // one line
   CHECK(run("L s\nSE s e 1\n").error == "2:1: repeat of s to e: no label e after s");
+  // The start searched before the call first, then after it.
+  CHECK(run("PL s\nPL e\nSE s e 1\nE\nPL s\nP after\nPL e\n").lines == lines({"PL s", "PL e", "PL s", "PL e", "E"}));
+  CHECK(run("SE s e 1\nE\nPL s\nP after\nPL e\n").lines == lines({"PL s", "P after", "PL e", "E"}));
   // A line's second label (its block number) is a jump target too.
   CHECK(run("J N30\nP skipped\nL x N30\nP a\n").lines == lines({"P a"}));
 }
