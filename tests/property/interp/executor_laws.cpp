@@ -171,6 +171,7 @@ TEST_CASE("executor: while, do-until, counted loops, break and continue", "[exec
         lines({"A #1 = 0", "A #1 = [#1+1]", "P x", "A #1 = [#1+1]", "A #1 = [#1+1]", "P x"}));
   CHECK(run("B\n").error == "1:1: a loop break outside a loop");
   CHECK(run("EW\n").error == "1:1: the end of a loop that is not open");
+  CHECK(run("P a\nW [1]\nP x\n").error == "2:1: a loop without its end");  // the text ends inside it
 }
 
 TEST_CASE("executor: a jump out of a loop closes it", "[executor]") {

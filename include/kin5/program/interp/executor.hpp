@@ -133,6 +133,7 @@ class executor {
                     "the text ends inside the call from line " + std::to_string(calls_.back().from.number));
       at = *next;
     }
+    if (!loops_.empty()) return fail(on_error, line_of(loops_.back().begin).line, "a loop without its end");
     return true;
   }
 

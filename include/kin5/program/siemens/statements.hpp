@@ -98,7 +98,7 @@ inline bool has_end_word(std::string_view t) {
     while (k < t.size() && t[k] == '0') ++k;
     std::size_t e = k;
     while (e < t.size() && is_digit(t[e])) ++e;
-    if (e == i + 1 || (e < t.size() && (t[e] == '.' || t[e] == '=' || is_ident_char(t[e]) && !is_letter(t[e])))) continue;
+    if (e == i + 1 || (e < t.size() && (t[e] == '.' || t[e] == '=' || (is_ident_char(t[e]) && !is_letter(t[e]))))) continue;
     const std::string_view n = t.substr(k, e - k);
     if (n == "2" || n == "30" || n == "17") return true;
   }
@@ -202,6 +202,8 @@ class statements {
         i = end;
         return name;
       }
+      refuse(s, line, i, keyword + ": " + name + " is no label (a label starts with two letters or '_'; a block number is N100)");
+      return std::nullopt;
     }
     refuse(s, line, i, keyword + " needs a label (a name, or a block number: N100)");
     return std::nullopt;
@@ -288,8 +290,10 @@ class statements {
   /// The control statement at `i`, if the word there is one.
   static void control(interp::statement& s, const text_line& line, std::size_t i) {
     const std::string_view t = line.text;
-    const char c = to_upper(t[i]);
-    if (c != 'E' && c != 'F' && c != 'G' && c != 'I' && c != 'L' && c != 'R' && c != 'U' && c != 'W' && c != 'C') return;
+    const char first = to_upper(t[i]);
+    if (first != 'E' && first != 'F' && first != 'G' && first != 'I' && first != 'L' && first != 'R' && first != 'U' &&
+        first != 'W' && first != 'C')
+      return;
     const auto [w, end] = word_at(t, i);
     if (end < t.size() && (t[end] == '=' || t[end] == '(' || t[end] == '[')) return;  // an assignment or a call
     std::size_t k = end;
