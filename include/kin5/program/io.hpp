@@ -44,7 +44,19 @@ read_result read(dialect d, std::string_view text, std::string file_name, const 
   }
   const read_limits_scope scope(limits);
   return visit_dialect<List>(
-      d, [&]<class D>(std::type_identity<D>) { return read_whole(d, text, std::move(file_name), &D::read_blocks); },
+      d,
+      [&]<class D>(std::type_identity<D>) {
+        if constexpr (requires(read_result& r, const block_sink& sink) { D::read_blocks(text, file_name, r, sink, limits); }) {
+          read_result result;  // a reader that executes the program: within `limits.max_executed_lines`
+          result.parsed.language = d;
+          result.parsed.file = std::move(file_name);
+          D::read_blocks(text, result.parsed.file, result,
+                         [&](block&& b) { result.parsed.blocks.push_back(std::move(b)); }, limits);
+          return result;
+        } else {
+          return read_whole(d, text, std::move(file_name), &D::read_blocks);
+        }
+      },
       [] { return read_result{}; });
 }
 

@@ -9,6 +9,9 @@
 //   RC            return; nothing without a call
 //   I expr / EI expr / EL / EN          IF, ELSEIF, ELSE, ENDIF (nested by depth)
 //   W expr / EW   while loop   D / U expr   do … until   RP n / ER   counted   B / K   break / continue
+//   F #n a b / EF counting loop (#n from a to b)      JC name      jump, on when the label is missing
+//   SE a b n      section repeat from label a to label b, n passes      L name block   two labels
+//   PL name       ordinary line that defines a label
 // Expressions are LinuxCNC's spelling; parameters LinuxCNC's rules.
 #include <cstddef>
 #include <map>
@@ -62,8 +65,21 @@ struct toy_syntax {
     };
     using K = ip::statement_kind;
     if (op == "P") return s;
+    if (op == "PL") return s.label = word(0), s;
     if (op == "E") s.ends_program = true;
-    else if (op == "L") s.kind = K::label, s.label = word(0);
+    else if (op == "L") s.kind = K::label, s.label = word(0), s.block_label = after_word(1).first;
+    else if (op == "JC") s.kind = K::jump, s.target = word(0), s.target_optional = true;
+    else if (op == "SE") {
+      s.kind = K::call, s.target = word(0), s.end_target = word(1), s.ends = ip::call_end::end_label, s.call_frame = false;
+      s.direction = ip::jump_direction::backward_then_forward;
+      if (auto [c, col] = after_word(2); !c.empty()) s.count = expr(c, l, col);
+    } else if (op == "F") {
+      s.kind = K::loop_begin, s.loop = ip::loop_kind::counting;
+      auto [first, first_col] = after_word(1);
+      auto [last, last_col] = after_word(2);
+      s.counter = ip::assignment{expr(word(0), l, rest_column), expr(word(1), l, first_col)};
+      s.count = expr(last, l, last_col);
+    } else if (op == "EF") s.kind = K::loop_end, s.loop = ip::loop_kind::counting;
     else if (op == "J" || op == "JF" || op == "JB") {
       s.kind = K::jump;
       s.target = word(0);
@@ -130,6 +146,7 @@ TEST_CASE("executor: a program without control flow runs line by line", "[execut
   // Lines end at LF, CRLF or a lone CR, as for_each_line splits them: line numbers agree.
   CHECK(run("P a\rP b\rJ x\nP skipped\rL x\r\nX\r").error == "6:1: unknown statement X");
   CHECK(run("P a\rP b\rJ x\nP skipped\rL x\r\nP c\r").lines == lines({"P a", "P b", "P c"}));
+  CHECK(run("P a\rP b\rJ x\rP c\rL x\r").lines == lines({"P a", "P b"}));  // a lone CR ends a line, as for_each_line has it
 }
 
 TEST_CASE("executor: jumps forward, backward, conditional, and a missing label", "[executor]") {
@@ -176,6 +193,7 @@ TEST_CASE("executor: while, do-until, counted loops, break and continue", "[exec
         lines({"A #1 = 0", "A #1 = [#1+1]", "P x", "A #1 = [#1+1]", "A #1 = [#1+1]", "P x"}));
   CHECK(run("B\n").error == "1:1: a loop break outside a loop");
   CHECK(run("EW\n").error == "1:1: the end of a loop that is not open");
+  CHECK(run("P a\nW [1]\nP x\n").error == "2:1: a loop without its end");  // the text ends inside it
 }
 
 TEST_CASE("executor: a jump out of a loop closes it", "[executor]") {
@@ -451,4 +469,29 @@ TEST_CASE("executor: a return that is only for calls does nothing in the program
   const auto plain = run("L s\nP a\nR\nC s\nE\n");
   CHECK_FALSE(plain.ok);
   CHECK(plain.error == "3:1: returns from a call, but no call is open");
+TEST_CASE("executor: counting loops, optional jumps, sections between two labels, block labels", "[executor]") {
+  // FOR: the counter from its first value up by 1 to the last, evaluated once; none when past it.
+  CHECK(run("F #1 1 3\nA #2 = #1\nEF\nP end\n").lines == lines({"A #2 = #1", "A #2 = #1", "A #2 = #1", "P end"}));
+  CHECK(run("F #1 4 3\nP never\nEF\nP end\n").lines == lines({"P end"}));
+  CHECK(run("F #1 1 2\nF #2 1 2\nP x\nEF\nP y\nEF\n").lines == lines({"P x", "P x", "P y", "P x", "P x", "P y"}));
+  {
+    toy_syntax syntax;
+    const std::string text = "A #3 = 2\nF #1 1 #3\nA #3 = 10\nEF\n";  // the last value is read once
+    ip::executor x{text, kin5::program::linuxcnc::parameter_rules()};
+    CHECK(x.execute(syntax, [](const text_line&, const ip::statement&) {}, [](const ip::flow_error&) {}));
+    CHECK(x.parameters().read({"#", 1}).value == 3.0);
+  }
+  CHECK(run("F #1 1 2\nA #9 = #1\nB\nEF\nP end\n").lines == lines({"A #9 = #1", "P end"}));
+  // GOTOC: a missing label is no error, the run goes on.
+  CHECK(run("JC nowhere\nP a\n").lines == lines({"P a"}));
+  CHECK(run("JC x\nP skipped\nL x\nP a\n").lines == lines({"P a"}));
+  // A section between two labels, run n times from the calling line, then on after it.
+  CHECK(run("P a\nSE s e 2\nP b\nE\nL s\nP in\nL e\nP never\n").lines == lines({"P a", "P in", "P in", "P b", "E"}));
+  CHECK(run("PL s\nP x\nSE s s 2\nP end\n").lines == lines({"PL s", "P x", "PL s", "PL s", "P end"}));  // one line
+  CHECK(run("L s\nSE s e 1\n").error == "2:1: repeat of s to e: no label e after s");
+  // The start searched before the call first, then after it.
+  CHECK(run("PL s\nPL e\nSE s e 1\nE\nPL s\nP after\nPL e\n").lines == lines({"PL s", "PL e", "PL s", "PL e", "E"}));
+  CHECK(run("SE s e 1\nE\nPL s\nP after\nPL e\n").lines == lines({"PL s", "P after", "PL e", "E"}));
+  // A line's second label (its block number) is a jump target too.
+  CHECK(run("J N30\nP skipped\nL x N30\nP a\n").lines == lines({"P a"}));
 }

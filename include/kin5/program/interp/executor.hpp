@@ -107,7 +107,7 @@ class executor {
             if (s.only_in_call) break;
             return fail(on_error, here.line, "returns from a call, but no call is open");
           }
-          while (calls_.back().ends == call_end::calling_line) drop_call();  // the section repeats inside end too
+          while (calls_.back().ends != call_end::return_statement) drop_call();  // the section repeats inside end too
           next = finish_pass();
           break;
         case statement_kind::if_branch: next = branch(syntax, s, here, on_error); break;
@@ -129,6 +129,8 @@ class executor {
           break;
       }
       if (!next) return false;
+      if (!calls_.empty() && calls_.back().ends == call_end::end_label && at.offset == calls_.back().end.offset)
+        next = finish_pass();  // the repeat's end label has run
       while (!calls_.empty() && calls_.back().ends == call_end::calling_line && next->offset == calls_.back().from.offset)
         next = finish_pass();  // back at the repeat's own line (which may end the repeat around it too)
       if (next->offset >= text_.size() && !calls_.empty())
@@ -136,8 +138,7 @@ class executor {
                     "the text ends inside the call from line " + std::to_string(calls_.back().from.number));
       at = *next;
     }
-    if (!loops_.empty())  // additive: a loop whose body runs into the end of the text has no end
-      return fail(on_error, line_of(loops_.back().begin).line, "a loop without its end");
+    if (!loops_.empty()) return fail(on_error, line_of(loops_.back().begin).line, "a loop without its end");
     return true;
   }
 
@@ -156,6 +157,7 @@ class executor {
     position start;                 ///< the first line of each pass
     std::uint64_t passes_left = 1;  ///< this pass included
     call_end ends{};
+    position end{};                 ///< `call_end::end_label`: each pass's last line
     bool frame = true;              ///< the call opened a frame of local parameters
     std::size_t loops_open = 0;     ///< loops open when the call began
   };
@@ -166,6 +168,8 @@ class executor {
     std::string key;
     loop_kind kind{};
     std::uint64_t runs_left = 0;    ///< counted loops
+    double last = 0;                ///< counting loops: the counter's last value
+    std::optional<parameter_key> counter{};  ///< counting loops
     std::size_t call_depth = 0;     ///< calls open when it began
   };
   struct label_entry {
@@ -282,7 +286,8 @@ class executor {
     switch (d) {
       case jump_direction::forward: return "after this line";
       case jump_direction::backward: return "before this line";
-      case jump_direction::either: break;
+      case jump_direction::either:
+      case jump_direction::backward_then_forward: break;
     }
     return "in this file";
   }
@@ -294,6 +299,7 @@ class executor {
       const line_at l = line_of(p);
       statement s = syntax.statement_of(l.line);
       if (!s.label.empty()) labels_->push_back({std::move(s.label), p});
+      if (!s.block_label.empty()) labels_->push_back({std::move(s.block_label), p});
       p = l.next;
     }
   }
@@ -303,6 +309,10 @@ class executor {
   template <class Syntax>
   std::optional<position> find_label(Syntax& syntax, const std::string& name, jump_direction direction, position from) {
     if (!labels_) index_labels(syntax);
+    if (direction == jump_direction::backward_then_forward) {
+      if (auto before = find_label(syntax, name, jump_direction::backward, from)) return before;
+      return find_label(syntax, name, jump_direction::forward, from);
+    }
     if (direction != jump_direction::backward)
       for (const label_entry& e : *labels_)
         if (e.at.offset > from.offset && e.name == name) return e.at;
@@ -313,12 +323,22 @@ class executor {
     return nearest;
   }
 
+  /// The first line at or after `from` that defines label `name`.
+  template <class Syntax>
+  std::optional<position> find_label_at_or_after(Syntax& syntax, const std::string& name, position from) {
+    if (!labels_) index_labels(syntax);
+    for (const label_entry& e : *labels_)
+      if (e.at.offset >= from.offset && e.name == name) return e.at;
+    return std::nullopt;
+  }
+
   template <class Syntax, class OnError>
   std::optional<position> jump(Syntax& syntax, const statement& s, position at, const text_line& line, OnError& on_error) {
     const auto taken = holds(s.condition, line, on_error);
     if (!taken) return std::nullopt;
     if (!*taken) return after(at);
     const auto target = find_label(syntax, s.target, s.direction, at);
+    if (!target && s.target_optional) return after(at);
     if (!target) return failed(on_error, line, "jump to " + s.target + ": no such label " + where_searched(s.direction));
     leave_loops_for(syntax, *target);
     return target;
@@ -335,6 +355,14 @@ class executor {
     const position start =
         first.kind == statement_kind::label || first.kind == statement_kind::subprogram ? after(*target) : *target;
     if (s.ends == call_end::calling_line && start.offset == at.offset) return here.next;  // an empty section
+    position end{};
+    if (s.ends == call_end::end_label) {
+      const auto last = find_label_at_or_after(syntax, s.end_target, *target);
+      if (!last)
+        return failed(on_error, here.line, "repeat of " + s.target + " to " + s.end_target + ": no label " + s.end_target +
+                                               " after " + s.target);
+      end = *last;
+    }
     if (s.call_frame) {
       if (!parameters_.enter_call())
         return failed(on_error, here.line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) + " deep");
@@ -346,7 +374,7 @@ class executor {
     } else if (calls_.size() >= parameter_store::max_call_depth) {
       return failed(on_error, here.line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) + " deep");
     }
-    calls_.push_back({at, here.next, start, *count, s.ends, s.call_frame, loops_.size()});
+    calls_.push_back({at, here.next, start, *count, s.ends, end, s.call_frame, loops_.size()});
     call_lines_.push_back(here.line.number);
     return start;
   }
@@ -448,13 +476,34 @@ class executor {
         if (!c) return std::nullopt;
         runs = *c;
       }
-      loops_.push_back({at, here.next, std::nullopt, s.key, s.loop, runs, calls_.size()});
+      loops_.push_back({at, here.next, std::nullopt, s.key, s.loop, runs, 0, std::nullopt, calls_.size()});
       if (s.loop == loop_kind::counted && runs == 0) return leave_loop(syntax, here.line, on_error);
+      if (s.loop == loop_kind::counting) return count_from(syntax, s, here, on_error);
     }
     if (s.loop != loop_kind::test_first) return here.next;
     const auto go_on = holds(s.condition, here.line, on_error);
     if (!go_on) return std::nullopt;
     return *go_on ? std::optional<position>(here.next) : leave_loop(syntax, here.line, on_error);
+  }
+
+  /// A counting loop begins: its counter takes its first value and its last is evaluated; no
+  /// run when the first is past the last.
+  template <class Syntax, class OnError>
+  std::optional<position> count_from(Syntax& syntax, const statement& s, const line_at& here, OnError& on_error) {
+    open_loop& l = loops_.back();
+    if (!s.counter || !s.count) return failed(on_error, here.line, "a counting loop without its counter or last value");
+    const evaluation first = evaluate(s.counter->value, parameters_);
+    if (!first.ok()) return failed(on_error, here.line, first.error->message, first.error->where.column);
+    const evaluation last = evaluate(*s.count, parameters_);
+    if (!last.ok()) return failed(on_error, here.line, last.error->message, last.error->where.column);
+    const parameter_target t = parameter_of(s.counter->target, parameters_);
+    if (!t.key) return failed(on_error, here.line, t.error->message, t.error->where.column);
+    if (auto why = parameters_.assign(*t.key, first.value))
+      return failed(on_error, here.line, *why, s.counter->target.at(s.counter->target.root).where.column);
+    l.counter = *t.key;
+    l.last = last.value;
+    if (first.value <= last.value) return here.next;
+    return leave_loop(syntax, here.line, on_error);
   }
 
   template <class OnError>
@@ -467,6 +516,13 @@ class executor {
       case loop_kind::test_first: return l.begin;  // the test is at the top
       case loop_kind::counted: again = --l.runs_left > 0; break;
       case loop_kind::endless: break;
+      case loop_kind::counting: {
+        const parameter_read c = parameters_.read(*l.counter);
+        if (!c.value) return failed(on_error, here.line, c.why);
+        if (auto why = parameters_.assign(*l.counter, *c.value + 1)) return failed(on_error, here.line, *why);
+        again = *c.value + 1 <= l.last;
+        break;
+      }
       case loop_kind::test_last: {
         const auto h = holds(s.condition, here.line, on_error);
         if (!h) return std::nullopt;

@@ -9,10 +9,11 @@
 /// |---|---|---|---|---|
 /// | jump | — | `GOTO n`, `IF [c] GOTO n` | `FN 9`–`FN 12 … GOTO LBL` | `GOTOF`, `GOTOB`, `GOTO`, `IF c GOTOF` |
 /// | call | `o100 call [a]…` | `M98 P L`, `G65 P L` | `CALL LBL n` | — (another file) |
-/// | section repeat | — | — | `CALL LBL n REP m` | `REPEAT label P=n` |
+/// | section repeat | — | — | `CALL LBL n REP m` | `REPEAT label P=n`, `REPEAT a b P=n`, `REPEATB` |
 /// | return | `o100 endsub`, `return` | `M99` | `LBL 0` | `RET`, `M17` |
 /// | IF branches | `if`/`elseif`/`else`/`endif` | `IF [c] THEN` (one line: an ordinary line's `condition`) | — | `IF`/`ELSE`/`ENDIF` |
 /// | loops | `while`, `do`…`while`, `repeat` | `WHILE [c] DOm` … `ENDm` | — | `WHILE`, `REPEAT`…`UNTIL`, `LOOP`, `FOR` |
+/// | counting loop | — | — | — | `FOR R1 = a TO b` … `ENDFOR` |
 /// Statements matched by a key (LinuxCNC's o-number, FANUC's `DOm`) pair with the statement of
 /// the same key; those without one nest (Siemens `IF` … `ENDIF`).
 #pragma once
@@ -48,12 +49,14 @@ enum class jump_direction : unsigned char {
   forward,   ///< the nearest after (Siemens `GOTOF`)
   backward,  ///< the nearest before (Siemens `GOTOB`)
   either,    ///< the nearest after, else the nearest before (Siemens `GOTO`, FANUC `GOTO`, calls)
+  backward_then_forward,  ///< the nearest before, else the nearest after (Siemens `REPEAT a b`, `REPEATB`)
 };
 
 /// When a pass of a called part ends.
 enum class call_end : unsigned char {
   return_statement,  ///< at a `return_from_call` (a subprogram)
   calling_line,      ///< on reaching the calling statement again (a section repeat: `CALL LBL 1 REP 2`)
+  end_label,         ///< after the line that defines `end_target`, the first after the start (Siemens `REPEAT a b`)
 };
 
 /// How a loop decides to run again.
@@ -62,6 +65,7 @@ enum class loop_kind : unsigned char {
   test_last,   ///< the end statement's `condition` tested after each run (`do … while`, `REPEAT … UNTIL`)
   counted,     ///< `count` runs, evaluated once at the top (LinuxCNC `repeat [n]`)
   endless,     ///< until a break or a jump out (Siemens `LOOP`)
+  counting,    ///< `counter` from its first value up by 1 while not past `count`, evaluated once at the top (Siemens `FOR`)
 };
 
 /// `target = value`: the target is a parameter node (its number may be an expression: `#[#1+1]`).
@@ -82,13 +86,18 @@ struct statement {
   /// The label this line defines ("1" for `LBL 1`, "O1000", "N100", "o100"), or empty. A call
   /// starts after a line of kind `label` or `subprogram`, at any other line (which runs).
   std::string label{};
+  /// A second label the line defines: its block number ("N40" of Siemens `N40 MARK: …`), or empty.
+  std::string block_label{};
   std::string target{};                          ///< the label a jump or call goes to
+  bool target_optional = false;                  ///< a jump whose label may be missing: the run goes on (Siemens `GOTOC`)
+  std::string end_target{};                      ///< `end_label` call: the label of each pass's last line
   jump_direction direction = jump_direction::either;
   std::string key{};                             ///< pairs IF/loop/subprogram statements; empty: they nest
   /// Jump, IF branches, `test_first` begin, `test_last` end; an ordinary line runs (its
   /// assignments, its words) only when it holds (FANUC `IF [c] THEN #1 = 5`).
   std::optional<expression> condition{};
-  std::optional<expression> count{};             ///< a call's passes, a counted loop's runs (none: 1)
+  std::optional<expression> count{};             ///< a call's passes, a counted loop's runs (none: 1), a counting loop's last value
+  std::optional<assignment> counter{};           ///< a counting loop's counter and its first value
   loop_kind loop = loop_kind::test_first;        ///< on `loop_begin` (and `loop_end`, as its begin's)
   bool until = false;                            ///< a `test_last` end runs again while the condition does *not* hold
   call_end ends = call_end::return_statement;    ///< on `call`

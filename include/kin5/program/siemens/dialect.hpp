@@ -54,6 +54,11 @@ struct dialect {
                           const block_sink& on_block) {
     siemens::read_blocks(text, file_name, diagnostics, on_block);
   }
+  /// The same within `limits` (its `max_executed_lines`: the program runs under the interpreter).
+  static void read_blocks(std::string_view text, const std::string& file_name, read_result& diagnostics,
+                          const block_sink& on_block, const read_limits& limits) {
+    siemens::read_blocks(text, file_name, diagnostics, on_block, limits);
+  }
   static std::string write(const program& p, const write_options& options) { return siemens::write(p, options); }
 };
 

@@ -16,6 +16,7 @@
 /// less, relative, are refused (`comparison_tolerance`).
 /// Functions: `SIN COS TAN ASIN ACOS ATAN2(y, x) SQRT ABS POT` (the square) `TRUNC` (toward 0)
 /// `ROUND` (halves away from 0) `LN EXP MINVAL(a, b) MAXVAL(a, b)`, angles in degrees.
+/// Constants: `TRUE` (1) and `FALSE` (0), the values of a BOOL.
 /// Parameters: `R0`, `R1`, … and names (`_F_CUT`, `DEPTH`; read in upper case); a system
 /// variable (`$AA_IM[X]`) is the machine's state and refused. `<<` (strings), frames, and `EX`
 /// exponents are not read.
@@ -62,6 +63,8 @@ inline constexpr prefix_spelling expression_prefixes[] = {
     {"B_NOT", unary_op::bit_not},
 };
 
+inline constexpr constant_spelling expression_constants[] = {{"TRUE", 1}, {"FALSE", 0}};
+
 inline constexpr std::string_view expression_parameter_prefixes[] = {"R"};
 }  // namespace detail
 
@@ -72,6 +75,7 @@ inline constexpr expression_spelling spelling{
     .operators = detail::expression_operators,
     .functions = detail::expression_functions,
     .prefixes = detail::expression_prefixes,
+    .constants = detail::expression_constants,
     .separator = ',',
     .letter_prefixes = detail::expression_parameter_prefixes,
     .names_are_parameters = true,

@@ -1,19 +1,27 @@
 /// @file program/siemens/parameters.hpp
-/// R parameters and user variables used as constants (the table: ../parameters.hpp). `R1=5000`
-/// and `_F_CUT=5000` assign a number: recorded, and the line passes through (several on one
-/// line too: `N20 _X_HOME=-365. _Z_HOME=610.`). `DEF REAL _F_CUT=1850.5, _Z_SAFE` declares
-/// variables, the first with its number, the second holding 0 (SINUMERIK 808D/828D Programming
-/// Manual, "Local User Data (LUD)": without an assignment "the starting value is zero"); `DEF
-/// INT` takes whole numbers only. A later word whose whole value is one of them, `X=R1`,
-/// `F=-R1`, `CR=R2`, `Z=_Z_SAFE`, `F=DEPTH` (a name a DEF declared), reads as that number, as if
-/// written there (SINUMERIK 840D Fundamentals 10/2004, §2.2 "Value assignments": an address
-/// takes a parameter or variable after `=`). Names read in upper case. Refused, naming the line
-/// and column: an assignment of anything but a number (`R2=R1*2`: arithmetic), a fraction for an
-/// INT, a use with no number assigned above, and a parameter inside an expression (`X=R1+2`, the
-/// reader's `expressions and parameters …` error). Jumps and loops (`GOTOF`, `WHILE`, …) are
-/// refused by the reader, so a value never depends on the path.
+/// R parameters and user variables as the program runs (SINUMERIK 840D sl Programming Manual
+/// Fundamentals, "Arithmetic parameters (R)"; Job Planning, "Flexible NC programming":
+/// "Variables", "Definition of user variables (DEF)", "Arithmetic functions"), with the values of
+/// the executor's parameter store (../interp/parameter_store.hpp, parameter_rules.hpp):
+/// - `R1=R1+0.5`, `_F_CUT=R5*2`, `DEPTH=DEPTH-1` (a name a DEF declared): the expression is
+///   evaluated and assigned, in the order written; several on one line too.
+/// - `DEF REAL a, b=2.5*R1`, `DEF INT n=3`, `DEF BOOL f=TRUE`: declared, each holding its value
+///   or 0 ("Local User Data": without an assignment "the starting value is zero"). An INT takes
+///   whole numbers only (a fraction is refused, not rounded), a BOOL 1 for any value but 0. Other
+///   types and arrays declare nothing kin5 reads: a use of their names is refused.
+/// - `X=R1*2`, `F=R5`, `CR=_R`, `A3=…`: a word whose value is an expression reads as its value
+///   (Fundamentals, "Value assignments": an address takes an expression after `=`).
+/// Refused, naming the line and column: an expression that cannot be read or evaluated (a
+/// parameter without a value, a system variable `$AA_IM[X]`, a division by zero: the evaluator's
+/// messages), and a fraction for an INT. `IC()`, `AC()` and the rotary positioning functions
+/// (`DC()`, `ACP()`, `ACN()`) are left to words.hpp.
+///
+/// A line of assignments only passes through (`assignment`); where a value was an expression the
+/// block's text has the number in its place (`R2=R1*2` becomes `R2=10`), so that the executed
+/// program says the values it ran with and reads back alone, whatever ran before it.
 #pragma once
 
+#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <deque>
@@ -21,27 +29,40 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "../interp/evaluate.hpp"
+#include "../interp/parameter_store.hpp"
 #include "../lexing.hpp"
 #include "../number.hpp"
-#include "../parameters.hpp"
 #include "../text.hpp"
+#include "expression.hpp"
 #include "lexer.hpp"
 #include "vocabulary.hpp"
 #include "words.hpp"
 
 namespace kin5::program::siemens::detail {
 
-/// The R parameters and user variables of one file, read line by line before the words get
-/// their meaning.
-class constants {
+/// `v` as the shortest plain number that reads back as `v` (no exponent: the 840D reads none).
+inline std::string plain_number_text(double v) {
+  char buffer[400];
+  const auto r = std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::fixed);
+  return r.ec == std::errc{} ? std::string(buffer, r.ptr) : std::to_string(v);
+}
+
+/// The R parameters and user variables of one running program (see the file comment).
+class variables {
  public:
-  /// Records the assignments and declarations of `words` (line `line`, text `text`) and puts the
-  /// number of each parameter or variable a word uses in its place; a word refused here is
-  /// reported in `p` and removed. `p.only_assignments` says that the line does nothing else.
+  explicit variables(interp::parameter_store& store) : store_(store) {}
+
+  /// Runs the assignments and declarations of `words` (line `line`, text `text`) and puts the
+  /// value of each expression a word holds in its place; a word refused here is reported in `p`
+  /// and removed. `p.only_assignments` says that the line does nothing else; `p.b.text` gets the
+  /// assigned numbers in place of their expressions.
   void read(std::size_t line, std::string_view text, std::vector<word>& words, line_parse& p) {
     substituted_.clear();
+    edits_.clear();
     if (declare(line, text, words, p)) return;
     std::size_t kept = 0, assignments = 0, others = 0;
     for (word& w : words) {
@@ -51,25 +72,35 @@ class constants {
         ++assignments;
       } else {
         others += w.kind == word_kind::comment || (w.kind == word_kind::address && w.letter == 'N') ? 0 : 1;
-        if (uses_value(w)) keep = substitute(w, line, p);
+        if (holds_expression(w)) keep = substitute(w, line, text, p);
       }
       if (keep) words[kept++] = w;
     }
     words.resize(kept);
     p.only_assignments = assignments > 0 && others == 0;
+    if (p.only_assignments && !edits_.empty()) p.b.text = edited(p.b.text, text);
   }
 
  private:
-  enum class type : unsigned char { real, integer };
-  parameter_table table_{"R"};                           // R by number, variables by name
-  std::map<std::string, type, std::less<>> declared_;   // what DEF REAL / DEF INT declared
-  std::deque<std::string> substituted_;                 // the numbers put into this line's words
+  enum class type : unsigned char { real, integer, boolean };
+  interp::parameter_store& store_;
+  std::map<std::string, type, std::less<>> declared_;  // what DEF REAL / INT / BOOL declared
+  std::deque<std::string> substituted_;                // the numbers put into this line's words
+  std::vector<std::pair<std::string_view, std::string>> edits_;  // an expression's text, its number
 
-  /// A variable's name: `_` then name characters, or a name a DEF declared.
-  bool is_variable(std::string_view name) const {
-    if (name.size() < 2) return false;
-    if (name[0] == '_') return true;
-    return declared_.find(name) != declared_.end();
+  /// The line's text with each edited expression replaced by its number.
+  std::string edited(const std::string& block_text, std::string_view text) const {
+    if (block_text.size() != text.size()) return block_text;  // the same line (its label blanked in `text`)
+    std::string out;
+    std::size_t at = 0;
+    for (const auto& [part, number] : edits_) {
+      const auto from = static_cast<std::size_t>(part.data() - text.data());
+      out.append(std::string_view(block_text).substr(at, from - at));
+      out += number;
+      at = from + part.size();
+    }
+    out.append(std::string_view(block_text).substr(at));
+    return out;
   }
 
   bool is_assignment(const word& w) const {
@@ -78,27 +109,76 @@ class constants {
     return w.kind == word_kind::keyword && w.assigned && w.value == value_kind::run && declared_.count(w.name) > 0;
   }
 
-  /// `X=R1`, `X=-_Z`, `F=DEPTH`: a word whose whole value is one R parameter (`n`) or variable
-  /// (`name`, upper case).
-  bool uses_value(const word& w, long* n = nullptr, std::string* name = nullptr, bool* negated = nullptr) const {
+  /// `X=R1*2`, `F=-_F`, `CR=R2`: a word whose value, after `=`, is an expression kin5 evaluates
+  /// (IC(), AC() and the positioning functions are words.hpp's).
+  static bool holds_expression(const word& w) {
     if (!w.assigned || w.value != value_kind::expression) return false;
-    std::string_view v = w.text;
-    const bool minus = !v.empty() && v[0] == '-';
-    if (!v.empty() && (v[0] == '-' || v[0] == '+')) v.remove_prefix(1);
-    if (v.empty() || !(is_letter(v[0]) || v[0] == '_')) return false;
-    for (char c : v)
-      if (!is_ident_char(c)) return false;
-    if (negated) *negated = minus;
-    const bool r = v.size() >= 2 && v.size() <= 7 && to_upper(v[0]) == 'R' &&
-                   v.substr(1).find_first_not_of("0123456789") == std::string_view::npos;
-    if (r) {
-      if (n) *n = number_of(v.substr(1));
-      if (name) name->clear();
-      return true;
+    const std::string v = lexing::upper(w.text.substr(0, 5));
+    for (std::string_view f : {"IC(", "AC(", "DC(", "ACP(", "ACN(", "CIC("})
+      if (v.rfind(f, 0) == 0) return false;
+    for (std::string_view f : {"NAN", "INF", "-NAN", "-INF", "+NAN", "+INF"})
+      if (v.rfind(f, 0) == 0 && (w.text.size() == f.size() || lexing::upper(w.text) == "INFINITY")) return false;
+    return true;
+  }
+
+  static void error(line_parse& p, std::size_t line, std::size_t column, std::string message) {
+    keep_or_count(p.errors, p.errors_not_kept, {{p.b.where.file, line, column}, std::move(message)});
+  }
+
+  static std::size_t column_of(std::string_view part, std::string_view text, std::size_t fallback) {
+    return part.empty() ? fallback : static_cast<std::size_t>(part.data() - text.data());
+  }
+
+  /// The value of the expression `v` (at 0-based `column` of `line`), or reported and none.
+  std::optional<double> value_of(std::string_view v, std::size_t line, std::size_t column, line_parse& p) const {
+    const parsed_expression e = parse_expression(spelling, v, line, column + 1, true);
+    if (!e.ok()) {
+      error(p, line, e.error->where.column, e.error->message);
+      return std::nullopt;
     }
-    const std::string upper = lexing::upper(v);
-    if (!is_variable(upper)) return false;
-    if (name) *name = upper;
+    const interp::evaluation r = interp::evaluate(e.tree, store_);
+    if (!r.ok()) {
+      error(p, line, r.error->where.column, r.error->message);
+      return std::nullopt;
+    }
+    return r.value;
+  }
+
+  /// Why `value` may not be assigned to variable `name` (empty: it may), and the value it takes.
+  std::string unfit(const std::string& name, double& value, std::string_view written) const {
+    const auto it = declared_.find(name);
+    if (it == declared_.end()) return "";
+    if (it->second == type::boolean) value = value != 0 ? 1 : 0;
+    if (it->second != type::integer || std::floor(value) == value) return "";
+    return "variable " + name + " is an INT: " + std::string(written) + " is not a whole number";
+  }
+
+  /// `Rn=…`, `_NAME=…`, `NAME=…`: the value is assigned (the word stays, for the pass-through).
+  bool assign(const word& w, std::size_t line, std::string_view text, line_parse& p) {
+    const bool r = w.kind == word_kind::address;
+    const interp::parameter_key key = r ? interp::parameter_key{"R", number_of(w.extension)}
+                                        : interp::parameter_key{"", 0, w.name};
+    const std::string_view v = w.text;
+    const std::size_t column = column_of(v, text, w.column);
+    if (v.empty()) {
+      error(p, line, w.column + 1, "word '" + key.shown() + "=' has no value");
+      return false;
+    }
+    auto value = value_of(v, line, column, p);
+    if (!value) return false;
+    const parsed_number literal = read_number(v);
+    const bool plain = literal.error == number_error::none && literal.length == v.size();
+    std::string written = plain ? std::string(v) : plain_number_text(*value);
+    if (std::string why = r ? "" : unfit(w.name, *value, written); !why.empty()) {
+      error(p, line, column + 1, why);
+      return false;
+    }
+    if (auto why = store_.assign(key, *value)) {
+      error(p, line, w.column + 1, *why);
+      return false;
+    }
+    if (!plain) edits_.emplace_back(v, plain_number_text(*value));
+    p.b.assignment = true;
     return true;
   }
 
@@ -108,71 +188,20 @@ class constants {
     return n;
   }
 
-  static void error(line_parse& p, std::size_t line, std::size_t column, std::string message) {
-    keep_or_count(p.errors, p.errors_not_kept, {{p.b.where.file, line, column + 1}, std::move(message)});
-  }
-
-  static std::size_t column_of(std::string_view part, std::string_view text, std::size_t fallback) {
-    return part.empty() ? fallback : static_cast<std::size_t>(part.data() - text.data());
-  }
-
-  /// Why `number` (`written`) may not be assigned to variable `name` (empty: it may).
-  std::string unfit(const std::string& name, double number, std::string_view written) const {
-    const auto it = declared_.find(name);
-    if (it == declared_.end() || it->second != type::integer || std::floor(number) == number) return "";
-    return "variable " + name + " is an INT: " + std::string(written) + " is not a whole number";
-  }
-
-  /// `Rn=…`, `_NAME=…`: a number is recorded (the word stays, for the pass-through); anything
-  /// else is refused.
-  bool assign(const word& w, std::size_t line, std::string_view text, line_parse& p) {
-    const bool r = w.kind == word_kind::address;
-    const long n = r ? number_of(w.extension) : 0;
-    const std::string shown = r ? "parameter " + table_.name(n) : "variable " + w.name;
-    const std::string_view v = w.text;
-    const parsed_number number = read_number(v);
-    const std::size_t column = column_of(v, text, w.column);
-    std::string why;
-    if (number.error == number_error::none && number.length > 0 && number.length == v.size()) {
-      if (!r) why = unfit(w.name, number.value, v);
-      if (why.empty()) {
-        if (r) table_.assign(n, parameter_literal{number.value, std::string(v)}, line);
-        else table_.assign(w.name, parameter_literal{number.value, std::string(v)}, line);
-        p.b.assignment = true;
-        return true;
-      }
-    }
-    if (r) table_.refuse(n, line);
-    else table_.refuse(w.name, line);
-    error(p, line, column,
-          why.empty() ? shown + " is assigned an expression: only a number is read (arithmetic is not supported)" : why);
-    return false;
-  }
-
-  /// A word that uses a parameter or variable takes its number; false (reported, unless its
-  /// assignment was refused) when it has none.
-  bool substitute(word& w, std::size_t line, line_parse& p) {
-    long n = 0;
-    std::string name;
-    bool negated = false;
-    uses_value(w, &n, &name, &negated);
-    std::string why;
-    const parameter_literal* v = name.empty() ? table_.value(n, why) : table_.value(name, why, "variable");
-    if (!v) {
-      if (!why.empty()) error(p, line, w.column, why);
-      return false;
-    }
-    const parameter_literal number = negated ? v->negated() : *v;
-    substituted_.push_back(number.written);
-    w.value = value_kind::number;
-    w.number = number.value;
+  /// A word whose value is an expression takes its number; false (reported) when it has none.
+  bool substitute(word& w, std::size_t line, std::string_view text, line_parse& p) {
+    const auto value = value_of(w.text, line, column_of(w.text, text, w.column), p);
+    if (!value) return false;
+    substituted_.push_back(plain_number_text(*value));
+    w.value = std::isfinite(*value) ? value_kind::number : value_kind::out_of_range;
+    w.number = *value;
     w.text = substituted_.back();
     return true;
   }
 
-  /// `DEF REAL a, b=2.5`, `DEF INT n=3` (after a block number): the names declared, each holding
-  /// its number or 0; true when the line is a DEF (it passes through as it is). Another type, or
-  /// an attribute before the type, declares nothing kin5 reads: a use of its names is refused.
+  /// `DEF REAL a, b=2.5`, `DEF INT n=3`, `DEF BOOL f` (after a block number): the names
+  /// declared, each holding its value or 0; true when the line is a DEF (it passes through as
+  /// it is). Another type, or an attribute before the type, declares nothing kin5 reads.
   bool declare(std::size_t line, std::string_view text, const std::vector<word>& words, line_parse& p) {
     std::size_t first = 0;
     if (!words.empty() && words[0].kind == word_kind::address && words[0].letter == 'N') first = 1;
@@ -185,34 +214,31 @@ class constants {
       return lexing::upper(text.substr(start, k - start));
     };
     const std::string kind = name_at(i);
-    if (kind != "REAL" && kind != "INT") return true;
-    const type t = kind == "INT" ? type::integer : type::real;
+    if (kind != "REAL" && kind != "INT" && kind != "BOOL") return true;
+    const type t = kind == "INT" ? type::integer : kind == "BOOL" ? type::boolean : type::real;
     p.b.assignment = true;
     for (;;) {
       const std::string name = name_at(i);
       if (name.size() < 2 || !(is_letter(name[0]) || name[0] == '_')) return true;
       i = lexing::skip_blanks(text, i);
-      if (i < text.size() && text[i] == '[') return true;  // an array: not a constant
+      if (i < text.size() && text[i] == '[') return true;  // an array: not read
       declared_[name] = t;
+      double value = 0;
       if (i < text.size() && text[i] == '=') {
         const std::size_t v = lexing::skip_blanks(text, i + 1);
-        const parsed_number number = read_number(text.substr(v));
-        const std::size_t after = lexing::skip_blanks(text, v + number.length);
-        const bool ends = after == text.size() || text[after] == ',' || text[after] == ';';
-        std::string why = number.error == number_error::none && number.length > 0 && ends
-                              ? unfit(name, number.value, text.substr(v, number.length))
-                              : "variable " + name + " is assigned an expression: only a number is read "
-                                                     "(arithmetic is not supported)";
-        if (!why.empty()) {
-          table_.refuse(name, line);
-          error(p, line, v, std::move(why));
-          return true;
-        }
-        table_.assign(name, parameter_literal{number.value, std::string(text.substr(v, number.length))}, line);
+        const parsed_expression e = parse_expression(spelling, text.substr(v), line, v + 1, false);
+        if (!e.ok()) return error(p, line, e.error->where.column, e.error->message), true;
+        const std::size_t after = lexing::skip_blanks(text, v + e.end);
+        if (after < text.size() && text[after] != ',' && text[after] != ';')
+          return error(p, line, after + 1, "DEF: unexpected '" + std::string(text.substr(after, 1)) + "' after the value of " + name), true;
+        const interp::evaluation r = interp::evaluate(e.tree, store_);
+        if (!r.ok()) return error(p, line, r.error->where.column, r.error->message), true;
+        value = r.value;
+        if (std::string why = unfit(name, value, text.substr(v, e.end)); !why.empty())
+          return error(p, line, v + 1, std::move(why)), true;
         i = after;
-      } else {
-        table_.assign(name, parameter_literal{0, "0"}, line);
       }
+      if (auto why = store_.assign({"", 0, name}, value)) return error(p, line, i + 1, *why), true;
       if (i >= text.size() || text[i] != ',') return true;
       ++i;
     }

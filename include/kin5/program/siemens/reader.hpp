@@ -6,10 +6,12 @@
 /// tool-tip tracking, `A3= B3= C3=` give a tool-axis vector, `I J K` (incremental from the last
 /// programmed point) or `CR=` give arcs, `SUPA` / `G53` / `G153` mean machine coordinates.
 /// `G70`/`G700` inch blocks are read in millimetres (`units`). `G41`/`G42`/`G40` are cutter
-/// radius compensation with the first edge `D1` only (`compensation`). An R parameter assigned a number
-/// stands for it in `X=R1` (parameters.hpp). `G91`, `X=IC(…)` and `X=AC(…)` are resolved to the
-/// positions they reach (`incremental_words`). Expressions and
-/// active frame changes (`TRANS`, `ROT`, `CYCLE800`,
+/// radius compensation with the first edge `D1` only (`compensation`). The program runs under the
+/// interpreter (../interp/executor.hpp) with the Siemens syntax (statements.hpp): labels, jumps,
+/// IF, loops and section repeats are executed, and each line executed is read here, with its R
+/// parameters and variables evaluated (parameters.hpp), so the blocks are the executed program.
+/// `G91`, `X=IC(…)` and `X=AC(…)` are resolved to the positions they reach
+/// (`incremental_words`). Active frame changes (`TRANS`, `ROT`, `CYCLE800`,
 /// …) are errors. A line without geometry that is not understood is kept verbatim (`passthrough`).
 /// Most lines of a long program (`N… G1 X… Y… Z… A… B… F…`) are read in one scan
 /// (`read_plain_motion`), which a law holds equal to the word-by-word reading.
@@ -25,6 +27,8 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../interp/executor.hpp"
+#include "../read_limits.hpp"
 #include "../lexing.hpp"
 #include "../modal.hpp"
 #include "../number.hpp"
@@ -33,7 +37,9 @@
 #include "../units.hpp"
 #include "lexer.hpp"
 #include "modal.hpp"
+#include "parameter_rules.hpp"
 #include "parameters.hpp"
+#include "statements.hpp"
 #include "vocabulary.hpp"
 #include "words.hpp"
 
@@ -416,7 +422,7 @@ inline bool read_plain_motion(std::string_view line, block& b, modal_state& stat
 /// word-by-word path (lexer, then `word_reader` and `finish`) for every other line.
 class line_reader {
  public:
-  explicit line_reader(const std::string& file_path) : file_(file_path) {}
+  line_reader(const std::string& file_path, interp::parameter_store& store) : file_(file_path), parameters_(store) {}
 
   /// Reads `line` into a block for `on_block` (nothing for an empty line).
   void read(const text_line& line, read_result& diagnostics, const block_sink& on_block) {
@@ -443,8 +449,14 @@ class line_reader {
   block read_words(const text_line& line, block b, read_result& diagnostics) {
     line_parse p;
     p.b = std::move(b);
-    lexer_.run(line.text, words_);
-    parameters_.read(line.number, line.text, words_, p);
+    std::string_view text = line.text;
+    if (const auto label = line_label(text); label && !is_blank_or_comment(text.substr(label->end))) {
+      unlabelled_.assign(text);  // `MARK: G1 X10`: the words after the label (statements.hpp took it)
+      unlabelled_.replace(label->begin, label->end - label->begin, label->end - label->begin, ' ');
+      text = unlabelled_;
+    }
+    lexer_.run(text, words_);
+    parameters_.read(line.number, text, words_, p);
     word_reader(line.number, file_, p).read(words_);
     finish(p, state_, diagnostics);
     return std::move(p.b);
@@ -457,22 +469,73 @@ class line_reader {
   modal_state state_;
   line_lexer lexer_;
   std::vector<word> words_;  // reused from line to line
-  constants parameters_;
+  std::string unlabelled_;   // a labelled line with its label blanked
+  variables parameters_;
+
+  static bool is_blank_or_comment(std::string_view rest) {
+    const std::size_t k = lexing::skip_blanks(rest, 0);
+    return k == rest.size() || rest[k] == ';';
+  }
 };
 
 }  // namespace kin5::program::siemens::detail
 
 namespace kin5::program::siemens {
 
-/// Reads a Siemens 840D program block by block: `on_block` receives each block in file order as
-/// soon as it is read; errors and warnings go to `diagnostics` (its `parsed` is not touched).
-/// Nothing but the current line is held, so a program of any length reads in constant memory.
+/// Reads a Siemens 840D program block by block, as the control runs it: `on_block` receives
+/// each block executed, in the order executed (a loop's lines once per run; statements.hpp lists
+/// the control statements, which give no block); errors and warnings go to `diagnostics` (its
+/// `parsed` is not touched). An error in a control statement, or past `limits.max_executed_lines`,
+/// stops the run there. The lines after the program's end (M30, M2, M17) never run: they are read
+/// in file order as written, up to the first label or control statement, and the rest (sections
+/// only a REPEAT runs) kept as text. Memory grows with the labels and the open loops, not with
+/// the program's length.
+inline void read_blocks(std::string_view text, const std::string& file_path, read_result& diagnostics,
+                        const block_sink& on_block, const read_limits& limits) {
+  read_transmitted(text, file_path, diagnostics, on_block, [&](std::string_view body, const block_sink& sink) {
+    interp::executor run{body, parameter_rules(), {limits.max_executed_lines}};
+    detail::line_reader reader(file_path, run.parameters());
+    statements syntax;
+    const text_line* last = nullptr;
+    text_line end_line;
+    const bool ended = run.execute(
+        syntax,
+        [&](const text_line& line, const interp::statement& s) {
+          reader.read(line, diagnostics, sink);
+          if (s.ends_program) end_line = line, last = &end_line;
+        },
+        [&](const interp::flow_error& e) {
+          diagnostics.add_error({{file_name(file_path), e.line, e.column}, e.message});
+        });
+    if (!ended || !last) return;
+    // After the end: the lines never run (see above).
+    const std::size_t from = static_cast<std::size_t>(last->text.data() - body.data()) + last->text.size();
+    std::size_t next = from;
+    if (next < body.size() && body[next] == '\r') ++next;
+    if (next < body.size() && body[next] == '\n') ++next;
+    bool section = false;
+    for_each_line(body.substr(next), [&](text_line line) {
+      line.number += last->number;
+      if (!section) {
+        const interp::statement s = syntax.statement_of(line);
+        section = s.kind != interp::statement_kind::ordinary || s.error || detail::line_label(line.text).has_value();
+      }
+      if (!section) return reader.read(line, diagnostics, sink);
+      if (line.text.empty()) return;
+      block b;
+      const std::size_t first = lexing::skip_blanks(line.text, 0);
+      b.where = {file_name(file_path), line.number, (first < line.text.size() ? first : 0) + 1};
+      b.text = std::string(line.text);
+      b.passthrough = true;
+      sink(std::move(b));
+    });
+  });
+}
+
+/// The same with the default limits (`block_reader`).
 inline void read_blocks(std::string_view text, const std::string& file_path, read_result& diagnostics,
                         const block_sink& on_block) {
-  detail::line_reader reader(file_path);
-  read_transmitted(text, file_path, diagnostics, on_block, [&](std::string_view body, const block_sink& sink) {
-    for_each_line(body, [&](const text_line& line) { reader.read(line, diagnostics, sink); });
-  });
+  read_blocks(text, file_path, diagnostics, on_block, read_limits{});
 }
 
 }  // namespace kin5::program::siemens

@@ -484,7 +484,7 @@ class word_reader {
   static std::string unread_keyword(const std::string& name) {
     for (std::string_view flow : {"GOTOF", "GOTOB", "GOTO", "GOTOC", "IF", "ELSE", "ENDIF", "WHILE", "ENDWHILE", "FOR",
                                   "ENDFOR", "REPEAT", "REPEATB", "UNTIL", "LOOP", "ENDLOOP", "CASE", "RET"})
-      if (name == flow) return name + ": control flow is not supported (the path would depend on it)";
+      if (name == flow) return name + ": a control statement takes a block of its own (after its number and label)";
     for (std::string_view call : {"CALL", "PCALL", "EXTCALL", "MCALL"})
       if (name == call) return name + ": a subprogram call is not supported (the motion it makes would be lost)";
     return "unknown word '" + name + "'";

@@ -388,8 +388,8 @@ class writer {
   void work_offset_word(std::string& line, const block& b, const std::string& file, const work_offset& w) {
     const bool settable = w.family == work_offset_family::g54 && w.number >= 1 && w.number <= 4;
     const bool more = w.family == work_offset_family::siemens && (w.number == 0 || (w.number >= 505 && w.number <= 599));
-    if (!settable && !more) fail(b, file, "work offset " + spelling(w) + " has no Siemens form (--work-offset-map names one)");
-    detail::append_word(line, spelling(w));
+    if (!settable && !more) fail(b, file, "work offset " + kin5::program::spelling(w) + " has no Siemens form (--work-offset-map names one)");
+    detail::append_word(line, kin5::program::spelling(w));
   }
 
   /// G17–G19 for an arc in another plane, and G0–G3 where the written text needs it.

@@ -13,8 +13,18 @@
 using namespace kin5::program;
 
 TEST_CASE("siemens: every line of bad input is still a block", "[siemens][errors]") {
+  // Control statements (statements.hpp) give no block, and an error in one stops the run: their
+  // rows are left out.
+  const auto has_control = [](const std::string& text) {
+    bool control = false;
+    for_each_line(text, [&](const text_line& l) {
+      const auto s = siemens::statements{}.statement_of(l);
+      control = control || s.kind != interp::statement_kind::ordinary || s.error;
+    });
+    return control;
+  };
   for (const kin5::test::bad_input& c : kin5::test::bad_inputs_of<siemens::dialect>()) {
-    if (c.errors.empty()) continue;  // the rows that read without error
+    if (c.errors.empty() || has_control(c.text)) continue;  // the rows that read without error
     INFO("input: " << c.text);
     std::size_t lines = c.text.ends_with('\n') ? 0 : 1;
     for (char ch : c.text) lines += ch == '\n';

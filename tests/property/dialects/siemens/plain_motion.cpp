@@ -84,7 +84,8 @@ TEST_CASE("siemens: plain motion lines read in one scan as the full reader reads
     block full;
     full.where = {"p.mpf", 7, 1};
     full.text = text;
-    sd::line_reader reader("p.mpf");
+    kin5::program::interp::parameter_store store{kin5::program::siemens::parameter_rules()};
+    sd::line_reader reader("p.mpf", store);
     reader.state() = before;
     read_result diagnostics;
     full = reader.read_words(text_line{text, 7}, std::move(full), diagnostics);
