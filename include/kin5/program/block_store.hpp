@@ -202,7 +202,7 @@ class block_store {
     constexpr std::size_t leb = 10;
     std::size_t size = sizeof flags + 2 * leb + sizeof(long long) + sizeof(feed_unit) + 1 + sizeof(long long) +
                        sizeof(double) + sizeof(motion_kind) + 6 * sizeof(double) + sizeof(vec3) + sizeof(arc_plane) +
-                       sizeof(vec3) + sizeof(double) + sizeof(double) + leb + sizeof(state_words);
+                       sizeof(vec3) + sizeof(double) + sizeof(double) + leb + sizeof(state_words) + sizeof(machine_position);
     if (flags & has_text) size += leb + b.text.size();
     for (const auto* s : {&b.program_begin, &b.program_end, &b.comment, &b.tool_name})
       if (*s) size += leb + (*s)->size();
@@ -241,6 +241,7 @@ class block_store {
     if (flags & arc_centre) put(*b.arc->centre_mm);
     if (flags & arc_radius) put(*b.arc->radius_mm);
     if (flags & has_feed) put(*b.feed);
+    if (flags & machine_coordinates) put(b.machine_reference);  // what the words name
     if (flags & has_kept) {
       put_size(b.kept_words.size());
       for (const auto& w : b.kept_words) put_string(w);
@@ -312,6 +313,8 @@ class block_store {
     p = get_optional(p, flags, has_feed, b.feed);
     b.feed_rapid = (flags & feed_rapid) != 0;
     b.machine_coordinates = (flags & machine_coordinates) != 0;
+    b.machine_reference = machine_position::machine_zero;
+    if (flags & machine_coordinates) p = get(p, b.machine_reference);
     if (flags & has_kept) {
       p = get_size(p, v);
       b.kept_words.resize(static_cast<std::size_t>(v));

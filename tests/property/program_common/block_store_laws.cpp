@@ -69,6 +69,13 @@ block any_block(const std::string& file) {
   b.feed = maybe(any_double());
   b.feed_rapid = *rc::gen::arbitrary<bool>();
   b.machine_coordinates = *rc::gen::arbitrary<bool>();
+  if (b.machine_coordinates)
+    b.machine_reference = *rc::gen::element(machine_position::machine_zero, machine_position::reference_point,
+                                            machine_position::second_reference,
+                                            machine_position::stored_position,
+                                            machine_position::second_stored_position,
+                                            machine_position::tool_axis_limit,
+                                            machine_position::builder_position);
   b.kept_words = *rc::gen::container<std::vector<std::string>>(*rc::gen::inRange(0, 4), any_string());
   b.passthrough = *rc::gen::arbitrary<bool>();
   b.framing = *rc::gen::arbitrary<bool>();

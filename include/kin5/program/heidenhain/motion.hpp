@@ -98,6 +98,7 @@ class word_checks {
     else if (m == 129) t.tcp = false;
     else {
       if (m == 91 || m == 92) t.machine_coordinates = true;
+      if (m == 92) t.machine_reference = machine_position::builder_position;
       t.m_codes.push_back(static_cast<int>(m));
     }
   }

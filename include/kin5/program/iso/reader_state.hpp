@@ -70,6 +70,9 @@ struct reader_state {
 struct no_own_words {
   /// Whether `#<name>` names a parameter (LinuxCNC); in ISO it is an expression, refused.
   static constexpr bool named_parameters = false;
+  /// Whether G28 / G30 go to positions the control keeps in parameters (LinuxCNC #5161–#5166,
+  /// #5181–#5186) rather than to the machine's reference points (Fanuc, Haas).
+  static constexpr bool stored_homes = false;
   std::optional<lex_problem> line(std::string_view, std::size_t, std::size_t) { return std::nullopt; }
   static std::string unassignable(const std::string&) { return ""; }
   static std::string unassignable(long n) {

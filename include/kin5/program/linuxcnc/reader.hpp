@@ -88,6 +88,9 @@ class own_words {
 
   /// Named parameters `#<feed>` are read (User Manual, "G-code Overview", "Named Parameters").
   static constexpr bool named_parameters = true;
+  /// G28 / G30 go to the positions in parameters #5161–#5166 / #5181–#5186 (User Manual, "G28,
+  /// G28.1", "G30, G30.1"), which the control keeps, not the program.
+  static constexpr bool stored_homes = true;
 
   /// Why the program may not set named parameter `name` (`#<_x>`): the predefined ones, and
   /// `#<_ini[…]…>` and `#<_hal[…]>`, are read-only (User Manual, "Predefined Named Parameters",

@@ -87,6 +87,7 @@ void add_m_codes(std::string& text, block& b) {
     } else {
       b.m_codes.push_back(m);
       if (m == 91 || m == 92) b.machine_coordinates = true;
+      if (m == 92) b.machine_reference = machine_position::builder_position;
     }
     text += gap() + draw_case("M") + std::to_string(m);
   }

@@ -50,7 +50,8 @@ TEST_CASE("iso: a Fanuc post style program with G43.4, homing and arcs") {
   CHECK((b[2].state.radius_compensation == cutter_side::off && b[2].state.working_plane == arc_plane::xy &&
          b[2].state.distance == distance_mode::absolute));
   CHECK((b[2].tcp == false && b[2].metric == true));
-  CHECK((b[3].machine_coordinates && b[3].kept_words == strings{"G28"} && b[3].axes.z_mm == 0.0));
+  CHECK((b[3].machine_coordinates && b[3].machine_reference == machine_position::reference_point &&
+         b[3].kept_words.empty() && b[3].axes.z_mm == 0.0));
   CHECK(b[3].state.distance == distance_mode::incremental);
   CHECK(b[3].m_codes == std::vector<int>{5});
   CHECK((b[4].machine_coordinates && b[4].axes.b_deg == 0.0));

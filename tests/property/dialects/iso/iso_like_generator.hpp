@@ -285,8 +285,8 @@ inline item draw_item(state& st, const flavour& f) {
         it.words.push_back(draw_case("G91"));
         st.incremental = true;
       }
-      b.kept_words.push_back(draw_case(g));
-      it.words.push_back(b.kept_words.back());
+      if (kind != 0) b.machine_reference = kind == 2 ? machine_position::second_reference : machine_position::reference_point;
+      it.words.push_back(draw_case(g));  // the word is `machine_reference`, not a kept word
       const double z = draw_decimal(-500, 500, 3);
       b.axes.z_mm = z;
       it.words.push_back(spell_word('Z', z, 3, true));
