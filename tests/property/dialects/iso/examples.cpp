@@ -166,9 +166,10 @@ TEST_CASE("iso: a line not understood is refused and changes nothing, spaced kep
   CHECK(b[2].arc->plane == arc_plane::xy);
   CHECK(b[2].arc->centre_mm == kin5::vec3{5, 0, 0});
   CHECK(b[4].program_begin == "004200404");
-  const read_result ok = iso::read("G0 X0 Y0 Z0\nG 28 Z0\nO004200404\n", "p.nc");
+  const read_result ok = iso::read("G0 X0 Y0 Z0\nG 80 G 28 Z0\nO004200404\n", "p.nc");
   REQUIRE(ok.ok());
-  CHECK(iso::write(ok.parsed) == "G0 X0. Y0. Z0.\nG 28 Z0.\nO004200404\n");
+  // G 28 is `machine_reference`, spelled by the writer; G 80 is kept as written.
+  CHECK(iso::write(ok.parsed) == "G0 X0. Y0. Z0.\nG 80 G28 Z0.\nO004200404\n");
 }
 
 TEST_CASE("iso: a parameter in a whole-number word reads as the control rounds it") {
