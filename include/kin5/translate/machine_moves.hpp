@@ -69,6 +69,7 @@ inline std::optional<std::string> read_machine_move(const program::block& b, con
                     "the position from the machine datum";
     case machine_position::machine_zero:
     case machine_position::reference_point:
+    case machine_position::tool_axis_limit:  // no axis words: the source walk reads it
       break;
   }
   if (b.axes.tool_axis) return what + " with a tool-axis vector is not translated";

@@ -218,10 +218,19 @@ class nc_target {
   /// target's home plus the source's distance from its own, within the target's travel.
   template <class Emit>
   void write_machine_move(const program::block& b, const source_step& s, translation& out, Emit&& emit) {
+    if (!s.rapid && (feed_ == feed_policy::inverse_time || output_inverse_time_)) {
+      out.errors.push_back(at(b, std::string(program::machine_position_name(b.machine_reference)) +
+                                     " at a feed per minute is not written in inverse time (G93): write it at rapid"));
+      return;
+    }
     program::block o = machine_block(b, s);
     if (s.to_limit) {  // along the tool axis: Z to the top of its travel where the tool stands along Z
-      if (tool_along_z()) o.axes.z_mm = to_.linear(2).travel.upper_mm;
-      else o.machine_reference = program::machine_position::tool_axis_limit;  // only M140 MB MAX says it
+      if (tool_along_z()) {
+        o.axes.z_mm = to_.linear(2).travel.upper_mm;
+      } else {  // only M140 MB MAX says it: a block of M functions
+        o.machine_reference = program::machine_position::tool_axis_limit;
+        o.motion.reset();
+      }
       restate_motion_ = true;
       machine_.forget();
       return emit(std::move(o));

@@ -257,9 +257,16 @@ item draw_item(modal& m) {
       }
       break;
     }
-    case 9: {  // M functions alone
-      t = draw_case("M") + std::to_string(*rc::gen::element(3, 5, 9, 30, 91, 128, 129));
+    case 9: {  // M functions alone; M140 MB MAX, the retract along the tool axis
       b.m_codes.clear();
+      if (*rc::gen::inRange(0, 6) == 0) {
+        t = draw_case("M") + "140" + gap() + draw_case("MB") + gap() + draw_case("MAX");
+        b.machine_coordinates = true;
+        b.machine_reference = machine_position::tool_axis_limit;
+        if (*rc::gen::arbitrary<bool>()) t += gap() + draw_case("M") + "9", b.m_codes.push_back(9);
+        break;
+      }
+      t = draw_case("M") + std::to_string(*rc::gen::element(3, 5, 9, 30, 91, 128, 129));
       const int first = std::stoi(t.substr(1));
       if (first == 128 || first == 129) b.tcp = first == 128;
       else b.m_codes.push_back(first), b.machine_coordinates = first == 91;
