@@ -516,6 +516,10 @@ case "$name" in
     run 2 translate --from-file bc.toml --from-dialect iso --to-file ac.toml -o early.h early.nc
     grep -q '^early\.nc:5:1: error: a move in machine coordinates (G53, SUPA, M91) that turns the rotary axes is translated only as a positioning of the retracted tool' err ||
       { report "G53 rotary move before a retract not refused"; show err; }
+    # `G91 G28 X0 Y0 B0 C0` after the retract: X and Y home while B and C turn, Z stays.
+    printf '%s\n' '%' 'O1' 'G90 G21 G94' 'G91 G28 Z0.' 'G91 G28 X0. Y0. B0. C0.' 'G90' 'M30' '%' >park.nc
+    run 0 translate --from-file bc.toml --from-dialect iso --to-file ac.toml --to-dialect iso -o park.out park.nc
+    grep -q '^G53 G0 X100\. Y-50\. A0\.' park.out || { report "G28 of X, Y and B not one park and positioning"; show park.out; }
     # The target's travel bounds a park: 500 mm from the home of X is past the A/C trunnion's.
     printf '%s\n' '%' 'O1' 'G90 G21 G94' 'G53 G0 X-500.' 'M30' '%' >far.nc
     run 2 translate --from-file bc.toml --from-dialect iso --to-file ac.toml -o far.h far.nc

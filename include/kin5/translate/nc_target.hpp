@@ -214,6 +214,34 @@ class nc_target {
     return o;
   }
 
+  /// The linear words of `o` for machine step `s` (block `b`): each axis at the target's home
+  /// plus the source's distance from its own, within the target's travel; false, with an error,
+  /// when a home is not known or the place is past the travel.
+  bool linear_from_homes(const program::block& b, const source_step& s, program::block& o, translation& out) const {
+    std::optional<double>* words[3] = {&o.axes.x_mm, &o.axes.y_mm, &o.axes.z_mm};
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (!s.from_home_mm[i]) continue;
+      const linear_axis& axis = to_.linear(i);
+      const char letter = to_char(axis.letter);
+      if (!axis.home_mm) {
+        out.errors.push_back(at(b, std::string(program::machine_position_name(b.machine_reference)) + " of " + letter +
+                                       " needs the target machine's home of " + letter + ": give home_mm in [linear." +
+                                       letter + "] of its machine file (--to-file; docs/machine-files.md)"));
+        return false;
+      }
+      const double value = *axis.home_mm + *s.from_home_mm[i];
+      if (!axis.travel.contains(value, inverse_options{}.linear_slack_mm)) {
+        out.errors.push_back(at(b, std::string(to_.geometry.id) + " cannot reach this move in machine coordinates: " +
+                                       letter + "=" + fixed(value, 3) + " (" + fixed(*s.from_home_mm[i], 3) +
+                                       " mm from its home) is outside its travel [" + fixed(axis.travel.lower_mm, 3) +
+                                       ", " + fixed(axis.travel.upper_mm, 3) + "] mm"));
+        return false;
+      }
+      *words[i] = value;
+    }
+    return true;
+  }
+
   /// A move of the linear axes in machine coordinates (machine_moves.hpp): each axis at the
   /// target's home plus the source's distance from its own, within the target's travel.
   template <class Emit>
@@ -235,27 +263,7 @@ class nc_target {
       machine_.forget();
       return emit(std::move(o));
     }
-    std::optional<double>* words[3] = {&o.axes.x_mm, &o.axes.y_mm, &o.axes.z_mm};
-    for (std::size_t i = 0; i < 3; ++i) {
-      if (!s.from_home_mm[i]) continue;
-      const linear_axis& axis = to_.linear(i);
-      const char letter = to_char(axis.letter);
-      if (!axis.home_mm) {
-        out.errors.push_back(at(b, std::string(program::machine_position_name(b.machine_reference)) + " of " + letter +
-                                       " needs the target machine's home of " + letter + ": give home_mm in [linear." +
-                                       letter + "] of its machine file (--to-file; docs/machine-files.md)"));
-        return;
-      }
-      const double value = *axis.home_mm + *s.from_home_mm[i];
-      if (!axis.travel.contains(value, inverse_options{}.linear_slack_mm)) {
-        out.errors.push_back(at(b, std::string(to_.geometry.id) + " cannot reach this move in machine coordinates: " +
-                                       letter + "=" + fixed(value, 3) + " (" + fixed(*s.from_home_mm[i], 3) +
-                                       " mm from its home) is outside its travel [" + fixed(axis.travel.lower_mm, 3) +
-                                       ", " + fixed(axis.travel.upper_mm, 3) + "] mm"));
-        return;
-      }
-      *words[i] = value;
-    }
+    if (!linear_from_homes(b, s, o, out)) return;
     if (!s.rapid) restate_feed_ = true;
     restate_motion_ = true;
     machine_.forget();
@@ -283,6 +291,7 @@ class nc_target {
     if (!report_motion(b, s, j, out, on_report)) return;
     program::block o = machine_block(b, s);
     o.machine_coordinates = b.machine_coordinates;  // `G0 B30 C45` stays a move of the part's frame
+    if (!linear_from_homes(b, s, o, out)) return;   // `G91 G28 X0 Y0 B0`: X and Y home as it turns
     for (std::size_t i = 0; i < to_.rotary_count; ++i)
       rotary_word(o.axes, to_.rotary(i).letter) = to_degrees((*path_.angles[j])[i]).value;
     previous_motion_ = j;

@@ -423,7 +423,8 @@ class source_walker {
       if (move.retracts()) retracted_ = true;
       return;
     }
-    const char* why = move.has_linear() ? "it also moves linear axes: give the retract a block of its own before it"
+    // X and Y may move with it (`G91 G28 X0 Y0 B0`): Z stays where the retract left it.
+    const char* why = move.from_home_mm[2] ? "it also moves Z: give the retract a block of its own before it"
                       : !s.rapid       ? "it runs at a feed, not at rapid"
                       : modal_.tcp     ? "tool-tip tracking is on"
                       : !retracted_    ? "the tool is not retracted (no move of Z to its home since the last move in "
@@ -433,6 +434,7 @@ class source_walker {
       return to.fail(at(b, what + " that turns the rotary axes is translated only as a positioning of the retracted "
                                   "tool, at rapid, without tool-tip tracking: " + why));
     }
+    s.from_home_mm = move.from_home_mm;
     modal_.a_deg = move.rotary_deg[0] ? move.rotary_deg[0] : before.a_deg;
     modal_.b_deg = move.rotary_deg[1] ? move.rotary_deg[1] : before.b_deg;
     modal_.c_deg = move.rotary_deg[2] ? move.rotary_deg[2] : before.c_deg;
