@@ -429,13 +429,101 @@ case "$name" in
     done || report "poses not kept"
     ;;
   machine-coordinates)
-    # A move in machine coordinates means the source machine's own axis positions: refused.
+    # A move in machine coordinates is translated by its distance from each axis' home, which the
+    # machine files give (home_mm); without it the move is refused naming the key. G30, M92 and
+    # LinuxCNC's G28 are refused; so is a rotary positioning before any retract.
     printf '%s\n' 'N10 G54' 'N20 SUPA G0 Z0' 'N30 TRAORI' 'N40 G1 X0 Y0 Z50 A-45 B30 F500' 'N50 M30' >mc.mpf
     run 2 translate --from sajo-12000p --to dmu-80p --to-dialect iso -o mc.nc mc.mpf
-    grep -q '^mc\.mpf:2:1: error: a move in machine coordinates' err || { report "SUPA move not refused"; show err; }
-    printf '%s\n' '%' 'O1' 'G54' 'G43.4 H1' 'G1 X0 Y0 Z50. B10. C20. F500' 'G49' 'G91 G28 Z0' 'M30' '%' >mc.nc
+    grep -q "^mc\.mpf:2:1: error: a move in machine coordinates (G53, SUPA, M91) of Z needs the source machine's home of Z: give home_mm in \[linear\.Z\]" err ||
+      { report "SUPA move without a home not refused by its key"; show err; }
+    printf '%s\n' '%' 'O1' 'G54' 'G43.4 H1' 'G1 X0 Y0 Z50. B10. C20. F500' 'G49' 'G91 G28 Z0' 'G90' 'M30' '%' >mc.nc
     run 2 translate --from dmu-80p --to dmu-80p --from-dialect iso --to-dialect siemens -o mc.mpf mc.nc
-    grep -q '^mc\.nc:7:1: error: a move in machine coordinates' err || { report "G28 move not refused"; show err; }
+    grep -q "^mc\.nc:7:1: error: a move to the reference point (G28) of Z needs the target machine's home of Z" err ||
+      { report "G28 into a target without a home not refused by its key"; show err; }
+    printf '%s\n' '%' 'O1' 'G90 G21 G94' 'G30 G91 Z0' 'G90' 'M30' '%' >g30.nc
+    run 2 translate --from dmu-80p --to dmu-80p --from-dialect iso -o g30.h g30.nc
+    grep -q '^g30\.nc:4:1: error: a move to the second reference point (G30) is not translated' err || { report "G30 not refused"; show err; }
+    printf '%s\n' '%' 'G21 G90' 'G91 G28 Z0' 'G90' 'M2' '%' >g28.ngc
+    run 2 translate --from xyzbc-trt --to xyzbc-trt --from-dialect linuxcnc -o g28.out.ngc g28.ngc
+    grep -q '^g28\.ngc:3:1: error: a move to the position the control keeps for G28 (LinuxCNC) is not translated: LinuxCNC keeps it in parameters #5161-#5166' err ||
+      { report "LinuxCNC G28 not refused"; show err; }
+    ;;
+  home-moves)
+    # The CAM safe start in every NC dialect: retract, park, rotary positioning with tracking off,
+    # tracking on, approach, cut, retract, park. Source: the B/C trunnion with its homes at machine
+    # zero; target: the A/C trunnion whose homes are X100 Y-50 Z-10 (machine files). Expected by
+    # hand: the retract Z-10 (M140 MB MAX: the top of Z's travel, 0), the park 200 mm and 100 mm
+    # from the homes, X-100 Y-150; the positioning B30 C45 is u = (sin30 cos45, sin30 sin45, cos30)
+    # (tool-relative B about Y, C about Z), and on the A/C trunnion (physical A about X carrying C
+    # about Z) u = (sinA sinC, sinA cosC, cosA); the tip under tracking is unchanged (no setup).
+    machines="$examples/../machines"
+    awk '/^\[linear\.[XYZ]\]/ { print; print "home_mm = 0"; next } /^letter = "[BC]"/ { print; print "home_deg = 0"; next } { print }' \
+      "$machines/bc-trunnion.toml" | sed 's/^id = "bc-trunnion"/id = "shop-bc"/' >bc.toml
+    awk '/^\[linear\.X\]/ { print; print "home_mm = 100"; next } /^\[linear\.Y\]/ { print; print "home_mm = -50"; next }
+         /^\[linear\.Z\]/ { print; print "home_mm = -10"; next } { print }' \
+      "$machines/ac-trunnion.toml" | sed 's/^id = "ac-trunnion"/id = "shop-ac"/' >ac.toml
+    printf '%s\n' '%' 'O1000' 'G90 G17 G21 G94' 'G53 G0 Z0.' 'G91 G28 X0. Y0.' 'G91 G28 B0. C0.' 'G90' 'T1 M6' 'S8000 M3' \
+      'G0 B30. C45.' 'G43.4 H1' 'G0 X10. Y5. Z50. B30. C45.' 'G1 Z2. F500.' 'G1 X40. F800.' 'G0 Z50.' 'G49' 'G53 G0 Z0.' \
+      'G53 G0 X-200. Y-100.' 'M30' '%' >cam.nc
+    sed 's/G43\.4 H1/G234 H1/' cam.nc >cam-haas.nc
+    printf '%s\n' '%' 'G21 G90 G17 G94' 'G53 G0 Z0' 'G53 G0 X0 Y0' 'G53 G0 B0 C0' 'T1 M6' 'G43 H1' 'S8000 M3' 'G0 B30 C45' \
+      'M428' 'G0 X10 Y5 Z50 B30 C45' 'G1 Z2 F500' 'G1 X40 F800' 'G0 Z50' 'M429' 'G53 G0 Z0' 'G53 G0 X-200 Y-100' 'M2' '%' >cam.ngc
+    printf '%s\n' 'G710 G90 G17 G94' 'SUPA G0 Z0' 'SUPA G0 X0 Y0' 'SUPA G0 B0 C0' 'T1 M6' 'D1' 'S8000 M3' 'G0 B30 C45' 'TRAORI' \
+      'G0 X10 Y5 Z50 B30 C45' 'G1 Z2 F500' 'G1 X40 F800' 'G0 Z50' 'TRAFOOF' 'SUPA G0 Z0' 'SUPA G0 X-200 Y-100' 'M30' >cam.mpf
+    printf '%s\n' '0 BEGIN PGM CAM MM' '1 TOOL CALL 1 Z S8000' '2 M140 MB MAX' '3 L X+0 Y+0 FMAX M91' '4 L B+30 C+45 FMAX' \
+      '5 M128' '6 L X+10 Y+5 Z+50 B+30 C+45 FMAX M3' '7 L Z+2 F500' '8 L X+40 F800' '9 L Z+50 FMAX' '10 M129' \
+      '11 L Z+0 FMAX M91' '12 L X-200 Y-100 FMAX M91' '13 END PGM CAM MM' >cam.h
+    for source in iso:cam.nc haas:cam-haas.nc linuxcnc:cam.ngc siemens:cam.mpf heidenhain:cam.h; do
+      from=${source%%:*} file=${source#*:}
+      for to in iso siemens heidenhain linuxcnc haas; do
+        out="out-$from.$to"
+        run 0 translate --from-file bc.toml --from-dialect "$from" --to-file ac.toml --to-dialect "$to" -o "$out" "$file"
+        [ -s "$out" ] || { report "$from -> $to: nothing written"; continue; }
+        # machine-coordinate lines: G53 (ISO, Haas, LinuxCNC), SUPA (Siemens), M91 (Heidenhain)
+        grep -E 'G53|SUPA|M91' "$out" >mc-lines
+        words mc-lines >mc-words
+        top=-10; [ "$from" = heidenhain ] && top=0
+        first=$(sed -n 1p mc-words) park=$(sed -n 2p mc-words) last=$(tail -n 1 mc-words) retract=$(tail -n 2 mc-words | head -n 1)
+        { near "$(value "$first" Z)" "$top" 1e-9 && [ -z "$(value "$first" X)" ]; } || report "$from -> $to: first retract $first, expected Z=$top"
+        { near "$(value "$park" X)" 100 1e-9 && near "$(value "$park" Y)" -50 1e-9; } || report "$from -> $to: park at home $park, expected X=100 Y=-50"
+        near "$(value "$retract" Z)" -10 1e-9 || report "$from -> $to: last retract $retract, expected Z=-10"
+        { near "$(value "$last" X)" -100 1e-9 && near "$(value "$last" Y)" -150 1e-9; } || report "$from -> $to: last park $last, expected X=-100 Y=-150"
+        # the positioning B30 C45 (tracking off): A and C alone, for the same tool axis
+        pos=$(words "$out" | awk '/A=/ && /C=/ && !/X=/ && !/A=0( |$)/' | sed -n 1p)
+        a=$(value "$pos" A) c=$(value "$pos" C)
+        awk -v a="$a" -v c="$c" 'BEGIN { d = atan2(0, -1) / 180; s = sin(30 * d)
+          e = (sin(a*d)*sin(c*d) - s*cos(45*d))^2 + (sin(a*d)*cos(c*d) - s*sin(45*d))^2 + (cos(a*d) - cos(30*d))^2
+          exit !(a != "" && c != "" && e < 1e-10) }' || report "$from -> $to: positioning $pos is not the tool axis of B30 C45"
+        # the approach and the cut: the source's tips
+        for xyz in "10 5 50" "10 5 2" "40 5 2"; do
+          set -- $xyz
+          words "$out" | awk -v x="$1" -v y="$2" -v z="$3" '{ ok = 0; for (i = 1; i <= NF; ++i) { split($i, kv, "=")
+              if (kv[1] == "X" && kv[2] == x) ok++; if (kv[1] == "Y" && kv[2] == y) ok++; if (kv[1] == "Z" && kv[2] == z) ok++ }
+            if (ok == 3) found = 1 } END { exit !found }' || report "$from -> $to: no block at X$1 Y$2 Z$3"
+        done
+        # the written program reads back to the same moves, in machine coordinates and not
+        run 0 translate --from-file ac.toml --from-dialect "$to" --to-file ac.toml --to-dialect "$to" -o "back-$out" "$out"
+        words "$out" >w1; words "back-$out" >w2
+        grep -E 'G53|SUPA|M91' "$out" | wc -l >m1; grep -E 'G53|SUPA|M91' "back-$out" | wc -l >m2
+        { cmp -s w1 w2 && cmp -s m1 m2; } || { report "$from -> $to: the output does not read back to its moves"; show "$out" "back-$out"; }
+      done
+    done
+    # A rotary move with tracking off before any retract: its tip matters, refused as before.
+    printf '%s\n' '%' 'O1' 'G90 G21 G94' 'G0 B30. C45.' 'M30' '%' >early.nc
+    run 2 translate --from-file bc.toml --from-dialect iso --to-file ac.toml -o early.h early.nc
+    grep -q '^early\.nc:4:1: error: rotary motion without tool-tip tracking' err || { report "positioning before a retract not refused"; show err; }
+    printf '%s\n' '%' 'O1' 'G90 G21 G94' 'G0 X0. Y0. Z5.' 'G53 B30. C45.' 'M30' '%' >early.nc
+    run 2 translate --from-file bc.toml --from-dialect iso --to-file ac.toml -o early.h early.nc
+    grep -q '^early\.nc:5:1: error: a move in machine coordinates (G53, SUPA, M91) that turns the rotary axes is translated only as a positioning of the retracted tool' err ||
+      { report "G53 rotary move before a retract not refused"; show err; }
+    # `G91 G28 X0 Y0 B0 C0` after the retract: X and Y home while B and C turn, Z stays.
+    printf '%s\n' '%' 'O1' 'G90 G21 G94' 'G91 G28 Z0.' 'G91 G28 X0. Y0. B0. C0.' 'G90' 'M30' '%' >park.nc
+    run 0 translate --from-file bc.toml --from-dialect iso --to-file ac.toml --to-dialect iso -o park.out park.nc
+    grep -q '^G53 G0 X100\. Y-50\. A0\.' park.out || { report "G28 of X, Y and B not one park and positioning"; show park.out; }
+    # The target's travel bounds a park: 500 mm from the home of X is past the A/C trunnion's.
+    printf '%s\n' '%' 'O1' 'G90 G21 G94' 'G53 G0 X-500.' 'M30' '%' >far.nc
+    run 2 translate --from-file bc.toml --from-dialect iso --to-file ac.toml -o far.h far.nc
+    grep -q '^far\.nc:4:1: error: shop-ac cannot reach this move in machine coordinates: X=-400.000' err || { report "park past the travel not refused"; show err; }
     ;;
   setup)
     # A setup given three ways. T of (K10) written as a matrix and as the half turn about

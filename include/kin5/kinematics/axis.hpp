@@ -11,6 +11,7 @@
 /// physical table angles writes φ (`angle_sense::physical`).
 #pragma once
 
+#include <optional>
 #include <string_view>
 
 #include "../core/units.hpp"
@@ -71,6 +72,11 @@ struct linear_axis {
   mount side{};
   vec3 direction{};        ///< unit vector, machine frame
   linear_travel travel{};  ///< limits of the value, mm
+  /// The value, in the control's machine coordinates (G53, SUPA, M91), at the axis' home: its
+  /// reference point, where `G28` sends it, and for the tool axis the top of its travel, where a
+  /// retract ends (docs/machine-files.md, `home_mm`). Empty: not known, and a move in machine
+  /// coordinates of this axis is refused rather than guessed.
+  std::optional<double> home_mm{};
 };
 
 /// A rotary axis.
@@ -81,6 +87,10 @@ struct rotary_axis {
   angle_sense sense{};      ///< how the commanded value relates to ψ
   rotary_travel travel{};   ///< limits of the commanded value
   vec3 point_mm{};          ///< a point on the axis line, machine frame, at the zero pose
+  /// The commanded angle at the axis' home, its reference point, where `G28` sends it
+  /// (docs/machine-files.md, `home_deg`). Empty: not known, and a move to the reference point
+  /// of this axis is refused rather than guessed.
+  std::optional<degrees> home_deg{};
 
   /// φ, the physical right-handed rotation about `direction`, from the commanded angle: the
   /// commanded angle itself, negated for a table programmed tool-relative.

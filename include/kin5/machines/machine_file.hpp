@@ -180,7 +180,7 @@ struct reader {
 
   std::optional<linear_axis> linear(const toml::table& t, axis_letter letter) {
     const std::string where = std::string("[linear.") + to_char(letter) + "]";
-    only_keys(t, std::array<std::string_view, 3>{"direction", "side", "travel_mm"}, where);
+    only_keys(t, std::array<std::string_view, 4>{"direction", "side", "travel_mm", "home_mm"}, where);
     const toml::node* d = require(t, "direction", where);
     const toml::node* s = require(t, "side", where);
     const toml::node* r = require(t, "travel_mm", where);
@@ -192,13 +192,23 @@ struct reader {
       error(*r, where + " travel_mm: " + std::string(machine_rules::message(machine_rules::rule::travel_order)));
       return std::nullopt;
     }
+    std::optional<double> home_mm;
+    if (const toml::node* h = t.get("home_mm")) {
+      home_mm = number(*h, where + " home_mm");
+      if (!home_mm) return std::nullopt;
+      if (range && !((*range)[0] <= *home_mm && *home_mm <= (*range)[1])) {
+        error(*h, where + " home_mm: the home lies outside travel_mm");
+        return std::nullopt;
+      }
+    }
     if (!dir || !sd || !range) return std::nullopt;
-    return linear_axis{letter, *sd, *dir, linear_travel::between((*range)[0], (*range)[1])};
+    return linear_axis{letter, *sd, *dir, linear_travel::between((*range)[0], (*range)[1]), home_mm};
   }
 
   std::optional<rotary_axis> rotary(const toml::table& t, std::size_t index) {
     const std::string where = "[[rotary]] #" + std::to_string(index + 1);
-    only_keys(t, std::array<std::string_view, 7>{"letter", "side", "direction", "point_mm", "sense", "travel_deg", "continuous"},
+    only_keys(t, std::array<std::string_view, 8>{"letter", "side", "direction", "point_mm", "sense", "travel_deg", "continuous",
+                                                 "home_deg"},
               where);
     const toml::node* l = require(t, "letter", where);
     const toml::node* s = require(t, "side", where);
@@ -225,6 +235,15 @@ struct reader {
     a.point_mm = *at;
     a.sense = *sense;
     a.travel = *tr;
+    if (const toml::node* h = t.get("home_deg")) {
+      const auto home = number(*h, where + " home_deg");
+      if (!home) return std::nullopt;
+      if (!a.travel.contains(to_radians(degrees{*home}))) {
+        error(*h, where + " home_deg: the home lies outside travel_deg");
+        return std::nullopt;
+      }
+      a.home_deg = degrees{*home};
+    }
     return a;
   }
 };

@@ -59,6 +59,7 @@ inline std::string to_machine_file(const machine_geometry& g) {
     out += std::string("\n[linear.") + to_char(a.letter) + "]\n";
     out += "direction = " + vector_text(a.direction) + "\nside = " + side_text(a.side) + "\n";
     out += "travel_mm = [" + number_text(a.travel.lower_mm) + ", " + number_text(a.travel.upper_mm) + "]\n";
+    if (a.home_mm) out += "home_mm = " + number_text(*a.home_mm) + "\n";
   }
   for (const rotary_axis& a : g.rotary) {
     if (a.letter == axis_letter::none) break;
@@ -68,6 +69,7 @@ inline std::string to_machine_file(const machine_geometry& g) {
     out += std::string("sense = ") + (a.sense == angle_sense::physical ? "\"physical\"" : "\"tool-relative\"") + "\n";
     if (a.travel.continuous) out += "continuous = true\n";
     else out += "travel_deg = [" + number_text(a.travel.lower.value) + ", " + number_text(a.travel.upper.value) + "]\n";
+    if (a.home_deg) out += "home_deg = " + number_text(a.home_deg->value) + "\n";
   }
   return out;
 }

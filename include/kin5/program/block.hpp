@@ -95,6 +95,22 @@ struct arc_words {
   friend bool operator==(const arc_words&, const arc_words&) = default;
 };
 
+/// Where the axis words of a block in machine coordinates (`block::machine_coordinates`) take
+/// the axes, as each control defines it (docs/dialects/*.md, "Machine coordinates").
+enum class machine_position {
+  machine_zero,      ///< positions from the machine's zero: G53, SUPA, Siemens G53/G153, M91
+  reference_point,   ///< G28 (Fanuc, Haas): each axis named to its reference point, through the
+                     ///< intermediate point the words give (part coordinates, G90 or G91)
+  second_reference,  ///< G30: each axis named to the second reference point, through the words' point
+  stored_position,   ///< LinuxCNC G28: to the position the control keeps in parameters
+                     ///< #5161–#5166, through the words' point
+  second_stored_position,  ///< LinuxCNC G30: to the one in #5181–#5186, through the words' point
+  builder_position,  ///< M92: positions from a point the machine builder sets
+  /// Heidenhain `M140 MB MAX`: along the tool axis to the end of the travel, away from the part;
+  /// the block has no axis words.
+  tool_axis_limit,
+};
+
 /// One block of an NC program (one line; an APT statement with its `$` continuations).
 struct block {
   source_location where;              ///< first character of the block
@@ -129,6 +145,8 @@ struct block {
   /// Axis words in machine coordinates (G53, G28/G30 intermediate points, M91/M92): not
   /// workpiece positions, so never run through kinematics.
   bool machine_coordinates = false;
+  /// What the axis words of a block in machine coordinates name; `machine_zero` otherwise.
+  machine_position machine_reference = machine_position::machine_zero;
   /// Words the reader recognised as not changing geometry (G17, G40, G54, G90, G64, H1, D1, …),
   /// as written. The writer of the same dialect writes them back in place; a writer of another
   /// dialect writes them into a comment, so nothing is lost silently.

@@ -123,7 +123,7 @@ class block_store {
     has_kept = 1u << 10, machine_coordinates = 1u << 11, passthrough = 1u << 12, framing = 1u << 13,
     assignment = 1u << 14, has_alarm = 1u << 15, alarm_number = 1u << 16,
   };
-  static_assert(field_count<block>() == 25,
+  static_assert(field_count<block>() == 26,
                 "a field of `block` has no codec: give it one in block_store.hpp and draw it in block_store_laws");
   static_assert(field_count<axis_words>() == 7 && field_count<arc_words>() == 3,
                 "a field of `axis_words` or `arc_words` has no codec: give it one in block_store.hpp and draw it "
@@ -300,7 +300,7 @@ class block_store {
     std::size_t size = sizeof flags + sizeof others + 2 * leb + sizeof(long long) + sizeof(feed_unit) +
                        sizeof(long long) + sizeof(double) + sizeof(motion_kind) + 6 * sizeof(double) + sizeof(vec3) +
                        sizeof(arc_plane) + sizeof(vec3) + sizeof(double) + sizeof(double) + leb + sizeof(std::uint32_t) +
-                       sizeof(state_words) + sizeof(long long);
+                       sizeof(state_words) + sizeof(long long) + sizeof(machine_position);
     if (flags & has_text) size += leb + b.text.size();
     if (b.alarm) size += leb + b.alarm->message.size();
     for (const auto* s : {&b.program_begin, &b.program_end, &b.comment, &b.tool_name})
@@ -330,6 +330,7 @@ class block_store {
         put_string(b.alarm->message);
         if (others & alarm_number) put(*b.alarm->number);
       }
+      if (others & machine_coordinates) put(b.machine_reference);  // what the words name
     }
     if (flags & has_rpm) put(*b.spindle_rpm);
     if (flags & has_m) {
@@ -372,6 +373,7 @@ class block_store {
     b.kept_words.clear();
     b.state = {};
     b.alarm.reset();
+    b.machine_reference = machine_position::machine_zero;
     std::uint32_t flags = 0, others = 0;
     p = get(p, flags);
     std::uint64_t v = 0;
@@ -401,6 +403,7 @@ class block_store {
         p = get_string(p, alarm.message);
         p = get_optional(p, others, alarm_number, alarm.number);
       }
+      if (others & machine_coordinates) p = get(p, b.machine_reference);
     }
     p = get_optional(p, flags, has_rpm, b.spindle_rpm);
     if (flags & has_m) {

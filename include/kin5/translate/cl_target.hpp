@@ -48,6 +48,13 @@ class cl_target {
       if (!b.framing) ++out.passed_through;  // a tape mark: the writer frames its own program
       return;
     }
+    if (s.what == source_step::kind::machine || s.positioning) {
+      out.errors.push_back(at(b, std::string(program::machine_position_name(b.machine_reference)) +
+                                     " has no APT form: GOTO points are the part's, and GOHOME is the FROM point in "
+                                     "APT but the machine's home (every axis) to many posts, so no statement says "
+                                     "it; translate to an NC dialect instead"));
+      return;
+    }
     program::block o = b;
     carry_over(o, source_language_, program::cl_data_dialect());
     if (o.tcp) {  // CL data is tool-tip data: tracking is implied

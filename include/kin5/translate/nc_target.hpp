@@ -138,6 +138,8 @@ class nc_target {
       machine_.forget();
       return;
     }
+    if (s.what == source_step::kind::machine) return write_machine_move(b, s, out, emit);
+    if (s.positioning) return write_positioning(b, s, out, emit, on_report);
     if (s.compensated && !compensation_kept(b, s, out)) return;
     if (program::changes_tool(b) || s.length_entry != length_entry_) tool_changed_ = true, length_entry_ = s.length_entry;
     if (placement_ && s.what == source_step::kind::motion && !tool_length_at(b, s, out)) return;
@@ -159,6 +161,8 @@ class nc_target {
       write_copy(b, s, std::move(o), out, emit);
       return;
     }
+    if (restate_motion_ && !o.motion) o.motion = s.motion;  // after the rapid of a machine move
+    restate_motion_ = false;
     if (machine_mode_) return write_machine(b, s, std::move(o), out, emit, on_report);
     write_motion(b, s, std::move(o), out, emit, on_report);
   }
@@ -189,6 +193,113 @@ class nc_target {
   std::size_t next_motion_ = 0;                 // motion index of the next motion block
 
   std::vector<vec3> sweep_target_;  // the sweep of the block planned last, target frame
+  bool restate_motion_ = false;     // a move in machine coordinates wrote a motion word of its own
+
+  /// Block `b`'s words other than its move, for a move in machine coordinates of the target:
+  /// machine zero (the target's G53, SUPA, M91), no source M91 / M92, and no G91 of a `G91 G28`
+  /// (the target's move is absolute); the motion said (rapid, or a feed move at the F in effect).
+  program::block machine_block(const program::block& b, const source_step& s) const {
+    program::block o = b;
+    o.text.clear();
+    o.axes = {};
+    o.arc.reset();
+    o.machine_coordinates = true;
+    o.machine_reference = program::machine_position::machine_zero;
+    std::erase_if(o.m_codes, [](int m) { return m == 91 || m == 92; });
+    if (o.state.distance == program::distance_mode::incremental) o.state.distance.reset();
+    carry_over(o, source_language_, output_language_);
+    o.motion = s.rapid ? program::motion_kind::rapid : program::motion_kind::linear;
+    o.feed_rapid = false;
+    if (!s.rapid) o.feed = s.feed_mm_per_min;
+    return o;
+  }
+
+  /// The linear words of `o` for machine step `s` (block `b`): each axis at the target's home
+  /// plus the source's distance from its own, within the target's travel; false, with an error,
+  /// when a home is not known or the place is past the travel.
+  bool linear_from_homes(const program::block& b, const source_step& s, program::block& o, translation& out) const {
+    std::optional<double>* words[3] = {&o.axes.x_mm, &o.axes.y_mm, &o.axes.z_mm};
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (!s.from_home_mm[i]) continue;
+      const linear_axis& axis = to_.linear(i);
+      const char letter = to_char(axis.letter);
+      if (!axis.home_mm) {
+        out.errors.push_back(at(b, std::string(program::machine_position_name(b.machine_reference)) + " of " + letter +
+                                       " needs the target machine's home of " + letter + ": give home_mm in [linear." +
+                                       letter + "] of its machine file (--to-file; docs/machine-files.md)"));
+        return false;
+      }
+      const double value = *axis.home_mm + *s.from_home_mm[i];
+      if (!axis.travel.contains(value, inverse_options{}.linear_slack_mm)) {
+        out.errors.push_back(at(b, std::string(to_.geometry.id) + " cannot reach this move in machine coordinates: " +
+                                       letter + "=" + fixed(value, 3) + " (" + fixed(*s.from_home_mm[i], 3) +
+                                       " mm from its home) is outside its travel [" + fixed(axis.travel.lower_mm, 3) +
+                                       ", " + fixed(axis.travel.upper_mm, 3) + "] mm"));
+        return false;
+      }
+      *words[i] = value;
+    }
+    return true;
+  }
+
+  /// A move of the linear axes in machine coordinates (machine_moves.hpp): each axis at the
+  /// target's home plus the source's distance from its own, within the target's travel.
+  template <class Emit>
+  void write_machine_move(const program::block& b, const source_step& s, translation& out, Emit&& emit) {
+    if (!s.rapid && (feed_ == feed_policy::inverse_time || output_inverse_time_)) {
+      out.errors.push_back(at(b, std::string(program::machine_position_name(b.machine_reference)) +
+                                     " at a feed per minute is not written in inverse time (G93): write it at rapid"));
+      return;
+    }
+    program::block o = machine_block(b, s);
+    if (s.to_limit) {  // along the tool axis: Z to the top of its travel where the tool stands along Z
+      if (tool_along_z()) {
+        o.axes.z_mm = to_.linear(2).travel.upper_mm;
+      } else {  // only M140 MB MAX says it: a block of M functions
+        o.machine_reference = program::machine_position::tool_axis_limit;
+        o.motion.reset();
+      }
+      restate_motion_ = true;
+      machine_.forget();
+      return emit(std::move(o));
+    }
+    if (!linear_from_homes(b, s, o, out)) return;
+    if (!s.rapid) restate_feed_ = true;
+    restate_motion_ = true;
+    machine_.forget();
+    emit(std::move(o));
+  }
+
+  /// Whether the target's tool stands along its Z slide, up: no head turns it (or the heads'
+  /// angles written last leave it there) and the tool and Z point along the machine's +Z.
+  bool tool_along_z() const {
+    if (norm(to_.tool_reference() - unit_z) > 1e-12 || norm(to_.linear(2).direction - unit_z) > 1e-12) return false;
+    bool heads = false;
+    for (std::size_t i = 0; i < to_.rotary_count; ++i) heads = heads || to_.rotary(i).side == mount::head;
+    if (!heads) return true;
+    if (!previous_motion_ || !path_.angles[*previous_motion_]) return false;
+    const kin5::rotary_values& angles = *path_.angles[*previous_motion_];
+    return norm(heads_carry(to_, angles, unit_z) - heads_carry(to_, angles, vec3{}) - unit_z) <= 1e-9;
+  }
+
+  /// A rotary positioning in machine coordinates of the retracted tool (`source_step::positioning`):
+  /// the target's planned angles for the same tool axis, no tip, no path to check.
+  template <class Emit, class Report>
+  void write_positioning(const program::block& b, const source_step& s, translation& out, Emit&& emit,
+                         Report&& on_report) {
+    const std::size_t j = next_motion_++;
+    if (!report_motion(b, s, j, out, on_report)) return;
+    program::block o = machine_block(b, s);
+    o.machine_coordinates = b.machine_coordinates;  // `G0 B30 C45` stays a move of the part's frame
+    if (!linear_from_homes(b, s, o, out)) return;   // `G91 G28 X0 Y0 B0`: X and Y home as it turns
+    for (std::size_t i = 0; i < to_.rotary_count; ++i)
+      rotary_word(o.axes, to_.rotary(i).letter) = to_degrees((*path_.angles[j])[i]).value;
+    previous_motion_ = j;
+    previous_step_ = s;
+    restate_motion_ = true;
+    machine_.forget();
+    emit(std::move(o));
+  }
 
   /// The source's commanded angles at fraction `t` of motion step `s` (1: its end; between, the
   /// control's linear move from its start), as the target's angles, when they are the target's:
@@ -493,7 +604,7 @@ class nc_target {
       on_report(std::move(report));
       return false;
     }
-    if (auto past = slide_past_travel(s.tip_source_mm, *path_.angles[j])) {
+    if (auto past = s.positioning ? std::nullopt : slide_past_travel(s.tip_source_mm, *path_.angles[j])) {
       report.match = matchability::unreachable;
       report.linear_excess_mm = past->excess_mm;
       report.why = past->why;

@@ -47,6 +47,7 @@
 #include "arc_plane.hpp"
 #include "compensation_ends.hpp"
 #include "diagnostic_text.hpp"
+#include "machine_moves.hpp"
 #include "options.hpp"
 #include "source_checks.hpp"
 #include "tool_lengths.hpp"
@@ -65,8 +66,17 @@ inline constexpr std::string_view rotary_tcp_off_message =
 
 /// One input block after the source side: what it is and, for a motion, its pose.
 struct source_step {
-  enum class kind { copy, passthrough, motion, failed };
+  /// `machine`: a move of the linear axes in machine coordinates (`from_home_mm`), written as the
+  /// target's own; a rotary positioning in machine coordinates is a `motion` with `positioning`.
+  enum class kind { copy, passthrough, motion, failed, machine };
   kind what = kind::copy;
+  /// A `machine` step: where X, Y, Z end, mm from each axis' home (machine_moves.hpp).
+  std::array<std::optional<double>, 3> from_home_mm{};
+  /// A motion step that only turns the rotary axes, in machine coordinates, with the tool
+  /// retracted and no tool-tip tracking: its meaning is the tool axis `u_source` alone (no tip).
+  bool positioning = false;
+  /// A `machine` step along the tool axis to the end of travel (M140 MB MAX), no `from_home_mm`.
+  bool to_limit = false;
   vec3 tip_source_mm{};                      ///< tool tip, source workpiece frame
   vec3 u_source = unit_z;                    ///< tool axis, source workpiece frame, unit
   std::array<double, 2> rotary_source_deg{};  ///< source commanded angles, machine order (K16)
@@ -297,10 +307,13 @@ class source_walker {
       s.what = source_step::kind::failed;
       return s;
     }
-    if (b.machine_coordinates && b.moves()) {  // the source machine's own axes: nothing on another
-      s.what = source_step::kind::failed;
-      to.fail(at(b, "a move in machine coordinates (G53, G28, G30, SUPA, M91, M92) is not translated: the source "
-                    "machine's axis positions mean nothing on another machine"));
+    if (b.machine_coordinates && (b.moves() || b.machine_reference == program::machine_position::tool_axis_limit)) {
+      if constexpr (Source::has_angles) {
+        machine_step(b, before, s, to, kinematics);
+      } else {  // CL data name no machine
+        s.what = source_step::kind::failed;
+        to.fail(at(b, "a move in machine coordinates is not translated from CL data"));
+      }
       return s;
     }
     if (b.machine_coordinates || b.passthrough) {
@@ -316,6 +329,10 @@ class source_walker {
     if (!b.moves()) {  // copy; an arc centre on its own is mapped like the points of its arc
       if constexpr (Source::needs_tcp)
         if (untracked_now() && b.arc && b.arc->centre_mm && !untracked_centre(b, s, to)) s.what = source_step::kind::failed;
+      return s;
+    }
+    if (is_positioning(b)) {
+      positioning_step(b, before, s, to, kinematics);
       return s;
     }
     s.what = source_step::kind::failed;
@@ -344,6 +361,7 @@ class source_walker {
     }
     last_tip_ = s.tip_source_mm, last_untracked_ = s.untracked;
     s.what = source_step::kind::motion;
+    retracted_ = false;  // the tool has moved in the part's frame: it may be near the part again
     return s;
   }
 
@@ -353,6 +371,7 @@ class source_walker {
   source_context context_;
   allowances allow_;
   std::optional<vec3> last_tip_;  // tip of the last motion (source workpiece frame), while known
+  bool retracted_ = false;        // Z has gone to its home since the last motion in the part's frame
   bool last_untracked_ = false;   // whether that motion was read as machine coordinates
   std::optional<std::optional<program::work_offset>> untracked_offset_;  // work offset of the first untracked motion
   tool_length_tracker lengths_;  // the tool length of each untracked motion
@@ -374,6 +393,95 @@ class source_walker {
       if (out) out->refuse(std::move(d), *allow);
     }
   };
+
+  /// The step of block `b` in machine coordinates (machine_moves.hpp): a move of the linear axes
+  /// from their homes, or a rotary positioning with the tool retracted and no tool-tip tracking,
+  /// read as the tool axis it ends at. The tool's place in the part's frame is unknown after
+  /// either: the next motion must give X, Y and Z (an approach).
+  void machine_step(const program::block& b, const program::modal_state& before, source_step& s, const report& to,
+                    bool kinematics) {
+    s.what = source_step::kind::failed;
+    last_tip_.reset();
+    if (b.machine_reference == program::machine_position::tool_axis_limit) return tool_axis_retract(b, s);
+    machine_move move;
+    if (auto why = read_machine_move(b, source_.from, modal_.distance == program::distance_mode::incremental, move))
+      return to.fail(at(b, *why));
+    // G28 runs at rapid; the others in the motion mode in effect (FMAX: rapid).
+    const auto kind = modal_.motion_of(b);
+    s.motion = kind.value_or(program::motion_kind::rapid);
+    s.rapid = b.machine_reference == program::machine_position::reference_point || b.feed_rapid ||
+              s.motion == program::motion_kind::rapid;
+    if (s.rapid) s.motion = program::motion_kind::rapid;
+    const std::string what = program::machine_position_name(b.machine_reference);
+    if (program::is_arc(s.motion)) return to.fail(at(b, what + " on a circle is not translated"));
+    if (!s.rapid && (modal_.feed_mode != program::feed_unit::per_minute || !modal_.feed || !(*modal_.feed > 0.0)))
+      return to.fail(at(b, what + " at a feed needs a feed per minute in effect (F, G94)"));
+    if (!s.rapid) s.feed_mm_per_min = modal_.feed;
+    if (!move.has_rotary()) {
+      s.what = source_step::kind::machine;
+      s.from_home_mm = move.from_home_mm;
+      if (move.retracts()) retracted_ = true;
+      return;
+    }
+    // X and Y may move with it (`G91 G28 X0 Y0 B0`): Z stays where the retract left it.
+    const char* why = move.from_home_mm[2] ? "it also moves Z: give the retract a block of its own before it"
+                      : !s.rapid       ? "it runs at a feed, not at rapid"
+                      : modal_.tcp     ? "tool-tip tracking is on"
+                      : !retracted_    ? "the tool is not retracted (no move of Z to its home since the last move in "
+                                         "the part's frame), so it may be near the part"
+                                       : nullptr;
+    if (why) {
+      return to.fail(at(b, what + " that turns the rotary axes is translated only as a positioning of the retracted "
+                                  "tool, at rapid, without tool-tip tracking: " + why));
+    }
+    s.from_home_mm = move.from_home_mm;
+    modal_.a_deg = move.rotary_deg[0] ? move.rotary_deg[0] : before.a_deg;
+    modal_.b_deg = move.rotary_deg[1] ? move.rotary_deg[1] : before.b_deg;
+    modal_.c_deg = move.rotary_deg[2] ? move.rotary_deg[2] : before.c_deg;
+    positioning_step(b, before, s, to, kinematics);
+  }
+
+  /// `M140 MB MAX` (block `b`): along the tool axis, away from the part, to the end of travel.
+  /// The tool axis is the part's, which a translation keeps: the target retracts along its own
+  /// (nc_target.hpp), whatever the source's heads stand at.
+  void tool_axis_retract(const program::block& b, source_step& s) {
+    (void)b;
+    modal_.x_mm.reset(), modal_.y_mm.reset(), modal_.z_mm.reset();
+    s.what = source_step::kind::machine;
+    s.to_limit = true;
+    s.rapid = true;
+    s.motion = program::motion_kind::rapid;
+    retracted_ = true;
+  }
+
+  /// Whether block `b` turns only rotary axes, at rapid, without tool-tip tracking, with the tool
+  /// retracted, where motion without tracking is not read as machine coordinates: a positioning
+  /// (the CAM safe-start idiom: retract, orient the tool, then tracking on and an approach).
+  bool is_positioning(const program::block& b) const {
+    if constexpr (Source::needs_tcp) {
+      const auto kind = modal_.motion_of(b);
+      return retracted_ && !modal_.tcp && !untracked_now() && b.axes.has_rotary() && !b.axes.has_linear() &&
+             !b.axes.tool_axis && (b.feed_rapid || kind == program::motion_kind::rapid);
+    }
+    return false;
+  }
+
+  /// The step of a positioning whose angles `modal_` holds: its tool axis, no tip. The part has
+  /// turned under the tool (or the tool over the part), so where the tip is in the part's frame
+  /// is not known: the next motion must give X, Y and Z.
+  void positioning_step(const program::block& b, const program::modal_state& before, source_step& s,
+                        const report& to, bool kinematics) {
+    s.what = source_step::kind::failed;
+    last_tip_.reset();
+    modal_.x_mm.reset(), modal_.y_mm.reset(), modal_.z_mm.reset();
+    s.positioning = true;
+    s.rapid = true;
+    s.motion = program::motion_kind::rapid;
+    std::vector<program::diagnostic> notes;
+    if (auto error = source_.pose(before, modal_, s, warned_letters_, notes, b, kinematics)) return to.fail(at(b, *error));
+    for (auto& note : notes) to.refuse(std::move(note));
+    s.what = source_step::kind::motion;
+  }
 
   /// Motion kind, tool tip and start point of motion block `b`; false (an error) when
   /// tool-tip tracking is off or the tip is not known.

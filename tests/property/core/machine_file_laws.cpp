@@ -250,6 +250,9 @@ TEST_CASE("machine file errors name file, line, column and the rule", "[core][ma
       {broken("[linear.Z]", "[linear.W]"), 19, 9, "unknown key 'W'"},
       {broken("travel_deg = [-120, 120]\n", "travel_deg = [-120, 120]\n\n[[rotary]]\nletter = \"A\"\n"), 24, 1,
        "one or two rotary axes"},
+      {broken("travel_mm = [-400, 0]", "travel_mm = [-400, 0]\nhome_mm = 10"), 23, 11, "[linear.Z] home_mm: the home lies outside travel_mm"},
+      {broken("travel_mm = [-400, 0]", "travel_mm = [-400, 0]\nhome_mm = \"top\""), 23, 11, "home_mm must be a number"},
+      {broken("travel_deg = [-120, 120]", "travel_deg = [-120, 120]\nhome_deg = 130"), 39, 12, "home_deg: the home lies outside travel_deg"},
   };
   for (const error_case& c : cases) {
     const auto r = parse_machine_file(c.text, "m.toml");
@@ -345,4 +348,25 @@ TEST_CASE("machine files and tool tables nest at most 32 deep and keep keys shor
   CHECK_FALSE(toml_bounds_violation(std::string(toml_bounds::max_file_bytes, '\n')));
   // Every bundled machine file is within the bounds (they are read in the cases above).
   CHECK_FALSE(toml_bounds_violation(good));
+}
+
+TEST_CASE("machine file homes: read when given, absent otherwise, and written back", "[core][machine-file]") {
+  const auto none = parse_machine_file(good, "good.toml");
+  REQUIRE(none.ok());
+  for (const auto& a : none.machine->model().geometry.linear) CHECK_FALSE(a.home_mm);
+  CHECK_FALSE(none.machine->model().rotary(1).home_deg);
+  std::string text(good);
+  text.replace(text.find("travel_mm = [-400, 0]"), 21, "travel_mm = [-400, 0]\nhome_mm = -12.5");
+  text.replace(text.find("travel_deg = [-120, 120]"), 24, "travel_deg = [-120, 120]\nhome_deg = -90");
+  const auto homes = parse_machine_file(text, "homes.toml");
+  REQUIRE(homes.ok());
+  const machine_geometry& g = homes.machine->model().geometry;
+  CHECK(g.linear[2].home_mm == -12.5);
+  CHECK_FALSE(g.linear[0].home_mm);
+  CHECK(g.rotary[1].home_deg->value == -90.0);
+  const auto again = parse_machine_file(to_machine_file(g), "again.toml");
+  REQUIRE(again.ok());
+  CHECK(again.machine->model().geometry.linear[2].home_mm == -12.5);
+  CHECK(again.machine->model().geometry.rotary[1].home_deg->value == -90.0);
+  CHECK_FALSE(again.machine->model().geometry.rotary[0].home_deg);
 }

@@ -104,6 +104,7 @@ inline std::string motion_difference(const program::block& a, const program::blo
   if (!near(a.feed, b.feed)) return "feed";
   if (a.feed_rapid != b.feed_rapid) return "feed_rapid";
   if (a.machine_coordinates != b.machine_coordinates) return "machine_coordinates";
+  if (a.machine_reference != b.machine_reference) return "machine_reference";
   return {};
 }
 

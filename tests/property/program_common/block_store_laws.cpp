@@ -79,7 +79,7 @@ state_words any_state() {
 block any_block(const std::string& file) {
   block b;
   auto& [where, text, number, program_begin, program_end, comment, tcp, feed_mode, metric, tool, tool_name,
-         spindle_rpm, m_codes, motion, axes, arc, feed, feed_rapid, machine_coordinates, kept_words, passthrough,
+         spindle_rpm, m_codes, motion, axes, arc, feed, feed_rapid, machine_coordinates, machine_reference, kept_words, passthrough,
          framing, assignment, state, alarm] = b;
   where = {file, *rc::gen::inRange<std::size_t>(0, 1u << 31), *rc::gen::inRange<std::size_t>(0, 5000)};
   text = *any_string();
@@ -112,6 +112,11 @@ block any_block(const std::string& file) {
   feed = maybe(any_double());
   feed_rapid = *rc::gen::arbitrary<bool>();
   machine_coordinates = *rc::gen::arbitrary<bool>();
+  if (machine_coordinates)
+    machine_reference = *rc::gen::element(machine_position::machine_zero, machine_position::reference_point,
+                                          machine_position::second_reference, machine_position::stored_position,
+                                          machine_position::second_stored_position, machine_position::tool_axis_limit,
+                                          machine_position::builder_position);
   kept_words = *rc::gen::container<std::vector<std::string>>(*rc::gen::inRange(0, 4), any_string());
   passthrough = *rc::gen::arbitrary<bool>();
   framing = *rc::gen::arbitrary<bool>();

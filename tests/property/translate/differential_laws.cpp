@@ -711,3 +711,117 @@ TEST_CASE("differential: a CAM-style Heidenhain program with Q parameters, subpr
       CHECK(o.motions == moves);
     }
 }
+
+namespace {
+
+/// `g` with the homes of a shop's machine file: X, Y, Z (mm, machine coordinates) and the
+/// reference angle 0 of every rotary axis.
+loaded_machine with_homes(machine_geometry g, std::string_view id, const vec3& home_mm) {
+  g.id = id;
+  g.linear[0].home_mm = home_mm.x, g.linear[1].home_mm = home_mm.y, g.linear[2].home_mm = home_mm.z;
+  for (auto& a : g.rotary)
+    if (a.letter != axis_letter::none) a.home_deg = degrees{0.0};
+  auto read = parse_machine_file(to_machine_file(g), std::string(id) + ".toml");
+  REQUIRE(read.ok());
+  return std::move(*read.machine);
+}
+
+/// The tool axis of machine `m` (part frame) at commanded A, B, C (degrees), by the Eigen chain.
+vec3 chain_axis(const machine_model& m, const std::array<double, 3>& abc_deg) {
+  basic_axis_position<2> q{};
+  for (std::size_t i = 0; i < m.rotary_count; ++i) {
+    const auto l = m.rotary(i).letter;
+    q.rotary[i] = to_radians(degrees{abc_deg[l == axis_letter::A ? 0 : l == axis_letter::B ? 1 : 2]});
+  }
+  return eigen::to_kin5(Eigen::Vector3d(eigen::chain_work_T_tool(m, q).linear() * eigen::to_eigen(m.tool_reference())));
+}
+
+}  // namespace
+
+TEST_CASE("differential: the CAM safe start in every NC dialect, on other kinematics, agrees with the Eigen chain") {
+  // Retract, park, rotary positioning with tracking off, tracking on, approach, cut, retract,
+  // park, end: from a B/C trunnion whose homes are its machine zero to an A/C trunnion whose
+  // homes are X100 Y-50 Z-10, under a setup turning 90° about Z. The retract and the parks are
+  // the same distances from the homes (M140 MB MAX: the top of Z's travel), the positioning
+  // gives the same tool axis in the part, and every move under tracking the same tip and axis.
+  const loaded_machine from = with_homes(machines::bc_trunnion::model.geometry, "shop-bc", {0, 0, 0});
+  const loaded_machine to = with_homes(machines::ac_trunnion::model.geometry, "shop-ac", {100, -50, -10});
+  const rigid_transform setup{rotation(unit_z, radians{pi / 2}), {5, -3, 0}};
+  struct row {
+    std::string_view dialect, text;
+    bool tool_axis_limit;  // the first retract is M140 MB MAX
+  };
+  const std::vector<row> rows = {
+      {"iso", "%\nO1000\nG90 G17 G21 G94\nG53 G0 Z0.\nG91 G28 X0. Y0.\nG91 G28 B0. C0.\nG90\nT1 M6\nS8000 M3\n"
+              "G0 B30. C45.\nG43.4 H1\nG0 X10. Y5. Z50. B30. C45.\nG1 Z2. F500.\nG1 X40. B20. C60. F800.\nG0 Z50.\nG49\n"
+              "G53 G0 Z0.\nG53 G0 X-200. Y-100.\nM30\n%\n", false},
+      {"haas", "%\nO1000\nG90 G17 G21 G94\nG53 G0 Z0.\nG91 G28 X0. Y0.\nG91 G28 B0. C0.\nG90\nT1 M6\nS8000 M3\n"
+               "G0 B30. C45.\nG234 H1\nG0 X10. Y5. Z50. B30. C45.\nG1 Z2. F500.\nG1 X40. B20. C60. F800.\nG0 Z50.\nG49\n"
+               "G53 G0 Z0.\nG53 G0 X-200. Y-100.\nM30\n%\n", false},
+      {"linuxcnc", "%\nG21 G90 G17 G94\nG53 G0 Z0\nG53 G0 X0 Y0\nG53 G0 B0 C0\nT1 M6\nG43 H1\nS8000 M3\nG0 B30 C45\nM428\n"
+                   "G0 X10 Y5 Z50 B30 C45\nG1 Z2 F500\nG1 X40 B20 C60 F800\nG0 Z50\nM429\nG53 G0 Z0\nG53 G0 X-200 Y-100\nM2\n%\n",
+       false},
+      {"siemens", "G710 G90 G17 G94\nSUPA G0 Z0\nSUPA G0 X0 Y0\nSUPA G0 B0 C0\nT1 M6\nD1\nS8000 M3\nG0 B30 C45\nTRAORI\n"
+                  "G0 X10 Y5 Z50 B30 C45\nG1 Z2 F500\nG1 X40 B20 C60 F800\nG0 Z50\nTRAFOOF\nSUPA G0 Z0\nSUPA G0 X-200 Y-100\nM30\n",
+       false},
+      {"heidenhain", "0 BEGIN PGM CAM MM\n1 TOOL CALL 1 Z S8000\n2 M140 MB MAX\n3 L X+0 Y+0 FMAX M91\n4 L B+30 C+45 FMAX\n"
+                     "5 M128\n6 L X+10 Y+5 Z+50 B+30 C+45 FMAX M3\n7 L Z+2 F500\n8 L X+40 B+20 C+60 F800\n9 L Z+50 FMAX\n"
+                     "10 M129\n11 L Z+0 FMAX M91\n12 L X-200 Y-100 FMAX M91\n13 END PGM CAM MM\n", true},
+  };
+  const std::vector<std::string_view> targets = {"iso", "siemens", "heidenhain", "linuxcnc", "haas"};
+  for (const row& r : rows)
+    for (const std::string_view target_name : targets) {
+      const pg::dialect source = *pg::parse_dialect(r.dialect), target = *pg::parse_dialect(target_name);
+      CAPTURE(r.dialect, target_name);
+      translate_options options;
+      options.output_dialect = target;
+      options.setup = setup;
+      const auto t = make_translator(from.model(), to.model(), source, "cam", options, report_detail::exceptions_only);
+      string_sink out;
+      const stream_result run = stream_text(*t, std::string(r.text), source, "cam", target, out);
+      CAPTURE(out.text);
+      std::string errors;
+      for (const auto& e : t->result().errors) errors += e.to_string() + "\n";
+      CAPTURE(errors);
+      REQUIRE(run.ok(*t));
+      const pg::read_result in = pg::read(source, std::string(r.text), "cam");
+      const pg::read_result back = pg::read(target, out.text, "written");
+      REQUIRE(back.ok());
+      // Moves in machine coordinates, in order: retract, park, [positioning], retract, park.
+      std::vector<const pg::block*> machine_moves;
+      for (const auto& b : back.parsed.blocks)
+        if (b.machine_coordinates && b.axes.has_linear()) machine_moves.push_back(&b);
+      REQUIRE(machine_moves.size() == 4);
+      CHECK(machine_moves[0]->axes.z_mm == (r.tool_axis_limit ? to.model().linear(2).travel.upper_mm : -10.0));
+      CHECK((machine_moves[1]->axes.x_mm == 100.0 && machine_moves[1]->axes.y_mm == -50.0));
+      CHECK(machine_moves[2]->axes.z_mm == -10.0);
+      CHECK((machine_moves[3]->axes.x_mm == -100.0 && machine_moves[3]->axes.y_mm == -150.0));
+      // The positioning B30 C45: rotary words alone, with tracking off, for the same tool axis.
+      const vec3 u_source = chain_axis(from.model(), {0, 30, 45});
+      std::optional<std::array<double, 3>> positioned;
+      bool tracking = false;
+      for (const auto& b : back.parsed.blocks) {
+        if (b.tcp) tracking = *b.tcp;
+        if (b.axes.has_rotary() && !b.axes.has_linear() && !tracking && b.axes.a_deg != 0.0)
+          positioned = std::array<double, 3>{b.axes.a_deg.value_or(0), b.axes.b_deg.value_or(0), b.axes.c_deg.value_or(0)};
+      }
+      REQUIRE(positioned);
+      CHECK(norm(chain_axis(to.model(), *positioned) - setup.rotation * u_source) <= axis_tolerance);
+      // Under tracking: the same tips, mapped by the setup, and the same tool axes.
+      std::string trouble;
+      std::vector<motion> s = motions_of(in.parsed, from.model(), false, trouble);
+      std::vector<motion> w = motions_of(back.parsed, to.model(), false, trouble);
+      // the positioning is the one move without tracking on either side
+      const auto tracked = [](std::vector<motion>& ms) {
+        std::erase_if(ms, [](const motion& m) { return m.rotary_deg == std::array<double, 3>{} || m.tip_mm == vec3{}; });
+      };
+      tracked(s), tracked(w);
+      REQUIRE(s.size() == 4);
+      REQUIRE(w.size() == 4);
+      for (std::size_t k = 0; k < s.size(); ++k) {
+        CAPTURE(k);
+        CHECK(norm(w[k].tip_mm - setup.map_point(s[k].tip_mm)) <= tip_tolerance_mm);
+        CHECK(norm(w[k].axis - setup.rotation * s[k].axis) <= axis_tolerance);
+      }
+    }
+}

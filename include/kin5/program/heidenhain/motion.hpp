@@ -126,6 +126,7 @@ class word_checks {
     else if (m == 129) t.tcp = false;
     else {
       if (m == 91 || m == 92) t.machine_coordinates = true;
+      if (m == 92) t.machine_reference = machine_position::builder_position;
       read_machine_function(t, m, {.m7_mist = false, .m13_m14 = true});
     }
   }

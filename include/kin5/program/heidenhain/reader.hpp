@@ -276,8 +276,19 @@ class block_reader : public word_checks {
     std::vector<word> ws = scan_.words(i, b_.comment, stray_);
     block m = b_;
     bool understood = true;
-    for (word& w : ws) {
+    for (std::size_t k = 0; k < ws.size(); ++k) {
+      word& w = ws[k];
       long long n = 0;
+      // `M140 MB MAX`: retract along the tool axis to the end of its travel (TNC 640 User's
+      // Manual, "Retraction in the tool axis: M140"); a distance (`MB 50`) is not read.
+      if (w.key == "M" && w.value == 140.0 && k + 2 < ws.size() && ws[k + 1].key == "MB" && !ws[k + 1].value &&
+          !ws[k + 1].expression && ws[k + 2].key == "MAX" && !ws[k + 2].value && !ws[k + 2].expression &&
+          !m.machine_coordinates) {
+        m.machine_coordinates = true;
+        m.machine_reference = machine_position::tool_axis_limit;
+        k += 2;
+        continue;
+      }
       if (w.key == "M" && w.value && *w.value >= 0 && *w.value <= 9999 &&
           *w.value == static_cast<double>(static_cast<long long>(*w.value)) && integer_word(w, n)) {
         set_m(m, n);
@@ -301,8 +312,8 @@ class block_reader : public word_checks {
     for (const word& w : ws)
       if (w.key != "M" || !w.value) {
         const std::string text = w.written.empty() ? w.key : w.written;
-        error(w.pos, "'" + text + "' in an M block is not supported (M140 MB retracts, M120 looks ahead: the "
-                     "machine would do something else)");
+        error(w.pos, "'" + text + "' in an M block is not supported (M140 MB retracts by a distance, M120 looks "
+                     "ahead: the machine would do something else; kin5 reads M140 MB MAX)");
         return;
       }
   }

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../machine_position_text.hpp"
 #include "../cutter_radius.hpp"
 #include "../lexing.hpp"
 #include "../machine_functions.hpp"
@@ -101,7 +102,12 @@ class writer {
     if (!change && (((b.tool || b.tool_name) && same_) || b.spindle_rpm)) tool_call(b, moves, kept, bi, same_);
     if (b.tool) selected_tool_ = *b.tool, selected_name_.reset();
     if (b.tool_name) selected_name_ = *b.tool_name, selected_tool_.reset();
-    const std::string m_words = m_functions(b, bi) + end_word(b);
+    const bool limit = b.machine_coordinates && b.machine_reference == machine_position::tool_axis_limit;
+    if (b.machine_coordinates && b.machine_reference != machine_position::machine_zero && !limit &&
+        !(same_ && b.machine_reference == machine_position::builder_position && has_m(b, 92)))
+      fail(b, bi, unwritable_machine_position(b));
+    if (limit && (moves || b.tcp)) fail(b, bi, "M140 MB MAX with a move or a TCP switch in one block");
+    const std::string m_words = (limit ? " M140 MB MAX" : "") + m_functions(b, bi) + end_word(b);
     if (b.tcp && options_.tcp) {
       // A chosen form replaces a read FUNCTION TCPM's options, which mean what M128 means.
       if (same_ && *b.tcp) std::erase_if(kept, is_tcpm_option);
@@ -450,7 +456,7 @@ class writer {
     if (!why.empty()) fail(b, bi, why);
     for (int m : ms)
       if (!(m == 6 && (b.tool || b.tool_name || !same_))) m_words += " M" + std::to_string(m);  // TOOL CALL is the change: no M6
-    if (b.machine_coordinates &&
+    if (b.machine_coordinates && b.machine_reference != machine_position::tool_axis_limit &&
         std::find_if(b.m_codes.begin(), b.m_codes.end(), [](int m) { return m == 91 || m == 92; }) == b.m_codes.end())
       m_words += " M91";
     if (b.tcp && !function_tcpm()) m_words += *b.tcp ? " M128" : " M129";

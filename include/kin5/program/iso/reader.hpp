@@ -594,7 +594,11 @@ class basic_reader {
       if (g == 490) b.state.length_compensation = false;
     } else if (g == 530 || g == 280 || g == 300) {
       b.machine_coordinates = true;
-      keep();
+      // The word is the field: the writer spells it back (G53, G28, G30), so it is not kept.
+      if (g != 530)
+        b.machine_reference = g == 280 ? (Own::stored_homes ? machine_position::stored_position : machine_position::reference_point)
+                                       : (Own::stored_homes ? machine_position::second_stored_position
+                                                            : machine_position::second_reference);
     } else {
       refused_g(b, w, g, l);
     }

@@ -81,6 +81,9 @@ struct no_own_words {
   /// (FANUC Custom Macro B; Haas), read as an alarm stop; 0 for none (LinuxCNC's #3000 is a
   /// parameter like the others).
   static constexpr long alarm_parameter = 3000;
+  /// Whether G28 / G30 go to positions the control keeps in parameters (LinuxCNC #5161–#5166,
+  /// #5181–#5186) rather than to the machine's reference points (Fanuc, Haas).
+  static constexpr bool stored_homes = false;
   static interp::parameter_rules parameter_rules() { return macro_parameter_rules(); }
   static parsed_expression read_value(std::string_view text, std::size_t line, std::size_t column) {
     return iso::read_value(text, line, column);

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../machine_position_text.hpp"
 #include "../cutter_radius.hpp"
 #include "../machine_functions.hpp"
 #include "../number.hpp"
@@ -69,6 +70,9 @@ struct write_options {
   /// control (Mitsubishi M700V Programming Manual §5.3: a point there is dropped, on a Fanuc an
   /// alarm); a speed with a fraction is an error. LinuxCNC's writer, whose S is a real, turns it off.
   bool whole_spindle_speed = true;
+  /// G28 and G30 go to positions the control keeps in parameters (LinuxCNC), not to the
+  /// machine's reference points (Fanuc, Haas): which moves in machine coordinates they write.
+  bool stored_homes = false;
   /// Frame a program read in another dialect (`%`, `O…`, …, `%`); LinuxCNC's writer, which
   /// frames its own way, turns it off.
   bool frame = true;
@@ -310,7 +314,7 @@ class writer {
       else if (k.empty() || to_upper(k.front()) != 'G') tail_.push_back(k);
       else machine_word = kept_g_word(k) || machine_word;
     }
-    if (b.machine_coordinates && !machine_word) words_.push_back("G53");
+    if (b.machine_coordinates && !machine_word) words_.push_back(machine_code(b));
     if (b.state.work_offset) work_offset_words(b, *b.state.work_offset);
     if (b.arc && b.arc->plane != plane_) {
       plane_ = b.arc->plane;
@@ -361,6 +365,21 @@ class writer {
   }
 
   /// Writes kept G word `k`, following the plane it selects; true for a machine-coordinate word.
+  /// The G code of block `b` in machine coordinates: G53 (machine zero), G28 and G30 (the
+  /// reference points; with `write_options::stored_homes`, the positions the control keeps).
+  std::string machine_code(const block& b) const {
+    const bool stored = options_.stored_homes;
+    switch (b.machine_reference) {
+      case machine_position::machine_zero: return "G53";
+      case machine_position::reference_point: if (!stored) return "G28"; break;
+      case machine_position::second_reference: if (!stored) return "G30"; break;
+      case machine_position::stored_position: if (stored) return "G28"; break;
+      case machine_position::second_stored_position: if (stored) return "G30"; break;
+      case machine_position::builder_position: case machine_position::tool_axis_limit: break;
+    }
+    fail(b, unwritable_machine_position(b));
+  }
+
   bool kept_g_word(const std::string& k) {
     words_.push_back(k);
     std::string_view digits = std::string_view(k).substr(1);

@@ -92,6 +92,10 @@ class own_words {
   /// #3000 is one of the program's parameters (#31–#5000): no assignment stops the program.
   static constexpr long alarm_parameter = 0;
 
+  /// G28 / G30 go to the positions in parameters #5161–#5166 / #5181–#5186 (User Manual, "G28,
+  /// G28.1", "G30, G30.1"), which the control keeps, not the program.
+  static constexpr bool stored_homes = true;
+
   using syntax = statements;
   /// #1–#30 local to a call, #31–#5000 the program's, named ones (parameter_rules.hpp).
   static interp::parameter_rules parameter_rules() { return linuxcnc::parameter_rules(); }

@@ -127,6 +127,7 @@ class writer {
     o.decimal_point = false;
     o.frame = false;  // framed here, by `%` lines only
     o.whole_spindle_speed = false;  // S is a real (LinuxCNC User Manual, "G-code Overview", "S")
+    o.stored_homes = true;          // G28 / G30: parameters #5161–#5166 / #5181–#5186 ("G28, G28.1")
     return o;
   }
 

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../machine_position_text.hpp"
 #include "../cutter_radius.hpp"
 #include "../lexing.hpp"
 #include "../machine_functions.hpp"
@@ -312,6 +313,8 @@ class writer {
       }
     }
     if (b.state.work_offset) work_offset_word(line, b, file, *b.state.work_offset);
+    if (b.machine_coordinates && b.machine_reference != machine_position::machine_zero)
+      fail(b, file, unwritable_machine_position(b));
     if (b.machine_coordinates) detail::append_word(line, "SUPA");
   }
 

@@ -89,6 +89,7 @@ void add_m_codes(std::string& text, block& b) {
     } else {
       read_machine_function(b, m, {.m7_mist = false, .m13_m14 = true});
       if (m == 91 || m == 92) b.machine_coordinates = true;
+      if (m == 92) b.machine_reference = machine_position::builder_position;
     }
     text += gap() + draw_case("M") + std::to_string(m);
   }
@@ -266,9 +267,16 @@ item draw_item(modal& m) {
       }
       break;
     }
-    case 9: {  // M functions alone
-      t = draw_case("M") + std::to_string(*rc::gen::element(3, 5, 9, 30, 91, 128, 129));
+    case 9: {  // M functions alone; M140 MB MAX, the retract along the tool axis
       b.m_codes.clear();
+      if (*rc::gen::inRange(0, 6) == 0) {
+        t = draw_case("M") + "140" + gap() + draw_case("MB") + gap() + draw_case("MAX");
+        b.machine_coordinates = true;
+        b.machine_reference = machine_position::tool_axis_limit;
+        if (*rc::gen::arbitrary<bool>()) t += gap() + draw_case("M") + "9", b.m_codes.push_back(9);
+        break;
+      }
+      t = draw_case("M") + std::to_string(*rc::gen::element(3, 5, 9, 30, 91, 128, 129));
       const int first = std::stoi(t.substr(1));
       const auto take = [&b](int m) {
         read_machine_function(b, m, {.m7_mist = false, .m13_m14 = true});

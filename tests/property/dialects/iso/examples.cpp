@@ -50,7 +50,8 @@ TEST_CASE("iso: a Fanuc post style program with G43.4, homing and arcs") {
   CHECK((b[2].state.radius_compensation == cutter_side::off && b[2].state.working_plane == arc_plane::xy &&
          b[2].state.distance == distance_mode::absolute));
   CHECK((b[2].tcp == false && b[2].metric == true));
-  CHECK((b[3].machine_coordinates && b[3].kept_words == strings{"G28"} && b[3].axes.z_mm == 0.0));
+  CHECK((b[3].machine_coordinates && b[3].machine_reference == machine_position::reference_point &&
+         b[3].kept_words.empty() && b[3].axes.z_mm == 0.0));
   CHECK(b[3].state.distance == distance_mode::incremental);
   CHECK((b[3].m_codes.empty() && b[3].state.spindle == spindle_rotation::stopped));
   CHECK((b[4].machine_coordinates && b[4].axes.b_deg == 0.0));
@@ -165,9 +166,10 @@ TEST_CASE("iso: a line not understood is refused and changes nothing, spaced kep
   CHECK(b[2].arc->plane == arc_plane::xy);
   CHECK(b[2].arc->centre_mm == kin5::vec3{5, 0, 0});
   CHECK(b[4].program_begin == "004200404");
-  const read_result ok = iso::read("G0 X0 Y0 Z0\nG 28 Z0\nO004200404\n", "p.nc");
+  const read_result ok = iso::read("G0 X0 Y0 Z0\nG 80 G 28 Z0\nO004200404\n", "p.nc");
   REQUIRE(ok.ok());
-  CHECK(iso::write(ok.parsed) == "G0 X0. Y0. Z0.\nG 28 Z0.\nO004200404\n");
+  // G 28 is `machine_reference`, spelled by the writer; G 80 is kept as written.
+  CHECK(iso::write(ok.parsed) == "G0 X0. Y0. Z0.\nG 80 G28 Z0.\nO004200404\n");
 }
 
 TEST_CASE("iso: a parameter in a whole-number word reads as the control rounds it") {

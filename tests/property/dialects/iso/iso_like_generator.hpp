@@ -293,8 +293,8 @@ inline item draw_item(state& st, const flavour& f) {
       const char* g = kind == 0 ? "G53" : kind == 2 ? "G30" : "G28";
       b.machine_coordinates = true;
       if (kind == 3) it.g91 = st.g91 = true;  // the homing idiom `G91 G28 Z0`
-      b.kept_words.push_back(draw_case(g));
-      it.words.push_back(b.kept_words.back());
+      if (kind != 0) b.machine_reference = kind == 2 ? machine_position::second_reference : machine_position::reference_point;
+      it.words.push_back(draw_case(g));  // the word is `machine_reference`, not a kept word
       const double z = draw_decimal(-500, 500, 3);
       b.axes.z_mm = z;
       it.words.push_back(spell_word('Z', z, 3, true));
