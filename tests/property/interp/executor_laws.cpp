@@ -469,6 +469,8 @@ TEST_CASE("executor: a return that is only for calls does nothing in the program
   const auto plain = run("L s\nP a\nR\nC s\nE\n");
   CHECK_FALSE(plain.ok);
   CHECK(plain.error == "3:1: returns from a call, but no call is open");
+}
+
 TEST_CASE("executor: counting loops, optional jumps, sections between two labels, block labels", "[executor]") {
   // FOR: the counter from its first value up by 1 to the last, evaluated once; none when past it.
   CHECK(run("F #1 1 3\nA #2 = #1\nEF\nP end\n").lines == lines({"A #2 = #1", "A #2 = #1", "A #2 = #1", "P end"}));
