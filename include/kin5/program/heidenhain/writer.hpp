@@ -104,7 +104,7 @@ class writer {
     if (b.tool_name) selected_name_ = *b.tool_name, selected_tool_.reset();
     const bool limit = b.machine_coordinates && b.machine_reference == machine_position::tool_axis_limit;
     if (b.machine_coordinates && b.machine_reference != machine_position::machine_zero && !limit &&
-        !(same_ && b.machine_reference == machine_position::builder_position && has_m(b, 92)))
+        !(same_ && b.machine_reference == machine_position::builder_position && std::find(b.m_codes.begin(), b.m_codes.end(), 92) != b.m_codes.end()))
       fail(b, bi, unwritable_machine_position(b));
     if (limit && (moves || b.tcp)) fail(b, bi, "M140 MB MAX with a move or a TCP switch in one block");
     const std::string m_words = (limit ? " M140 MB MAX" : "") + m_functions(b, bi) + end_word(b);
