@@ -91,20 +91,25 @@ TEST_CASE("heidenhain: a program in NX and hand-edit style") {
   CHECK((b[24].program_end == "BRACKET" && b[24].metric == true));
 }
 
-TEST_CASE("heidenhain: M140 MB MAX is a retract along the tool axis, M92 the builder's point; both write back") {
-  const std::string text = "0 BEGIN PGM T MM\n1 M140 MB MAX M9\n2 L X-450 Y-10 FMAX M92\n3 L Z+0 R0 FMAX M91\n4 END PGM T MM\n";
+TEST_CASE("heidenhain: M140 MB MAX is a retract along the tool axis, M92 the builder's point, both written back") {
+  const std::string text = "0 BEGIN PGM T MM\n1 M140 MB MAX M9 M117\n2 L X-450 Y-10 FMAX M92\n3 L Z+0 R0 FMAX M91\n4 END PGM T MM\n";
   const read_result r = heidenhain::read(text, "t.h");
   REQUIRE(r.ok());
   const auto& b = r.parsed.blocks;
   CHECK((b[1].machine_coordinates && b[1].machine_reference == machine_position::tool_axis_limit && b[1].axes.empty()));
-  CHECK(b[1].m_codes == std::vector<int>{9});
+  // M9 beside it is the coolant switched off (a state word), M117 the machine maker's number.
+  CHECK((b[1].state.coolant_flood == false && b[1].state.coolant_mist == false));
+  CHECK(b[1].m_codes == std::vector<int>{117});
   CHECK((b[2].machine_coordinates && b[2].machine_reference == machine_position::builder_position));
   CHECK((b[3].machine_coordinates && b[3].machine_reference == machine_position::machine_zero));
-  const read_result back = heidenhain::read(heidenhain::write(r.parsed), "t.h");
+  const std::string written = heidenhain::write(r.parsed);
+  CHECK_THAT(written, Catch::Contains("M140 MB MAX M9 M117"));
+  const read_result back = heidenhain::read(written, "t.h");
   REQUIRE(back.ok());
   for (std::size_t k = 0; k < b.size(); ++k) {
     CHECK(back.parsed.blocks[k].machine_reference == b[k].machine_reference);
     CHECK(back.parsed.blocks[k].m_codes == b[k].m_codes);
+    CHECK(back.parsed.blocks[k].state == b[k].state);
   }
   // Another dialect has no M140 MB MAX, nor M92: a bare write refuses them, never a G53.
   CHECK_THROWS_WITH(iso::write(r.parsed), Catch::Contains("M140 MB MAX"));

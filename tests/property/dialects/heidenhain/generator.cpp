@@ -273,7 +273,14 @@ item draw_item(modal& m) {
         t = draw_case("M") + "140" + gap() + draw_case("MB") + gap() + draw_case("MAX");
         b.machine_coordinates = true;
         b.machine_reference = machine_position::tool_axis_limit;
-        if (*rc::gen::arbitrary<bool>()) t += gap() + draw_case("M") + "9", b.m_codes.push_back(9);
+        // M functions beside it: state words (M5, M9, M13) and the machine maker's numbers alike;
+        // no M91/M92 (another machine position) nor M128/M129 (no TCP switch in an M140 block).
+        const auto codes = *rc::gen::container<std::vector<int>>(*rc::gen::inRange<std::size_t>(0, 3),
+                                                                 rc::gen::element(0, 3, 5, 9, 13, 117));
+        for (int m : codes) {
+          t += gap() + draw_case("M") + std::to_string(m);
+          read_machine_function(b, m, {.m7_mist = false, .m13_m14 = true});
+        }
         break;
       }
       t = draw_case("M") + std::to_string(*rc::gen::element(3, 5, 9, 30, 91, 128, 129));
