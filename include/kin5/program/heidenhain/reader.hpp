@@ -475,10 +475,9 @@ class block_reader : public word_checks {
                head == "APPR" || head == "DEP" || head == "FL" || head == "FLT" || head == "FC" || head == "FCT" ||
                head == "FPOL" || head == "CCA") {
       error(i, "'" + head + "' is not supported");
-    } else if (head.size() == 1 && is_axis_letter(head[0]) && scan_.has_axis_word(i)) {
-      error(i, "axis word '" + head + "' without a motion keyword");
-    } else if (head.size() == 2 && head[0] == 'I' && is_axis_letter(head[1]) && scan_.has_axis_word(i)) {
-      error(i, "incremental positioning (" + head + ") is not supported");
+    } else if ((head.size() == 1 || (head.size() == 2 && head[0] == 'I')) && is_axis_letter(head.back()) &&
+               scan_.has_axis_word(i)) {
+      error(i, "axis word '" + head + "' without a motion keyword");  // IX too: an L, C or CC reads it
     } else if (scan_.has_axis_word(i)) {
       error(i, "unknown keyword '" + t_.upper.substr(i, scan_.run_end(i) - i) + "' in a block with axis words");
       b_.passthrough = true;
