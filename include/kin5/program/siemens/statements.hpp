@@ -23,7 +23,9 @@
 /// only, so a line that is neither (`N10 G1 X… Y…`) costs a few byte tests.
 #pragma once
 
+#include <charconv>
 #include <cstddef>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -81,6 +83,8 @@ inline std::optional<label_at> line_label(std::string_view t) {
 
 /// Whether `M2`, `M02`, `M30` or `M17` stands in `t` as an M word (outside comments and strings).
 inline bool has_end_word(std::string_view t) {
+  // Most lines hold no M at all: two memchr calls settle them without the byte loop below.
+  if (!std::memchr(t.data(), 'M', t.size()) && !std::memchr(t.data(), 'm', t.size())) return false;
   bool in_string = false;
   for (std::size_t i = 0; i < t.size(); ++i) {
     const char c = t[i];
@@ -115,7 +119,10 @@ class statements {
     const std::string_view t = line.text;
     std::size_t i = lexing::skip_blanks(t, 0);
     if (const auto n = detail::block_number_at(t, i)) {
-      s.block_label = "N" + std::to_string(*n);
+      if (labels_wanted_) {
+        char name[24] = {'N'};  // `N` and at most 13 digits: within the string's own buffer, no allocation
+        s.block_label.assign(name, std::to_chars(name + 1, name + sizeof name, *n).ptr);
+      }
       i = lexing::skip_blanks(t, i);
     }
     if (i < t.size() && (is_letter(t[i]) || t[i] == '_') && i + 1 < t.size() && (is_letter(t[i + 1]) || t[i + 1] == '_')) {
@@ -131,12 +138,18 @@ class statements {
     if (s.kind == interp::statement_kind::ordinary) {
       if (s.label.empty() && !s.block_label.empty()) s.label = std::move(s.block_label), s.block_label.clear();
       s.ends_program = detail::has_end_word(t);
+    } else if (s.kind != interp::statement_kind::label) {
+      labels_wanted_ = true;  // a jump, call or block may search labels from now on
     }
     return s;
   }
 
  private:
   using K = interp::statement_kind;
+
+  /// Block numbers become labels (`N40`) once a statement that may search labels was seen: the
+  /// executor indexes labels only for such a statement, so a program without one makes none.
+  mutable bool labels_wanted_ = false;
 
   static interp::statement& refuse(interp::statement& s, const text_line& line, std::size_t at, std::string why,
                                    std::size_t length = 1) {
