@@ -86,20 +86,20 @@ class basic_reader {
           error(e.column, syntax.explain(e.message));
         });
     if (ran && ended && call_lines_->empty()) {
+      // The lines after the end, split as the executor splits them (LF, CRLF or a lone CR).
       std::size_t offset = static_cast<std::size_t>(ended->text.data() - text.data()) + ended->text.size();
-      offset = text.find('\n', offset);
       std::size_t number = ended->number;
-      while (offset != std::string_view::npos && ++offset < text.size()) {
-        const std::size_t lf = text.find('\n', offset);
-        std::string_view s = text.substr(offset, (lf == std::string_view::npos ? text.size() : lf) - offset);
-        if (const std::size_t cr = s.find('\r'); cr != std::string_view::npos) s = s.substr(0, cr);
-        const text_line line{s, ++number};
+      while (offset < text.size()) {
+        offset += text[offset] == '\r' && offset + 1 < text.size() && text[offset + 1] == '\n' ? 2 : 1;
+        if (offset >= text.size()) break;
+        const std::size_t end = std::min(text.find_first_of("\r\n", offset), text.size());
+        const text_line line{text.substr(offset, end - offset), ++number};
         const interp::statement st = syntax.statement_of(line);
         if (st.kind != interp::statement_kind::ordinary || st.error || st.condition || !st.assignments.empty() ||
             syntax.starts_called_part(st))
           break;
         read_line(line, st);
-        offset = lf;
+        offset = end;
       }
     }
     store_ = nullptr;

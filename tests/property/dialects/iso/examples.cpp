@@ -136,6 +136,17 @@ TEST_CASE("iso: comments keep non-UTF-8 bytes, lone CR ends lines, blank lines a
   CHECK(r.parsed.blocks[1].where == source_location{"c.nc", 4, 1});
 }
 
+TEST_CASE("iso: the lines after M30 are read, whatever ends them, up to a program of the file") {
+  for (const std::string eol : {"\n", "\r\n", "\r"}) {
+    const read_result r = iso::read("G0 X1." + eol + "M30" + eol + eol + "G0 X2." + eol + "%" + eol + "O100" + eol + "G0 X3." + eol, "c.nc");
+    REQUIRE(r.errors.empty());
+    REQUIRE(r.parsed.blocks.size() == 4);
+    CHECK(r.parsed.blocks[2].axes.x_mm == 2.0);
+    CHECK(r.parsed.blocks[2].where == source_location{"c.nc", 4, 1});
+    CHECK(r.parsed.blocks[3].framing);
+  }
+}
+
 TEST_CASE("iso: blocks from another dialect") {
   program p;
   p.language = id_of<heidenhain::dialect>();

@@ -239,7 +239,8 @@ item draw_item(state& st) {
       it.words.push_back(spell_word('P', s, 2));
       break;
     }
-    case 13: {  // an abort: the line's last comment, so no comment after it
+    case 13: {  // an abort: the line's last comment, so no comment after it (and no G90/G91)
+      st.g91 = g91_before;
       const std::string m = draw_words();
       b.alarm = alarm_stop{m, std::nullopt};
       it.words.push_back("(" + draw_blanks() + draw_case("ABORT") + draw_blanks() + "," + draw_blanks() + m +
