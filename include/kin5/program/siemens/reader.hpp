@@ -450,8 +450,8 @@ class line_reader {
     line_parse p;
     p.b = std::move(b);
     std::string_view text = line.text;
-    if (const auto label = line_label(text); label && !is_blank_or_comment(text.substr(label->end))) {
-      unlabelled_.assign(text);  // `MARK: G1 X10`: the words after the label (statements.hpp took it)
+    if (const auto label = line_label(text)) {
+      unlabelled_.assign(text);  // `MARK: G1 X10`, `MARK: ;…`: the words after the label (statements.hpp took it)
       unlabelled_.replace(label->begin, label->end - label->begin, label->end - label->begin, ' ');
       text = unlabelled_;
     }
@@ -471,11 +471,6 @@ class line_reader {
   std::vector<word> words_;  // reused from line to line
   std::string unlabelled_;   // a labelled line with its label blanked
   variables parameters_;
-
-  static bool is_blank_or_comment(std::string_view rest) {
-    const std::size_t k = lexing::skip_blanks(rest, 0);
-    return k == rest.size() || rest[k] == ';';
-  }
 };
 
 }  // namespace kin5::program::siemens::detail
