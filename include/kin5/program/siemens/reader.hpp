@@ -424,9 +424,12 @@ class line_reader {
  public:
   line_reader(const std::string& file_path, interp::parameter_store& store) : file_(file_path), parameters_(store) {}
 
-  /// Reads `line` into a block for `on_block` (nothing for an empty line).
+  /// Reads `line` into a block for `on_block` (nothing for an empty line, nor for a label alone,
+  /// `MARK:` or `N40 MARK:`: it only marks the line, for the jumps and repeats that name it).
   void read(const text_line& line, read_result& diagnostics, const block_sink& on_block) {
     if (line.text.empty()) return;
+    if (const auto label = line_label(line.text); label && lexing::skip_blanks(line.text, label->end) == line.text.size())
+      return;
     block b;
     const std::size_t first = lexing::skip_blanks(line.text, 0);
     b.where = {file_, line.number, (first < line.text.size() ? first : 0) + 1};

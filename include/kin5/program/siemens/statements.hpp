@@ -5,8 +5,7 @@
 /// "Repeat program section", "Control structures"; docs/dialects/siemens.md, "Control flow").
 /// | line | statement |
 /// |---|---|
-/// | `N40 MARK: …` | ordinary, defining labels `MARK` and `N40` (a label: two letters or `_` first) |
-/// | `N40 MARK:`, `MARK:` alone | label: defines them, gives no block (with a comment after it: ordinary) |
+/// | `N40 MARK: …`, `MARK:` | ordinary, defining labels `MARK` and `N40` (a label: two letters or `_` first); the reader makes no block of a label alone |
 /// | `GOTOF l`, `GOTOB l`, `GOTO l`, `GOTOC l` | jump: forward, backward, either; `GOTOC` goes on when `l` is missing |
 /// | `IF c GOTOF l` | conditional jump (one line) |
 /// | `IF c` … `ELSE` … `ENDIF` | IF branches, nested |
@@ -129,10 +128,6 @@ class statements {
                                     "REPEAT start end P=n)");
         s.label = std::move(l->name);
         i = lexing::skip_blanks(t, l->end);
-        if (i == t.size()) {  // a label alone (after its block number) makes no block
-          s.kind = K::label;
-          return s;
-        }
       }
       if (i < t.size() && is_letter(t[i])) control(s, line, i);
     }

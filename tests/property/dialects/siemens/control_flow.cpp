@@ -222,6 +222,8 @@ TEST_CASE("siemens control flow: each construct", "[siemens][flow]") {
   CHECK(texts(labels) == std::vector<std::string>{"LB2: ; note", "M30"});
   CHECK(labels.parsed.blocks[0].comment == "note");
   CHECK(!labels.parsed.blocks[0].passthrough);
+  // A label alone is still a line: REPEATB runs it (nothing), not the lines after it.
+  CHECK(texts(read_ok("PA:\nG1 X1\nREPEATB PA P=2\nG1 X3\nM30\n")) == std::vector<std::string>{"G1 X1", "G1 X3", "M30"});
   // After the end, the section is kept as text: never read, never run.
   CHECK(read_ok("M30\nSEC:\nG1 X=R99\n").parsed.blocks[2].passthrough);
   // The end as the word reader reads it, a blank or a sign before its value (it ran on before).
