@@ -48,10 +48,14 @@ TEST_CASE("read and write dispatch on the dialect value", "[io]") {
 }
 
 TEST_CASE("read reports errors with their location, in any dialect", "[io]") {
-  const auto s = kp::read(kp::id_of<kp::siemens::dialect>(), "N10 G1 X1\nN20 G91 X1\n", "bad.mpf");
+  const auto s = kp::read(kp::id_of<kp::siemens::dialect>(), "N10 G1 X1\nN20 TRANS X1\n", "bad.mpf");
   REQUIRE(s.errors.size() == 1);
   CHECK(s.errors[0].where.line == 2);
   CHECK(s.errors[0].where.column == 5);
+  // G91 after an absolute X is read, to the position it reaches (it was refused before).
+  const auto g91 = kp::read(kp::id_of<kp::siemens::dialect>(), "N10 G1 X1\nN20 G91 X1\n", "ok.mpf");
+  REQUIRE(g91.ok());
+  CHECK(g91.parsed.blocks[1].axes.x_mm == 2);
   const auto a = kp::read(kp::id_of<kp::apt::dialect>(), "GOTO/1,2\n", "bad.cls");
   REQUIRE(a.errors.size() == 1);
   CHECK(a.errors[0].where.line == 1);

@@ -111,7 +111,7 @@ case "$name" in
     words dash.h >c
     cmp -s a c || report "-o - differs from -o file"
     # Errors in stdin are named <stdin>.
-    printf 'N10 TRAORI\nN20 G91 X1\n' | "$exe" translate --from sajo-12000p --to dmu-80p $g54 - >out 2>err
+    printf 'N10 TRAORI\nN20 TRANS X1\n' | "$exe" translate --from sajo-12000p --to dmu-80p $g54 - >out 2>err
     [ $? = 2 ] || report "bad stdin: exit code"
     grep -q '^<stdin>:2:5: error: ' err || { report "bad stdin: no <stdin>:2:5 error"; show err; }
     ;;
@@ -124,10 +124,10 @@ case "$name" in
     ;;
   bad-input)
     # Errors at known places, every one reported as FILE:LINE:COL: error: at the first byte of
-    # the offending word: a number that is not one (X1.2.3), an unknown word (YY), incremental
-    # positioning (G91, not supported).
+    # the offending word: a number that is not one (X1.2.3), an unknown word (YY), a frame
+    # change with motion (TRANS, not supported).
     printf '%s\n' 'N10 G17 G90 G94' 'N20 TRAORI' 'N30 G1 X1.2.3 Y0 Z0 F100' 'N40 G1 X0 Y0 Z5' \
-      'N50 G1 X1 Y2 Z3 YY F100' 'N60 G1 X0 Y0 G91' 'N70 M30' >bad.mpf
+      'N50 G1 X1 Y2 Z3 YY F100' 'N60 G1 X0 Y0 TRANS' 'N70 M30' >bad.mpf
     echo keep >bad.h
     cp bad.h before.h
     run 2 translate --from sajo-12000p --to dmu-80p $g54 -o bad.h bad.mpf

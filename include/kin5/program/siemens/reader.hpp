@@ -424,9 +424,12 @@ class line_reader {
  public:
   line_reader(const std::string& file_path, interp::parameter_store& store) : file_(file_path), parameters_(store) {}
 
-  /// Reads `line` into a block for `on_block` (nothing for an empty line).
+  /// Reads `line` into a block for `on_block` (nothing for an empty line, nor for a label alone,
+  /// `MARK:` or `N40 MARK:`: it only marks the line, for the jumps and repeats that name it).
   void read(const text_line& line, read_result& diagnostics, const block_sink& on_block) {
     if (line.text.empty()) return;
+    if (const auto label = line_label(line.text); label && lexing::skip_blanks(line.text, label->end) == line.text.size())
+      return;
     block b;
     const std::size_t first = lexing::skip_blanks(line.text, 0);
     b.where = {file_, line.number, (first < line.text.size() ? first : 0) + 1};
@@ -450,8 +453,8 @@ class line_reader {
     line_parse p;
     p.b = std::move(b);
     std::string_view text = line.text;
-    if (const auto label = line_label(text); label && !is_blank_or_comment(text.substr(label->end))) {
-      unlabelled_.assign(text);  // `MARK: G1 X10`: the words after the label (statements.hpp took it)
+    if (const auto label = line_label(text)) {
+      unlabelled_.assign(text);  // `MARK: G1 X10`, `MARK: ;…`: the words after the label (statements.hpp took it)
       unlabelled_.replace(label->begin, label->end - label->begin, label->end - label->begin, ' ');
       text = unlabelled_;
     }
@@ -471,11 +474,6 @@ class line_reader {
   std::vector<word> words_;  // reused from line to line
   std::string unlabelled_;   // a labelled line with its label blanked
   variables parameters_;
-
-  static bool is_blank_or_comment(std::string_view rest) {
-    const std::size_t k = lexing::skip_blanks(rest, 0);
-    return k == rest.size() || rest[k] == ';';
-  }
 };
 
 }  // namespace kin5::program::siemens::detail

@@ -5,7 +5,7 @@
 /// "Repeat program section", "Control structures"; docs/dialects/siemens.md, "Control flow").
 /// | line | statement |
 /// |---|---|
-/// | `N40 MARK: …`, `MARK:` | ordinary, defining labels `MARK` and `N40` (a label: two letters or `_` first) |
+/// | `N40 MARK: …`, `MARK:` | ordinary, defining labels `MARK` and `N40` (a label: two letters or `_` first); the reader makes no block of a label alone |
 /// | `GOTOF l`, `GOTOB l`, `GOTO l`, `GOTOC l` | jump: forward, backward, either; `GOTOC` goes on when `l` is missing |
 /// | `IF c GOTOF l` | conditional jump (one line) |
 /// | `IF c` … `ELSE` … `ENDIF` | IF branches, nested |
@@ -81,7 +81,8 @@ inline std::optional<label_at> line_label(std::string_view t) {
   return label_name_at(t, i);
 }
 
-/// Whether `M2`, `M02`, `M30` or `M17` stands in `t` as an M word (outside comments and strings).
+/// Whether `M2`, `M02`, `M30` or `M17` stands in `t` as an M word (outside comments and strings),
+/// with blanks or a `+` before its value as the lexer reads them (`M 30`, `M+30`).
 inline bool has_end_word(std::string_view t) {
   // Most lines hold no M at all: two memchr calls settle them without the byte loop below.
   if (!std::memchr(t.data(), 'M', t.size()) && !std::memchr(t.data(), 'm', t.size())) return false;
@@ -98,11 +99,13 @@ inline bool has_end_word(std::string_view t) {
       continue;
     }
     if (to_upper(c) != 'M' || (i > 0 && (is_letter(t[i - 1]) || t[i - 1] == '_' || t[i - 1] == '$'))) continue;
-    std::size_t k = i + 1;
+    std::size_t value = lexing::skip_blanks(t, i + 1);
+    if (value < t.size() && t[value] == '+') ++value;
+    std::size_t k = value;
     while (k < t.size() && t[k] == '0') ++k;
     std::size_t e = k;
     while (e < t.size() && is_digit(t[e])) ++e;
-    if (e == i + 1 || (e < t.size() && (t[e] == '.' || t[e] == '=' || (is_ident_char(t[e]) && !is_letter(t[e]))))) continue;
+    if (e == value || (e < t.size() && (t[e] == '.' || t[e] == '=' || (is_ident_char(t[e]) && !is_letter(t[e]))))) continue;
     const std::string_view n = t.substr(k, e - k);
     if (n == "2" || n == "30" || n == "17") return true;
   }

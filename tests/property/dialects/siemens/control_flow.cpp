@@ -216,10 +216,19 @@ TEST_CASE("siemens control flow: each construct", "[siemens][flow]") {
   // REPEATB: one block; REPEAT a b: a section after the end, as 840D programs keep them.
   CHECK(texts(read_ok("PA: G1 X1\nREPEATB PA P=2\nM30\n")) == std::vector<std::string>{"PA: G1 X1", "PA: G1 X1", "PA: G1 X1", "M30"});
   CHECK(texts(read_ok("G1 X0\nREPEAT SEC SEC_END P=2\nM30\nSEC:\nG1 X9\nSEC_END:\nG1 X7\n")) ==
-        std::vector<std::string>{"G1 X0", "SEC:", "G1 X9", "SEC_END:", "SEC:", "G1 X9", "SEC_END:", "M30", "SEC:",
-                                 "G1 X9", "SEC_END:", "G1 X7"});
+        std::vector<std::string>{"G1 X0", "G1 X9", "G1 X9", "M30", "SEC:", "G1 X9", "SEC_END:", "G1 X7"});
+  // A label alone makes no block (it was passed through, "not understood"); a comment after it stays.
+  const auto labels = read_ok("GOTOF END\nG1 X1\nEND:\nN40 LB1:\nLB2: ; note\nM30\n");
+  CHECK(texts(labels) == std::vector<std::string>{"LB2: ; note", "M30"});
+  CHECK(labels.parsed.blocks[0].comment == "note");
+  CHECK(!labels.parsed.blocks[0].passthrough);
+  // A label alone is still a line: REPEATB runs it (nothing), not the lines after it.
+  CHECK(texts(read_ok("PA:\nG1 X1\nREPEATB PA P=2\nG1 X3\nM30\n")) == std::vector<std::string>{"G1 X1", "G1 X3", "M30"});
   // After the end, the section is kept as text: never read, never run.
   CHECK(read_ok("M30\nSEC:\nG1 X=R99\n").parsed.blocks[2].passthrough);
+  // The end as the word reader reads it, a blank or a sign before its value (it ran on before).
+  CHECK(read_ok("M 30\nSEC:\nG1 X=R99\n").parsed.blocks[2].passthrough);
+  CHECK(read_ok("N10 M+02\nSEC:\nG1 X=R99\n").parsed.blocks[2].passthrough);
   // A FOR counter after the loop; a loop that never ends stops at the bound.
   CHECK(texts(read_ok("FOR R1=1 TO 2\nENDFOR\nR2=R1\n")).back() == "R2=3");
   CHECK(errors_of("LOOP\nG1 X1\nENDLOOP\n", 1000) ==

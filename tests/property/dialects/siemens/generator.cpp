@@ -1,7 +1,9 @@
 // Generated Siemens programs for the dialect laws (laws.cpp). Each generated line is
 // drawn together with the block it must read as (the independent expectation): words in random
 // case, with or without blanks, `X=` assignments, `+` signs, trailing and leading dots,
-// comments of either kind, and LF / CRLF / CR line endings.
+// comments of either kind, and LF / CRLF / CR line endings. A label alone (`END:`) gives no
+// block; after the program's end (M2, M30), from the first label on, every line is kept as text
+// (reader.hpp `read_blocks`: the sections only a REPEAT runs).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -83,6 +85,7 @@ struct line {
   block expected;
   std::vector<std::string> words;
   std::optional<std::string> verbatim;  ///< a passthrough line, written as is
+  bool label = false;                   ///< a label alone: no block (statements.hpp)
 };
 
 const std::vector<std::string> kept_pool = {"G17", "G18", "G19", "G40", "G54", "G57", "G64", "G642", "G90", "G500", "G505", "G601",
@@ -90,7 +93,7 @@ const std::vector<std::string> kept_pool = {"G17", "G18", "G19", "G40", "G54", "
 
 const std::vector<std::string> passthrough_pool = {
     // Only lines that change nothing pass through (vocabulary.hpp `changes_nothing`); cycles,
-    // jumps and calls are refused.
+    // jumps and calls are refused. A label alone (`END:`) gives no block.
     "R1=5", "MSG(\"roughing done\")", "DEF REAL DEPTH", "END:", "STOPRE", "%", "N5 R2=-3.5", "_Z_HOME=610.",
     "WORKPIECE(,\"\",,\"BOX\",0,0,-50,-80,0,0,100,100)"};
 
@@ -275,7 +278,8 @@ line draw_line(state& s) {
     }
     case 11: {  // passthrough
       const std::string text = *rc::gen::elementOf(passthrough_pool);
-      b.passthrough = true;
+      l.label = text.back() == ':';
+      b.passthrough = !l.label;
       b.text = draw_blanks(2) + text;
       if (text.rfind("N5 ", 0) == 0) b.number = 5;
       l.verbatim = b.text;
@@ -355,8 +359,11 @@ drawn_program draw_program() {
   const int n = *rc::gen::inRange(1, 30);
   std::size_t line_number = 0;
   std::string ending;
+  bool ended = false, section = false;  // a program end drawn; a label after it
   for (int i = 0; i < n; ++i) {
     line l = draw_line(s);
+    section = section || (ended && l.label);
+    ended = ended || l.expected.program_end;
     // D n is edge n's length switched on once a tool is loaded (an M6 here or before); D0 none.
     if (changes_tool(l.expected)) s.tool_loaded = true;
     for (const std::string& w : l.expected.kept_words)
@@ -370,12 +377,13 @@ drawn_program draw_program() {
     ++line_number;
     std::size_t first = 0;
     while (first < text.size() && is_space(text[first])) ++first;
+    if (section) l.expected = block{}, l.expected.passthrough = true;  // kept as text, never read
     l.expected.where = {"gen.mpf", line_number, first + 1};
     l.expected.text = text;
     d.text += text;
     ending = i + 1 < n || coin() ? *rc::gen::element<std::string>("\n", "\r\n", "\r") : "";
     d.text += ending;
-    d.expected.blocks.push_back(std::move(l.expected));
+    if (section || !l.label) d.expected.blocks.push_back(std::move(l.expected));
   }
   return d;
 }
