@@ -437,6 +437,33 @@ case "$name" in
     has_line a.ngc 'N30 G1 X10 .*\(- MSG, hello\)'
     run 0 translate --from xyzac-trt --to xyzac-trt --from-dialect linuxcnc -o b.ngc a.ngc  # reads back
     ;;
+  # LinuxCNC's `(ABORT, …)` stops the program there with an error; it was refused (and, before
+  # that, written as a comment with the moves after it). Each NC dialect now writes its alarm
+  # stop before the next move, and the output reads back through kin5 to the same abort: its
+  # message, after the first move and before the second. APT CL data have no alarm: refused.
+  linuxcnc-abort)
+    printf '%s\n' '%' 'G21 G90 G17' 'T1 M6 G43' 'M428' 'G1 X0 Y0 Z10 A0 C0 F100' '(probe) (ABORT, probe failed)' \
+      'G1 X10 A30' 'M429' 'M2' '%' >a.ngc
+    for d in linuxcnc iso haas siemens heidenhain; do
+      run 0 translate --from xyzac-trt --to xyzac-trt --from-dialect linuxcnc --to-dialect "$d" -o "a.$d" a.ngc
+      case $d in
+        linuxcnc) alarm='\(probe\) \(ABORT, probe failed\)' ;;
+        iso | haas) alarm='#3000=1 \(probe failed\)' ;;
+        siemens) alarm='SETAL\(65000,"probe failed"\) ; probe' ;;
+        heidenhain) alarm='[0-9]+ FN 14: ERROR = 1 ;probe failed' ;;
+      esac
+      count_is "a.$d" "$alarm" 1
+      run 0 translate --from xyzac-trt --to xyzac-trt --from-dialect "$d" --to-dialect linuxcnc -o "b.$d.ngc" "a.$d"
+      count_is "b.$d.ngc" '(N[0-9]+ )?(\([^()]*\) )?\(ABORT, probe failed\)' 1
+      # the abort between the two moves, as in the source (block numbers where the source had them)
+      awk '/^(N[0-9]+ )?G1 X0 /{m=NR} /^(N[0-9]+ )?(\([^()]*\) )?\(ABORT, probe failed\)$/{a=NR} /^(N[0-9]+ )?G1 X10 /{n=NR}
+           END{exit !(m && a > m && n > a)}' \
+        "b.$d.ngc" || { report "b.$d.ngc: the abort is not between the moves"; show "b.$d.ngc"; }
+    done
+    run 2 reverse --machine xyzac-trt --dialect linuxcnc -o a.apt a.ngc
+    error_at 'a.ngc:6:1: error: cannot write the program as apt: block cannot be written in APT: an alarm stop'
+    nothing a.apt
+    ;;
   # A Siemens unit switch after motion (G700 after G710) was written as G20 after motion, which
   # ISO, Haas and LinuxCNC refuse, and refused by the Heidenhain writer: each now writes the
   # program in its first unit, the blocks after the switch converted, and reads it back.

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "../core/vec.hpp"
+#include "alarm_stop.hpp"
 #include "dialect_id.hpp"
 #include "printable.hpp"
 #include "resolution.hpp"
@@ -145,6 +146,8 @@ struct block {
   /// stop, as the text says them (state_words.hpp). Readers fill these instead of `m_codes` and
   /// `kept_words` for the words they map, so every such word has one meaning in every dialect.
   state_words state;
+  /// The program stops here with an alarm and its message (alarm_stop.hpp).
+  std::optional<alarm_stop> alarm;
 
   /// Whether the block moves any axis.
   bool moves() const { return !axes.empty(); }
@@ -159,6 +162,24 @@ struct block {
     rest.comment.reset();
     rest.state.dwell_s.reset();
     return state.dwell_s && rest == block{};
+  }
+
+  /// Whether the block is an alarm stop and says nothing else but its number: what every
+  /// dialect's reader gives (LinuxCNC's ABORT may share its line; it acts first).
+  bool only_alarm() const {
+    block rest = *this;
+    rest.where = {};
+    rest.text.clear();
+    rest.number.reset();
+    rest.alarm.reset();
+    return alarm && rest == block{};
+  }
+
+  /// Whether the block is an alarm stop with at most a comment besides its number.
+  bool only_alarm_and_comment() const {
+    block rest = *this;
+    rest.comment.reset();
+    return rest.only_alarm();
   }
 
   friend bool operator==(const block&, const block&) = default;

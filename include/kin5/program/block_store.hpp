@@ -2,8 +2,8 @@
 /// A compact, append-only record of the blocks of one program, to be replayed in order: what a
 /// second pass over a program reads instead of parsing the text again.
 ///
-/// Each block is packed into a byte record: one word of flags (which fields are present), then
-/// only the fields present, numbers as their exact bytes, strings with their length. A motion
+/// Each block is packed into a byte record: one word of flags (which fields are present; its last
+/// bit says a byte of flags for the rarer fields follows), then only the fields present, numbers as their exact bytes, strings with their length. A motion
 /// block `N… G1 X Y Z A B F` takes about 70 bytes, a quarter of `sizeof(block)` and without
 /// its heap parts. Records go into chunks, so the store grows without copying: a record that
 /// does not fit the rest of the last chunk starts a new one, of its own size if it is larger.
@@ -97,8 +97,11 @@ class block_store {
     has_tool_axis = 1u << 20, has_arc = 1u << 21, arc_centre = 1u << 22, arc_radius = 1u << 23,
     has_feed = 1u << 24, feed_rapid = 1u << 25, machine_coordinates = 1u << 26, has_kept = 1u << 27,
     passthrough = 1u << 28, has_state = 1u << 29, framing = 1u << 30,
-    assignment = 1u << 31,
+    has_more = 1u << 31,  // a byte of `more_fields` follows the flags
   };
+  // The byte after the flags when `has_more` is set: the rarer fields and flags, so that the
+  // common records keep one word of flags.
+  enum more_fields : unsigned char { assignment = 1u << 0, has_alarm = 1u << 1, alarm_number = 1u << 2 };
   // The byte after the flags' `has_tool`: which of the tool's fields follow.
   enum tool_fields : unsigned char { tool_number = 1u << 0, tool_named = 1u << 1 };
 
@@ -195,22 +198,29 @@ class block_store {
     set(!b.kept_words.empty(), has_kept);
     set(b.passthrough, passthrough);
     set(b.framing, framing);
-    set(b.assignment, assignment);
     set(!b.state.empty(), has_state);
+    unsigned char more = 0;
+    if (b.assignment) more |= assignment;
+    if (b.alarm) more |= has_alarm;
+    if (b.alarm && b.alarm->number) more |= alarm_number;
+    set(more != 0, has_more);
     // An upper bound of the record's size: the fixed part, then the strings and lists (a
     // LEB128 size takes at most 10 bytes).
     constexpr std::size_t leb = 10;
     std::size_t size = sizeof flags + 2 * leb + sizeof(long long) + sizeof(feed_unit) + 1 + sizeof(long long) +
                        sizeof(double) + sizeof(motion_kind) + 6 * sizeof(double) + sizeof(vec3) + sizeof(arc_plane) +
-                       sizeof(vec3) + sizeof(double) + sizeof(double) + leb + sizeof(state_words);
+                       sizeof(vec3) + sizeof(double) + sizeof(double) + leb + sizeof(state_words) + 1 +
+                       sizeof(long long);
     if (flags & has_text) size += leb + b.text.size();
     for (const auto* s : {&b.program_begin, &b.program_end, &b.comment, &b.tool_name})
       if (*s) size += leb + (*s)->size();
     size += leb + sizeof(int) * b.m_codes.size();
     for (const auto& w : b.kept_words) size += leb + w.size();
+    if (b.alarm) size += leb + b.alarm->message.size();
     record_.resize(size);
     write_ = record_.data();
     put(flags);
+    if (flags & has_more) put(more);
     put_size(b.where.line);
     put_size(b.where.column);
     if (flags & has_text) put_string(b.text);
@@ -246,6 +256,10 @@ class block_store {
       for (const auto& w : b.kept_words) put_string(w);
     }
     if (flags & has_state) put(b.state);  // trivially copyable (state_words.hpp)
+    if (more & has_alarm) {
+      put_string(b.alarm->message);
+      if (more & alarm_number) put(*b.alarm->number);
+    }
   }
 
   /// Reads one record into `b`, every field but `where.file` replaced.
@@ -268,8 +282,11 @@ class block_store {
     b.feed.reset();
     b.kept_words.clear();
     b.state = {};
+    b.alarm.reset();
     std::uint32_t flags = 0;
     p = get(p, flags);
+    unsigned char more = 0;
+    if (flags & has_more) p = get(p, more);
     std::uint64_t v = 0;
     p = get_size(p, v);
     b.where.line = static_cast<std::size_t>(v);
@@ -318,9 +335,14 @@ class block_store {
       for (auto& w : b.kept_words) p = get_string(p, w);
     }
     if (flags & has_state) p = get(p, b.state);
+    if (more & has_alarm) {
+      alarm_stop& alarm = b.alarm.emplace();
+      p = get_string(p, alarm.message);
+      p = get_optional(p, more, alarm_number, alarm.number);
+    }
     b.passthrough = (flags & passthrough) != 0;
     b.framing = (flags & framing) != 0;
-    b.assignment = (flags & assignment) != 0;
+    b.assignment = (more & assignment) != 0;
     return p;
   }
 };

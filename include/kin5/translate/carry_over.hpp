@@ -49,7 +49,8 @@ inline std::optional<std::string> map_plane_words(program::block& b, const mat3&
 
 /// Makes `b` a block of dialect `to`: text kin5 did not interpret (`passthrough`) and words it
 /// kept without interpreting (`kept_words`) mean something only in the source dialect `from`, so
-/// they travel as a comment instead of being written as code. A CL data statement that is not
+/// they travel as a comment instead of being written as code, as does an alarm stop's number (the
+/// target writes its own). A CL data statement that is not
 /// passed through is read whole into the model (the APT reader refuses the rest), and the
 /// statements it keeps (`MULTAX`) say how CL records are laid out, nothing an NC program has:
 /// neither its text nor its kept words travel.
@@ -68,6 +69,12 @@ inline void carry_over(program::block& b, program::dialect from, program::dialec
   } else if (!b.kept_words.empty()) {
     note = std::string(program::name(from)) + ":";
     for (const auto& w : b.kept_words) note += " " + w;
+  }
+  // An alarm number names a text of the source's control only: the target's writer writes its
+  // own (alarm_stop.hpp), and the source's travels as a comment.
+  if (b.alarm && b.alarm->number) {
+    note += (note.empty() ? "" : " ") + std::string(program::name(from)) + ": alarm " + std::to_string(*b.alarm->number);
+    b.alarm->number.reset();
   }
   b.kept_words.clear();
   if (!note.empty()) b.comment = b.comment ? *b.comment + " | " + note : note;

@@ -79,6 +79,7 @@ inline std::string header_difference(const program::block& a, const program::blo
   if (!near(a.spindle_rpm, b.spindle_rpm)) return "spindle_rpm";
   if (a.m_codes != b.m_codes) return "m_codes";
   if (a.state != b.state) return "state";
+  if (a.alarm != b.alarm) return "alarm";
   return {};
 }
 

@@ -73,6 +73,7 @@ block any_block(const std::string& file) {
   b.passthrough = *rc::gen::arbitrary<bool>();
   b.framing = *rc::gen::arbitrary<bool>();
   b.assignment = *rc::gen::arbitrary<bool>();
+  if (*rc::gen::inRange(0, 2)) b.alarm = alarm_stop{*any_string(), maybe(rc::gen::arbitrary<long long>())};
   if (*rc::gen::inRange(0, 2)) {  // the state words, kept as bytes
     b.state.tool_change = *rc::gen::arbitrary<bool>();
     if (*rc::gen::inRange(0, 2))

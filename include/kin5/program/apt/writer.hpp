@@ -85,6 +85,12 @@ class writer {
       if (b.comment && !same_) out += "$$ " + one_line(b, *b.comment) + '\n';
       return;
     }
+    // An alarm stop is a control's, not the part's: ISO 4343 and the APT vocabulary have no
+    // statement that stops the program with an alarm (`STOP` waits for the operator to go on).
+    if (b.alarm)
+      fail(b, "an alarm stop (\"" + one_line(b, b.alarm->message) +
+                  "\") has no APT form (CL data have no alarm: end the program before it, or translate to an NC "
+                  "dialect)");
     if (b.state.dwell_s) return ended_.reset(), dwell(out, b);
     if (b.tool_name)
       fail(b, "a tool by name (\"" + one_line(b, *b.tool_name) +

@@ -7,9 +7,10 @@
 /// `TOOL DEF`, `PLANE RESET`, `TRANS … RESET`, Q assignments (parameters.hpp) and frame cycles
 /// whose values are the identity. `CYCL DEF 247 … Q339=n` selects preset n (`state.work_offset`);
 /// `CYCL DEF 9.0 DWELL TIME` (passed through) then `CYCL DEF 9.1 DWELL t` is a dwell (`state.dwell_s`).
+/// `FN 14: ERROR = n ;text` is an alarm stop (`alarm`: number n, the comment its message).
 /// Every other block is refused at its keyword, naming it: the
 /// cycles kin5 does not read (`CYCL DEF 200`, 32, …), `CYCL CALL`, `M99`/`M89`,
-/// `LBL`, `CALL LBL`/`CALL PGM`, `FN` functions, `M` blocks with other words (`M140 MB MAX`),
+/// `LBL`, `CALL LBL`/`CALL PGM`, other `FN` functions, `M` blocks with other words (`M140 MB MAX`),
 /// `TOOL CALL` forms it does not read, `FUNCTION TCPM` options other than `F TCP`, `AXIS POS`,
 /// `PATHCTRL AXIS`, unknown keywords; so are Q parameters that are not constants of the file,
 /// incremental `IX`… and active frame changes (`PLANE SPATIAL`…,
@@ -451,6 +452,35 @@ class block_reader : public word_checks {
     return k >= s_.size() || s_[k] == ';';
   }
 
+  /// `FN 14: ERROR = n ;text` at `i`: the program stops with the control's error n (0 … 1199),
+  /// the line's comment its message (docs/dialects/heidenhain.md); true when the block is FN 14.
+  /// A number that is not a whole one in that range, or a parameter, is refused.
+  bool error_stop(std::size_t i) {
+    const auto fn = fn_head(std::string_view(t_.upper).substr(i));
+    if (!fn || fn->first != 14) return false;
+    const std::string_view u(t_.upper);
+    std::size_t k = scan_.skip_spaces(i + fn->second);
+    bool ok = scan_.letters(k) == "ERROR";
+    if (ok) k = scan_.skip_spaces(k + 5), ok = k < u.size() && u[k] == '=';
+    parsed_number n{};
+    if (ok) {
+      k = scan_.skip_spaces(k + 1);
+      n = read_number(u.substr(k));
+      ok = n.error == number_error::none && n.length > 0 && n.value >= 0 && n.value <= 1199 &&
+           n.value == static_cast<double>(static_cast<long long>(n.value));
+      k += n.length;
+    }
+    if (ok) ok = only_comment_after(k);
+    if (!ok) {
+      error(i, "FN 14: kin5 reads FN 14: ERROR = n with n a whole number from 0 to 1199, then at most a comment");
+      b_.passthrough = true;
+      return true;
+    }
+    b_.alarm = alarm_stop{b_.comment.value_or(""), static_cast<long long>(n.value)};
+    b_.comment.reset();
+    return true;
+  }
+
   /// Cycle calls, labels, program calls and FN functions: refused at `i`, naming them.
   bool refused_keyword(std::size_t i, const std::string& head) {
     std::string why;
@@ -459,7 +489,8 @@ class block_reader : public word_checks {
     else if (head == "CALL" || head == "SEL" || head == "PGM")
       why = t_.upper.substr(i, scan_.run_end(scan_.skip_spaces(scan_.run_end(i))) - i) +
             ": program and label calls are not supported (the motion they make would be lost)";
-    else if (head == "FN") why = "FN: functions other than FN 0 (a constant) are not supported";
+    else if (head == "FN" && error_stop(i)) return true;
+    else if (head == "FN") why = "FN: functions other than FN 0 (a constant) and FN 14 (an error) are not supported";
     if (why.empty()) return false;
     error(i, why);
     b_.passthrough = true;

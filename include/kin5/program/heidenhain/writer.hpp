@@ -44,6 +44,11 @@ namespace kin5::program::heidenhain {
 
 struct dialect;  // this folder's entry of `program::dialects` (dialect.hpp)
 
+/// The error number written for another dialect's alarm stop: `FN 14: ERROR = 1`, among the
+/// numbers 0 … 299 whose text is the control's plain "FN 14: ERROR CODE n", naming no cause of
+/// its own (docs/dialects/heidenhain.md).
+inline constexpr long long default_alarm_number = 1;
+
 /// Writes blocks as Heidenhain conversational text one at a time, numbering them from 0 and
 /// remembering the working plane, the last circle centre and the program name, so a program of
 /// any length is written in constant memory. `write(program)` below is this writer applied to
@@ -68,6 +73,10 @@ class writer {
     const bool opens = !begin_name_ && b_mm.program_begin && !b_mm.passthrough;
     if (!begin_name_ && !opens) open(out, options_.program_name);
     if (b_mm.passthrough) return passthrough(out, b_mm);
+    if (b_mm.alarm) {  // a line of its own, before the block's other words (the alarm acts first)
+      alarm(out, b_mm);
+      if (b_mm.only_alarm()) return;
+    }
     if (b_mm.state.dwell_s) return dwell(out, b_mm, bi, dwell_header);
     if (b_mm.feed_mode == feed_unit::inverse_time) fail(b_mm, bi, "inverse-time feed (G93)");
     if (opens) {
@@ -528,6 +537,21 @@ class writer {
     pending_rapid_ = false;
   }
 
+  /// `5 FN 14: ERROR = 1 ;MESSAGE`: an alarm stop, its number the source's (a Heidenhain
+  /// program's) or `default_alarm_number`, the message the line's comment, as the reader takes it
+  /// (FN 14 shows the control's text of its number; docs/dialects/heidenhain.md).
+  void alarm(std::string& out, const block& b) {
+    const alarm_stop& a = *b.alarm;
+    std::string line = std::to_string(number_++) + " FN 14: ERROR = " + std::to_string(a.number.value_or(default_alarm_number));
+    if (!a.message.empty()) {
+      std::string message = a.message;
+      std::replace(message.begin(), message.end(), '\n', ' ');
+      std::replace(message.begin(), message.end(), '\r', ' ');
+      line += " ;" + without_continuation(message);
+    }
+    out += line + '\n';
+  }
+
   /// The block's lines, numbered, the comment (and kept words) on the last.
   void emit(std::string& out, const block& b, const std::vector<std::string>& kept, bool dropped_move) {
     std::string comment = b.comment.value_or("");
@@ -543,7 +567,7 @@ class writer {
     // Heidenhain can write for it — APT `UNITS/MM`, a lone `RAPID` — becomes its source text as a
     // comment; a translated program's blocks keep their source text, whatever the dialect.
     const bool unsaid = !same_ || dropped_move || b.metric || b.feed_mode;
-    if (line_count_ == 0 && !has_comment && unsaid && !b.text.empty()) {
+    if (line_count_ == 0 && !has_comment && unsaid && !b.text.empty() && !b.alarm) {
       std::size_t k = 0;  // without a Heidenhain block number
       if (same_)
         while (k < b.text.size() && (is_digit(b.text[k]) || is_space(b.text[k]))) ++k;
@@ -552,7 +576,7 @@ class writer {
       std::replace(comment.begin(), comment.end(), '\r', ' ');
       has_comment = true;
     }
-    if (line_count_ == 0 && !has_comment && !same_) return;  // nothing to say, no source text (APT MULTAX)
+    if (line_count_ == 0 && !has_comment && (!same_ || b.alarm)) return;  // nothing to say, no source text (APT MULTAX)
     if (line_count_ == 0) add("");
     for (std::size_t k = 0; k < line_count_; ++k) {
       char digits[24];

@@ -40,6 +40,8 @@ struct parameter_assignment {
   std::string name;                          ///< a named parameter's name as read (`#<feed>`); empty for `#n`
   std::size_t column = 0;                    ///< of the `#`, 1-based
   std::optional<parameter_literal> literal;  ///< the number assigned; none when a problem stops the line
+  std::optional<std::string> comment;        ///< the line's comments (`#3000 = 1 (MESSAGE)`)
+  std::optional<long long> block_number;     ///< `N10 #1 = 5`: 10
 };
 
 /// A problem that stops the line: where (1-based column) and what.
@@ -190,12 +192,17 @@ inline std::optional<lex_problem> lex_line(std::string_view s, std::size_t i, st
 inline std::optional<parameter_assignment> lex_assignment(std::string_view s, std::size_t i, std::size_t end,
                                                           std::optional<lex_problem>& problem, bool named = false) {
   i = lexing::skip_blanks(s.substr(0, end), i);
+  std::optional<long long> block_number;
   if (i < end && to_upper(s[i]) == 'N') {  // the block number
     std::size_t k = i + 1;
+    long long n = 0;
+    while (k < end && is_digit(s[k]) && n < 100000000000000000) n = n * 10 + (s[k++] - '0');
+    if (k > i + 1 && (k >= end || !is_digit(s[k]))) block_number = n;
     while (k < end && is_digit(s[k])) ++k;
     if (k > i + 1) i = lexing::skip_blanks(s.substr(0, end), k);
   }
   parameter_assignment a;
+  a.block_number = block_number;
   std::string_view named_as;
   std::size_t k = detail::parameter_at(s, i, end, named, a.number, named_as);
   if (k == 0) return std::nullopt;
@@ -222,6 +229,7 @@ inline std::optional<parameter_assignment> lex_assignment(std::string_view s, st
   else if (!others.empty()) problem = lex_problem{others.front().column, "a word after the parameter assignment "
                                                                            "on one line is not supported"};
   if (!problem) a.literal = parameter_literal{n.value, std::string(s.substr(v, n.length))};
+  a.comment = std::move(comment);
   return a;
 }
 

@@ -115,6 +115,7 @@ class basic_reader {
 
   /// `#n = number`, `#<name> = number`: recorded, and the line passed through (it moves nothing).
   void assign(const parameter_assignment& a, block& b) {
+    if (Own::alarm_parameter != 0 && a.name.empty() && a.number == Own::alarm_parameter) return alarm(a, b);
     const std::string why = a.name.empty() ? own_.unassignable(a.number) : own_.unassignable(a.name);
     if (!why.empty()) {
       refuse(a);
@@ -123,6 +124,18 @@ class basic_reader {
     if (a.name.empty()) parameters_.assign(a.number, a.literal, line_);
     else parameters_.assign(a.name, a.literal, line_);
     b.passthrough = b.assignment = true;
+  }
+
+  /// `#3000 = n (MESSAGE)`: the program stops with alarm n and the message of the line's
+  /// comments (FANUC custom macro, system variable #3000; docs/dialects/iso.md). A number that is
+  /// not whole, or outside 0 … 9999, is refused: which alarm a control then gives is its own.
+  void alarm(const parameter_assignment& a, block& b) {
+    const double n = a.literal->value;
+    if (!(n >= 0 && n <= 9999 && n == std::floor(n)))
+      return error(a.column, "#" + std::to_string(a.number) + " = " + a.literal->written +
+                                 ": an alarm number is a whole number from 0 to 9999");
+    b.alarm = alarm_stop{a.comment.value_or(""), static_cast<long long>(n)};
+    b.number = a.block_number;
   }
 
   void refuse(const parameter_assignment& a) {

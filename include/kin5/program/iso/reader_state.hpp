@@ -70,6 +70,10 @@ struct reader_state {
 struct no_own_words {
   /// Whether `#<name>` names a parameter (LinuxCNC); in ISO it is an expression, refused.
   static constexpr bool named_parameters = false;
+  /// The system variable whose assignment stops the program with an alarm, `#3000 = n (MESSAGE)`
+  /// (FANUC Custom Macro B; Haas), read as an alarm stop; 0 for none (LinuxCNC's #3000 is a
+  /// parameter like the others).
+  static constexpr long alarm_parameter = 3000;
   std::optional<lex_problem> line(std::string_view, std::size_t, std::size_t) { return std::nullopt; }
   static std::string unassignable(const std::string&) { return ""; }
   static std::string unassignable(long n) {

@@ -93,6 +93,10 @@ inline bool vector_tcp_from(const std::vector<block>& blocks, std::size_t i) {
   return false;
 }
 
+/// The alarm number written for another dialect's alarm stop: `#3000=1`, FANUC's alarm 3001,
+/// the first of the numbers every FANUC and Haas control takes (docs/dialects/iso.md).
+inline constexpr long long default_alarm_number = 1;
+
 inline std::string as_comment(std::string text) {
   for (char& c : text)
     if (c == '\n' || c == '\r') c = ' ';
@@ -146,6 +150,10 @@ class writer {
       out += (same_ ? b.text : detail::as_comment(b.text)) + '\n';
       return;
     }
+    if (b.alarm) {  // a line of its own, before the block's other words (the alarm acts first)
+      alarm(out, b);
+      if (b.only_alarm()) return;
+    }
     if (b.state.dwell_s) return dwell(out, b);
     words_.clear();
     tail_.clear();
@@ -176,8 +184,9 @@ class writer {
     for (std::string& k : tail_) words_.push_back(std::move(k));
     if (!notes_.empty()) words_.push_back(detail::as_comment(notes_));
     if (b.comment) words_.push_back(detail::as_comment(*b.comment));
-    if (words_.empty() && !same_ && !b.text.empty() && !(b.program_begin && opened_)) words_.push_back(detail::as_comment(b.text));
-    if (words_.empty() && !same_) return;  // nothing to say and no source text (APT MULTAX): no empty line
+    if (words_.empty() && !same_ && !b.text.empty() && !(b.program_begin && opened_) && !b.alarm)
+      words_.push_back(detail::as_comment(b.text));
+    if (words_.empty() && (!same_ || b.alarm)) return;  // nothing to say and no source text (APT MULTAX): no empty line
     std::string line;
     for (const std::string& w : words_) line += (line.empty() ? "" : " ") + w;
     out += line + '\n';
@@ -253,6 +262,20 @@ class writer {
     std::string w(1, letter);
     w += std::to_string(n);
     return w;
+  }
+
+  /// `N10 #3000=1 (MESSAGE)`: an alarm stop, its number the source's (an ISO or Haas program's)
+  /// or `detail::default_alarm_number`, its message in the parentheses after it (FANUC custom macro,
+  /// system variable #3000; docs/dialects/iso.md). A message the parentheses cannot hold is refused.
+  void alarm(std::string& out, const block& b) const {
+    const alarm_stop& a = *b.alarm;
+    if (a.message.find_first_of("()\n\r") != std::string::npos)
+      fail(b, "an alarm message with parentheses or a line break has no " + std::string(options_.spell.name) +
+                  " form (#3000 takes its message in one pair of parentheses): remove them from the message");
+    std::string line = b.number ? "N" + std::to_string(*b.number) + " " : std::string();
+    line += "#3000=" + std::to_string(a.number.value_or(detail::default_alarm_number));
+    if (!a.message.empty()) line += " (" + a.message + ")";
+    out += line + '\n';
   }
 
   /// `N10 G4 X1.5 (comment)`: a dwell, seconds with a decimal point (always seconds, whatever

@@ -98,18 +98,33 @@ inline bool acts(std::string_view c) {
   return false;
 }
 
-/// The active comment that changes what runs, as the problem that stops the line (User Manual,
-/// "G-code Overview": "Abort Messages"; the interpreter's `convert_comment`): `(ABORT, …)` ends
-/// the program there with an error, so the blocks after it never run; `(PY, …)`, `(PYRUN, …)`
-/// and `(PYRELOAD)` run embedded Python, which may set parameters and so change the motion.
-/// `(MSG, …)`, `(DEBUG, …)`, `(PRINT, …)`, the `LOG` and `PROBEOPEN` comments only show or
-/// record text: comments.
+/// An abort, `(ABORT, message)` as the line's last comment (User Manual, "G-code Overview":
+/// "Abort Messages"; the interpreter's `convert_comment`): the program stops there with an error
+/// showing the message, trimmed of blanks. Its column, and the comment's whole text as the lexer
+/// adds it to the block's comment (`lexing::trim`).
+struct abort_comment {
+  std::string message;
+  std::size_t column = 0;
+  std::string text;
+};
+
+/// The abort of the line from `i` to `end`, if its last comment is one.
+inline std::optional<abort_comment> abort_of(std::string_view s, std::size_t i, std::size_t end) {
+  const auto c = last_comment(s, i, end);
+  if (!c || !is_active(c->first, "ABORT,")) return std::nullopt;
+  const std::size_t comma = c->first.find(',');
+  return abort_comment{std::string(lexing::trim(c->first.substr(comma + 1))), c->second,
+                       std::string(lexing::trim(c->first))};
+}
+
+/// The active comment that changes what runs and has no meaning kin5 reads, as the problem that
+/// stops the line (the interpreter's `convert_comment`): `(PY, …)`, `(PYRUN, …)` and
+/// `(PYRELOAD)` run embedded Python, which may set parameters and so change the motion.
+/// `(ABORT, …)` is an alarm stop (`abort_of`). `(MSG, …)`, `(DEBUG, …)`, `(PRINT, …)`, the `LOG`
+/// and `PROBEOPEN` comments only show or record text: comments.
 inline std::optional<lex_problem> stopping_comment(std::string_view s, std::size_t i, std::size_t end) {
   const auto c = last_comment(s, i, end);
   if (!c) return std::nullopt;
-  if (is_active(c->first, "ABORT,"))
-    return lex_problem{c->second, "(ABORT, …) stops the program here with an error on LinuxCNC: kin5 writes no "
-                                  "abort in another dialect (end the program before it, M2, or remove it)"};
   for (std::string_view py : {"PY,", "PYRUN,", "PYRELOAD"})
     if (is_active(c->first, py))
       return lex_problem{c->second, "(" + std::string(py) + (py.back() == ',' ? " …)" : ")") + ": embedded Python is not supported (it may set "

@@ -11,12 +11,13 @@
 /// | `G41`/`G42` (the loaded tool's radius), `G41 D n`/`G42 D n` (tool n's), `G40` | `state.radius_compensation`, `radius_register` |
 /// | `G54` … `G59`, `G59.1` … `G59.3` | `state.work_offset` 1 … 9 |
 /// | `G64 P… Q…`, `G91.1` | kept words (path blending tolerance, incremental arc centres: the default) |
+/// | `(ABORT, message)` as the line's last comment | `alarm` with the message (no number); the line's other comments stay its comment |
 /// A parameter assigned a number stands for it, as in ISO (iso/reader.hpp): numbered (`#1 = 5000`)
 /// or named (`#<feed> = 5000`, `F#<feed>`; the name read in lower case without blanks). Setting a
 /// read-only predefined one (`#<_x>`) and expressions are refused.
 /// Refused at the word: `M430`, `G12.1` with another type, a kinematics switch on a line with
 /// motion or M6, `G43.1`/`G43.2`, ISO codes LinuxCNC does not have (`G43.4`, `G43.5`, `G54.1`,
-/// `G50`), `(ABORT, …)` and `(PY, …)` as a line's last comment (lexer.hpp), splines `G5`–`G5.3`, `G90.1`, `M61`, `H` without G43, `D` without G41/G42, `G41.1`/`G42.1`, `G4`
+/// `G50`), `(PY, …)` as a line's last comment and `(ABORT, …)` on a parameter assignment's line (lexer.hpp), splines `G5`–`G5.3`, `G90.1`, `M61`, `H` without G43, `D` without G41/G42, `G41.1`/`G42.1`, `G4`
 /// with axis words, without P, with a negative P or with other words (`G4 P1.5` alone is
 /// `state.dwell_s`), o-words (lexer.hpp); under tracking, a move while G43 does not hold the
 /// loaded tool's length (the point programmed would not be the tool tip).
@@ -71,11 +72,18 @@ inline std::string g_name(int g) {
 /// length, whether tracking is on.
 class own_words {
  public:
-  /// Refuses a line that starts with an o-word, or whose active comment stops the program or runs
-  /// Python (lexer.hpp).
+  /// Refuses a line that starts with an o-word, or whose active comment runs Python (lexer.hpp);
+  /// notes its abort, which `take` makes the block's alarm stop. An abort on a parameter
+  /// assignment's line is refused: kin5 reads that line as the assignment alone.
   std::optional<lex_problem> line(std::string_view s, std::size_t first, std::size_t end) {
+    abort_.reset();
     if (auto p = o_word(s, first, end)) return p;
-    return stopping_comment(s, first, end);
+    if (auto p = stopping_comment(s, first, end)) return p;
+    abort_ = abort_of(s, first, end);
+    if (abort_ && assigns(s, first, end))
+      return lex_problem{abort_->column, "(ABORT, …) on a line that sets a parameter is not supported: put the abort "
+                                         "on a line of its own"};
+    return std::nullopt;
   }
 
   /// Why the program may not set parameter `#n`: #1–#5000 are the program's (#31–#5000 the
@@ -88,6 +96,8 @@ class own_words {
 
   /// Named parameters `#<feed>` are read (User Manual, "G-code Overview", "Named Parameters").
   static constexpr bool named_parameters = true;
+  /// #3000 is one of the program's parameters (#31–#5000): no assignment stops the program.
+  static constexpr long alarm_parameter = 0;
 
   /// Why the program may not set named parameter `name` (`#<_x>`): the predefined ones, and
   /// `#<_ini[…]…>` and `#<_hal[…]>`, are read-only (User Manual, "Predefined Named Parameters",
@@ -106,9 +116,18 @@ class own_words {
   /// depends on a decimal point.
   static bool point_decides_unit(char) { return false; }
 
-  /// Reads and removes from `words` the words LinuxCNC reads itself.
+  /// Reads and removes from `words` the words LinuxCNC reads itself, and makes the line's abort
+  /// its alarm stop (the comment without it).
   template <class Error>
   void take(std::vector<word>& words, block& b, Error&& error) {
+    if (abort_) {
+      b.alarm = alarm_stop{abort_->message, std::nullopt};
+      if (b.comment && b.comment->ends_with(abort_->text)) {
+        b.comment->resize(b.comment->size() - abort_->text.size());
+        while (!b.comment->empty() && b.comment->back() == ' ') b.comment->pop_back();
+        if (b.comment->empty()) b.comment.reset();
+      }
+    }
     line_words l;
     for (const word& w : words) classify(w, l);
     std::vector<word> rest;
@@ -145,6 +164,18 @@ class own_words {
  private:
   std::optional<long long> selected_, loaded_;
   bool length_of_loaded_ = false, tracking_ = false, refused_ = false;
+  std::optional<abort_comment> abort_;  // the abort of the line being read
+
+  /// Whether the line from `i` to `end` sets a parameter: `#` first, after a block number.
+  static bool assigns(std::string_view s, std::size_t i, std::size_t end) {
+    i = lexing::skip_blanks(s.substr(0, end), i);
+    if (i < end && (s[i] == 'n' || s[i] == 'N')) {
+      std::size_t k = i + 1;
+      while (k < end && is_digit(s[k])) ++k;
+      if (k > i + 1) i = lexing::skip_blanks(s.substr(0, end), k);
+    }
+    return i < end && s[i] == '#';
+  }
 
   /// `G43` without H takes the length of the tool loaded now (LinuxCNC Manual, G43: "uses the
   /// currently loaded tool"; the line's M6 runs first), and keeps it after a later M6: its

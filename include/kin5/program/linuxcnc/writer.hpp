@@ -75,6 +75,9 @@ class writer {
       if (!opened_) out += "%\n", opened_ = true;
     }
     if (b.passthrough) return iso_.write(out, b);
+    if (b.alarm) {  // a line of its own, before the block's other words (the comment acts first)
+      if (abort(out, b)) return;
+    }
     if (b.state.dwell_s) return dwell(out, b);
     if (b.axes.tool_axis) fail(b, "a tool-axis vector (LinuxCNC has no G43.5; its trt kinematics take A, B, C words)");
     std::vector<std::string> own, length;
@@ -142,6 +145,24 @@ class writer {
     out += line + '\n';
   }
 
+  /// `N10 (ABORT, message)`: an alarm stop (User Manual, "G-code Overview", "Abort Messages");
+  /// LinuxCNC numbers no alarm, so another dialect's number is not written. A message that
+  /// would end the comment early or open another is refused.
+  /// The block's comment goes before the abort on its line when the block says nothing else and
+  /// the comment fits parentheses; whether the block is written whole.
+  static bool abort(std::string& out, const block& b) {
+    const std::string& message = b.alarm->message;
+    if (message.find_first_of("()\n\r") != std::string::npos)
+      fail(b, "an alarm message with parentheses or a line break has no LinuxCNC form ((ABORT, …) ends at the first "
+              "')'): remove them from the message");
+    std::string line = b.number ? "N" + std::to_string(*b.number) + " " : std::string();
+    const bool with_comment = b.comment && !b.comment->empty() && b.only_alarm_and_comment() &&
+                              b.comment->find_first_of("()\n\r") == std::string::npos && !acts(*b.comment);
+    if (with_comment) line += "(" + *b.comment + ") ";
+    out += line + (message.empty() ? "(ABORT,)\n" : "(ABORT, " + message + ")\n");
+    return b.only_alarm() || with_comment;
+  }
+
   /// Work offset, G43 [H n] / G49: LinuxCNC Manual, "G-Codes", G54–G59.3 and G43, G49.
   void own_words(const block& b, std::vector<std::string>& own, std::vector<std::string>& length) {
     if (const auto& w = b.state.work_offset) {
@@ -188,6 +209,7 @@ class writer {
   /// The ISO writer's line of `b` without what this writer writes itself.
   void iso_line(std::string& line, const block& b) {
     block rest = b;
+    if (rest.alarm) rest.alarm.reset(), rest.text.clear();  // written already (`abort`)
     rest.tcp.reset();
     rest.state.work_offset.reset();
     rest.state.length_compensation.reset();

@@ -26,6 +26,12 @@ inline constexpr int finest_rate_decimals = 3;
 /// Fundamentals 05/2017, "Dwell time (G4)"), written with any decimals a source gives, to 6.
 inline constexpr dwell_input dwell_steps{6, 1e9};
 
+/// The alarm number written for another dialect's alarm stop: `SETAL(65000)`, the first of the
+/// user cycle alarms, whose reaction stops the program (docs/dialects/siemens.md). SETAL takes
+/// the cycle alarms 60000 … 69999; those below 65000 are Siemens' own cycles'.
+inline constexpr long long default_alarm_number = 65000;
+inline constexpr long long first_alarm_number = 60000, last_alarm_number = 69999;
+
 constexpr bool is_ident_char(char c) { return is_letter(c) || is_digit(c) || c == '_'; }
 constexpr bool is_axis_letter(char c) { return c == 'X' || c == 'Y' || c == 'Z' || c == 'A' || c == 'B' || c == 'C'; }
 constexpr bool is_centre_letter(char c) { return c == 'I' || c == 'J' || c == 'K'; }

@@ -383,7 +383,33 @@ class word_reader {
     out_.tcp_word = word;
   }
 
-  /// `NAME(…)`: TRAORI(…), MSG("…"), CYCLE800(…); anything else is unknown.
+  /// `SETAL(n)`, `SETAL(n, "text")`: the program stops with cycle alarm n and the text as its
+  /// parameter (docs/dialects/siemens.md). A number outside the cycle alarms 60000 … 69999, or
+  /// arguments of another form (an expression, a variable), are refused.
+  void setal(const std::string& args, std::size_t start) {
+    out_.has_content = true;
+    const std::string_view a = lexing::trim(args);
+    const std::size_t comma = a.find(',');
+    const std::string_view digits = lexing::trim(a.substr(0, comma));
+    const parsed_number n = read_number(digits);
+    bool ok = n.error == number_error::none && n.length > 0 && n.length == digits.size() &&
+              n.value >= static_cast<double>(detail::first_alarm_number) &&
+              n.value <= static_cast<double>(detail::last_alarm_number) && n.value == static_cast<double>(static_cast<long long>(n.value));
+    std::string message;
+    if (comma != std::string_view::npos) {
+      const std::string_view text = lexing::trim(a.substr(comma + 1));
+      ok = ok && text.size() >= 2 && text.front() == '"' && text.back() == '"' &&
+           text.substr(1, text.size() - 2).find('"') == std::string_view::npos;
+      if (ok) message = std::string(text.substr(1, text.size() - 2));
+    }
+    if (!ok)
+      return error(start, "SETAL(" + std::string(a) + "): kin5 reads SETAL(n) and SETAL(n, \"text\") with n a cycle "
+                          "alarm number from 60000 to 69999");
+    if (out_.b.alarm) return error(start, "two alarms (SETAL) in one block");
+    out_.b.alarm = alarm_stop{std::move(message), static_cast<long long>(n.value)};
+  }
+
+  /// `NAME(…)`: TRAORI(…), MSG("…"), SETAL(…), CYCLE800(…); anything else is unknown.
   void call(const word& w) {
     const std::string& name = w.name;
     const std::size_t start = w.column;
@@ -400,6 +426,8 @@ class word_reader {
     } else if (name == "MSG") {
       out_.has_msg = true;
       out_.b.kept_words.push_back("MSG(" + args + ")");
+    } else if (name == "SETAL") {
+      setal(args, start);
     } else if (name == "CYCLE800") {
       out_.has_content = true;
       if (is_cycle800_reset(args)) out_.b.kept_words.push_back("CYCLE800(" + args + ")");

@@ -167,6 +167,10 @@ class writer {
       out += detail::checked_line(same_ ? b.text : "; " + b.text, b, file) + '\n';
       return;
     }
+    if (b.alarm) {  // a line of its own, before the block's other words (the alarm acts first)
+      alarm(out, b, file);
+      if (b.only_alarm_and_comment()) return;  // its comment on its line
+    }
     if (b.state.dwell_s) return dwell(out, b, file);
     if (b.program_begin && same_) {
       out += detail::checked_line(detail::program_file_name(*b.program_begin), b, file) + '\n';
@@ -186,12 +190,12 @@ class writer {
     arc_data(line, b, file);
     tail(line, b, file);
     written_.move(b);
-    if (line.empty() && !same_ && !b.program_begin && !b.text.empty()) {  // nothing Siemens can say: the source text
+    if (line.empty() && !same_ && !b.program_begin && !b.text.empty() && !b.alarm) {  // nothing Siemens can say: the source text
       line = "; " + b.text;
       std::replace(line.begin(), line.end(), '\n', ' ');
       std::replace(line.begin(), line.end(), '\r', ' ');
     }
-    if (line.empty()) return;  // nothing to say (a lone header has been written)
+    if (line.empty()) return;  // nothing to say (a lone header, an alarm has been written)
     if (b.program_begin && b.number && line == "N" + std::to_string(*b.number)) return;
     out += detail::checked_line(std::move(line), b, file) + '\n';
     if (change) {  // the new tool's first cutting edge: its length and radius (or none, after G49)
@@ -239,6 +243,28 @@ class writer {
 
   [[noreturn]] static void fail(const block& b, const std::string& file, const std::string& why) {
     throw std::invalid_argument(file + ":" + std::to_string(b.where.line) + ": " + why);
+  }
+
+  /// `N10 SETAL(65000,"MESSAGE")`: an alarm stop, its number the source's (a Siemens program's)
+  /// or `detail::default_alarm_number`, the message its text parameter (docs/dialects/siemens.md).
+  /// A message with a double quote, which would end the string, is refused.
+  static void alarm(std::string& out, const block& b, const std::string& file) {
+    const alarm_stop& a = *b.alarm;
+    if (a.message.find_first_of("\"\n\r") != std::string::npos)
+      fail(b, file, "an alarm message with a double quote or a line break has no Siemens form (SETAL takes it as a "
+                    "string): remove them from the message");
+    std::string line;
+    if (b.number) detail::append_code(line, 'N', *b.number);
+    std::string call = "SETAL(" + std::to_string(a.number.value_or(detail::default_alarm_number));
+    if (!a.message.empty()) call += ",\"" + a.message + "\"";
+    detail::append_word(line, call + ")");
+    if (b.comment && b.only_alarm_and_comment()) {
+      std::string c = *b.comment;
+      std::replace(c.begin(), c.end(), '\n', ' ');
+      std::replace(c.begin(), c.end(), '\r', ' ');
+      line += " ;" + (c.empty() ? std::string() : " " + c);
+    }
+    out += detail::checked_line(std::move(line), b, file) + '\n';
   }
 
   /// `N10 G4 F1.5 ;comment`: a dwell, F in seconds, in a block of its own (SINUMERIK 840D sl

@@ -201,7 +201,7 @@ item draw_item(state& st) {
     b.number = *rc::gen::inRange<long long>(0, 100000);
     it.words.push_back(spell_code('N', static_cast<int>(*b.number)));
   }
-  switch (*rc::gen::inRange(0, 14)) {
+  switch (*rc::gen::inRange(0, 15)) {
     case 0: case 1: case 2: case 3: case 4:
       draw_motion(it, st);
       break;
@@ -228,6 +228,13 @@ item draw_item(state& st) {
       it.words.push_back(draw_case("G4"));
       it.words.push_back(spell_word('P', s, 2));
       break;
+    }
+    case 13: {  // an abort: the line's last comment, so no comment after it
+      const std::string m = draw_words();
+      b.alarm = alarm_stop{m, std::nullopt};
+      it.words.push_back("(" + draw_blanks() + draw_case("ABORT") + draw_blanks() + "," + draw_blanks() + m +
+                         draw_blanks() + ")");
+      return it;
     }
     default:
       b = block{};

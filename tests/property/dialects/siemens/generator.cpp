@@ -198,7 +198,7 @@ void move_block(line& l, state& s) {
 line draw_line(state& s) {
   line l;
   block& b = l.expected;
-  switch (*rc::gen::inRange(0, 14)) {
+  switch (*rc::gen::inRange(0, 15)) {
     case 0:
     case 1:
     case 2:
@@ -264,6 +264,20 @@ line draw_line(state& s) {
       if (text.rfind("N5 ", 0) == 0) b.number = 5;
       l.verbatim = b.text;
       return l;
+    }
+    case 12: {  // an alarm stop: a cycle alarm number, and a text or none
+      maybe_number(l);
+      const long long n = *rc::gen::inRange<long long>(60000, 70000);
+      std::string call = draw_case("SETAL") + "(" + std::to_string(n);
+      std::string text;
+      if (coin()) {
+        const int k = *rc::gen::inRange(0, 10);
+        for (int i = 0; i < k; ++i) text += *rc::gen::element<char>('A', 'b', ' ', '1', '.', '-');
+        call += "," + draw_blanks(1) + "\"" + text + "\"";
+      }
+      b.alarm = alarm_stop{text, n};
+      l.words.push_back(call + ")");
+      break;
     }
     default: break;  // a comment line
   }
