@@ -173,13 +173,19 @@ struct block {
   /// Whether the block moves any axis.
   bool moves() const { return !axes.empty(); }
 
-  /// Whether the block is a dwell and says nothing else but its number and comment: the block
-  /// of its own every dialect's dwell takes (program/dwell.hpp).
-  bool only_dwell() const {
+  /// The block without where it stands and how it was written: no location, text or number.
+  block unplaced() const {
     block rest = *this;
     rest.where = {};
     rest.text.clear();
     rest.number.reset();
+    return rest;
+  }
+
+  /// Whether the block is a dwell and says nothing else but its number and comment: the block
+  /// of its own every dialect's dwell takes (program/dwell.hpp).
+  bool only_dwell() const {
+    block rest = unplaced();
     rest.comment.reset();
     rest.state.dwell_s.reset();
     return state.dwell_s && rest == block{};
@@ -188,10 +194,7 @@ struct block {
   /// Whether the block is an alarm stop and says nothing else but its number: what every
   /// dialect's reader gives (LinuxCNC's ABORT may share its line; it acts first).
   bool only_alarm() const {
-    block rest = *this;
-    rest.where = {};
-    rest.text.clear();
-    rest.number.reset();
+    block rest = unplaced();
     rest.alarm.reset();
     return alarm && rest == block{};
   }
