@@ -212,7 +212,8 @@ TEST_CASE("FANUC macro B: each construct, and what is refused", "[flow]") {
   const read_result r = iso::read("#1 = 2.\n#2 = #1 * 3\nG1 X#2\n", "t.nc");
   REQUIRE(r.ok());
   CHECK(r.parsed.blocks[1].text == "#2 = 6");
-  CHECK(errors("M98 P1000\n") == "1:1: call of O1000: no such label in this file\n");
+  CHECK(errors("M98 P1000\n") == "1:1: call of O1000: no label O1000 in this file, and no directory to look for its file "
+                                  "O1000, O1000.nc or 1000.nc in (--include-dir DIR names the directory that holds it)\n");
   CHECK(errors("G1 X1.\nM99\n") ==
         "2:1: M99 in the main program: the control runs the program again from its start, without end (kin5 "
         "translates a program that ends: M30 or M2)\n");
