@@ -470,13 +470,7 @@ class executor {
       end = *last;
     }
     if (s.call_frame) {
-      if (!parameters_.enter_call())
-        return failed(on_error, here.line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) + " deep");
-      for (const argument& a : s.arguments) {
-        const evaluation v = evaluate(a.value, parameters_);
-        if (!v.ok()) return failed(on_error, here.line, v.error->message, v.error->where.column);
-        if (auto why = parameters_.assign(a.key, v.value)) return failed(on_error, here.line, *why);
-      }
+      if (!enter_frame(s, here.line, on_error)) return std::nullopt;
     } else if (calls_open() >= parameter_store::max_call_depth) {
       return failed(on_error, here.line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) + " deep");
     }
@@ -533,15 +527,7 @@ class executor {
       return fail(on_error, here.line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) +
                                            " deep (a file that calls itself without end?)");
     for (std::uint64_t pass = 0; pass < *count; ++pass) {
-      if (s.call_frame) {
-        if (!parameters_.enter_call())
-          return fail(on_error, here.line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) + " deep");
-        for (const argument& a : s.arguments) {
-          const evaluation v = evaluate(a.value, parameters_);
-          if (!v.ok()) return fail(on_error, here.line, v.error->message, v.error->where.column);
-          if (auto why = parameters_.assign(a.key, v.value)) return fail(on_error, here.line, *why);
-        }
-      }
+      if (s.call_frame && !enter_frame(s, here.line, on_error)) return false;
       call_lines_.push_back(here.line.number);
       run_.running.push_back(file.get());
       executor called{*this, *file};
@@ -580,6 +566,24 @@ class executor {
       start = first.kind == statement_kind::label || first.kind == statement_kind::subprogram ? after(*l) : *l;
     }
     return execute_from(start, syntax, on_line, on_error);
+  }
+
+  /// Opens the frame of local parameters of call `s` and sets its arguments, evaluated with the
+  /// caller's parameters (`o2 call [#1]` passes the caller's #1); false after reporting an error.
+  template <class OnError>
+  bool enter_frame(const statement& s, const text_line& line, OnError& on_error) {
+    std::vector<double> values;
+    values.reserve(s.arguments.size());
+    for (const argument& a : s.arguments) {
+      const evaluation v = evaluate(a.value, parameters_);
+      if (!v.ok()) return fail(on_error, line, v.error->message, v.error->where.column);
+      values.push_back(v.value);
+    }
+    if (!parameters_.enter_call())
+      return fail(on_error, line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) + " deep");
+    for (std::size_t i = 0; i < values.size(); ++i)
+      if (auto why = parameters_.assign(s.arguments[i].key, values[i])) return fail(on_error, line, *why);
+    return true;
   }
 
   /// The running pass of the innermost call is over: run it again or go back to the caller.
