@@ -1,11 +1,7 @@
 // Real-world ISO / Fanuc and LinuxCNC habits on small hand-written programs, with
 // hand-derived expectations.
-#include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 #include <catch2/catch.hpp>
 
@@ -13,6 +9,7 @@
 #include <kin5/program/iso/dialect.hpp>
 #include <kin5/program/read_limits.hpp>
 
+#include "../called_dir.hpp"
 #include "../example.hpp"
 
 using namespace kin5::program;
@@ -224,20 +221,6 @@ TEST_CASE("iso: a number written only in a parameter counts for the program's re
   const auto unassigned = scan_resolution("G1 X#7 Y1.25\n", iso_id);
   CHECK(unassigned.linear_decimals == 2);
 }
-
-namespace {
-/// A fresh directory of its own for files a test program calls, removed at the end.
-struct called_dir {
-  std::filesystem::path path;
-  explicit called_dir(const std::string& name)
-      : path(std::filesystem::temp_directory_path() / ("kin5-" + name + "-" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(path);
-    std::filesystem::create_directories(path);
-  }
-  ~called_dir() { std::filesystem::remove_all(path); }
-  void write(const std::string& name, const std::string& text) const { std::ofstream(path / name, std::ios::binary) << text; }
-};
-}  // namespace
 
 TEST_CASE("iso: M98 and G65 of a program in another file run it when its directory is given") {
   const called_dir dir("iso-calls");
