@@ -789,6 +789,27 @@ EOF
     grep -q -- '--tcp-word chooses Heidenhain' err || { report "--tcp-word into iso accepted"; show err; }
     [ -e no.nc ] && report "no.nc written"
     ;;
+  include-dir)
+    # A program that calls another file (M98 P1000, docs/user-guide.md "Programs that call other
+    # files"): with --include-dir the called moves are executed into the output, the file found
+    # whatever the case of its name; without, exit 2 naming the files it would need.
+    mkdir sub empty
+    printf '%%\nO0001\nT1 M6\nG43.4 H1\nG0 X0. Y0. Z10. A0. C0.\nM98 P1000\nG0 Z50.\nG49\nM30\n%%\n' >main.nc
+    printf '%%\nO1000 (CORNER)\nG1 X11. Y12. Z1. F500.\nG1 X13.\nM99\n%%\n' >sub/o1000.nc
+    pair="--from ac-trunnion --to ac-head --from-dialect iso --to-dialect iso"
+    run 0 translate $pair --include-dir empty --include-dir sub -o out.nc main.nc
+    words out.nc | awk '$1 == "X=11" && $2 == "Y=12" && $3 == "Z=1" { a = 1 } $1 == "X=13" { b = 1 } END { exit !(a && b) }' ||
+      { report "the called moves are not in the output"; show out.nc; }
+    grep -q 'M98\|M99\|O1000' out.nc && { report "the call was written, not executed"; show out.nc; }
+    run 2 translate $pair -o no.nc main.nc
+    grep -q '^main\.nc:6:1: error: call of O1000: .*O1000, O1000\.nc or 1000\.nc .*--include-dir' err ||
+      { report "the missing file not named"; show err; }
+    [ -e no.nc ] && report "no.nc written"
+    # An error inside the called file names that file and its line.
+    printf 'O1000\nG1 X#7\nM99\n' >sub/O1000.nc
+    run 2 translate $pair --include-dir sub -o no.nc main.nc
+    grep -q '^sub/O1000\.nc:2:' err || { report "the error is not at the called file's line"; show err; }
+    ;;
   *)
     echo "run.sh: unknown test '$name'" >&2
     exit 2

@@ -5,7 +5,8 @@
 /// the limits, not to whatever bytes arrive (`/dev/zero`, a line of 60 MiB). `program::read`
 /// and `read_blocks` (io.hpp) check them; the tool's options `--max-file-bytes`,
 /// `--max-line-bytes`, `--max-block-words` and `--max-executed-lines` raise or lower them
-/// (docs/reliability.md gives the defaults' reasons).
+/// (docs/reliability.md gives the defaults' reasons). They also carry where a program's calls of
+/// other files look for them (`include_dirs`, `--include-dir`).
 #pragma once
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "block.hpp"
 #include "text.hpp"
@@ -32,6 +34,9 @@ struct read_limits {
   /// Lines a program's interpreter executes in all, counting each pass of a loop or call again
   /// (interp/executor.hpp): past it the program is taken to loop for ever and refused there.
   std::uint64_t max_executed_lines = 100'000'000;
+  /// Directories a call of another file searches, in order (called_files.hpp; the tool's
+  /// `--include-dir`). None: such a call is refused, naming the file it needs.
+  std::vector<std::string> include_dirs{};
 };
 
 namespace detail {

@@ -12,9 +12,11 @@
 //   F #n a b / EF counting loop (#n from a to b)      JC name      jump, on when the label is missing
 //   SE a b n      section repeat from label a to label b, n passes      L name block   two labels
 //   PL name       ordinary line that defines a label
+//   CF name [n]   call, n passes, of label name or else of the file "name.toy" or "name"
 // Expressions are LinuxCNC's spelling; parameters LinuxCNC's rules.
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -85,8 +87,9 @@ struct toy_syntax {
       s.target = word(0);
       s.direction = op == "JF" ? ip::jump_direction::forward : op == "JB" ? ip::jump_direction::backward : ip::jump_direction::either;
       if (auto [c, col] = after_word(1); !c.empty()) s.condition = expr(c, l, col);
-    } else if (op == "C" || op == "S") {
+    } else if (op == "C" || op == "S" || op == "CF") {
       s.kind = K::call;
+      if (op == "CF") s.files = {word(0) + ".toy", word(0)};
       s.target = word(0);
       if (auto [c, col] = after_word(1); !c.empty()) s.count = expr(c, l, col);
       if (op == "S") s.ends = ip::call_end::calling_line, s.call_frame = false;
@@ -132,6 +135,39 @@ run_result run(const std::string& text, ip::execution_limits limits = {}) {
   r.ok = x.execute(
       syntax, [&](const text_line& l, const ip::statement&) { r.lines.emplace_back(l.text); },
       [&](const ip::flow_error& e) { r.error = std::to_string(e.line) + ":" + std::to_string(e.column) + ": " + e.message; });
+  return r;
+}
+
+/// Files by name, for calls of other files: each opened at most once per run (`opened`).
+struct file_set {
+  std::map<std::string, std::string> texts;
+  std::map<std::string, int> opened{};
+};
+
+/// Runs `text` with calls of the files in `files`: the ordinary lines executed, those of a
+/// called file as "FILE: line"; errors as "FILE:LINE:COL: message" (no FILE: the main text).
+run_result run_with_files(const std::string& text, file_set& files, ip::execution_limits limits = {}) {
+  toy_syntax syntax;
+  ip::executor x{text, kin5::program::linuxcnc::parameter_rules(), limits};
+  x.open_files_with([&](const std::string&, const std::vector<std::string>& names) -> std::optional<ip::called_file> {
+    for (const std::string& n : names)
+      if (auto f = files.texts.find(n); f != files.texts.end()) {
+        ++files.opened[n];
+        if (f->second == "unreadable") return ip::called_file{"dir/" + n, "", "cannot be read"};
+        return ip::called_file{"dir/" + n, f->second};
+      }
+    return std::nullopt;
+  });
+  run_result r;
+  r.ok = x.execute(
+      syntax,
+      [&](const text_line& l, const ip::statement&) {
+        r.lines.push_back(x.file().empty() ? std::string(l.text) : x.file() + ": " + std::string(l.text));
+      },
+      [&](const ip::flow_error& e) {
+        r.error = (e.file.empty() ? "" : e.file + ":") + std::to_string(e.line) + ":" + std::to_string(e.column) + ": " +
+                  e.message;
+      });
   return r;
 }
 
@@ -229,6 +265,44 @@ TEST_CASE("executor: calls with passes, locals, returns, subprograms and section
   CHECK(run("L a\nP x\nR\nS a [1]\n").error == "3:1: returns from a call, but no call is open");  // a repeat is no call
   CHECK(run("C s\nL s\nP x\n").error == "3:1: the text ends inside the call from line 1");
   CHECK(run("L s\nC s\n").error == "2:1: calls nested more than 64 deep");
+}
+
+TEST_CASE("executor: calls of other files", "[executor][files]") {
+  file_set f{{{"sub.toy", "P in\nA #1 = 9\nA #31 = [#31+1]\nR\n"},
+              {"deep", "P deep\nCF sub [1]\nE\n"},
+              {"keyed.toy", "P before\nSUB keyed\nP k\nENDSUB keyed\n"},
+              {"self.toy", "CF self\nR\n"},
+              {"open.toy", "P x\n"},
+              {"bad.toy", "P x\nJ nowhere\nR\n"},
+              {"gone.toy", "unreadable"}}};
+  // Run and back, twice with 2 passes; the file loaded once; its locals its own.
+  const auto r = run_with_files("A #1 = 2\nA #31 = 0\nCF sub [2]\nP b\nCF sub\nI [#31 NE 3 OR #1 NE 2]\nP wrong\nEN\nE\n", f);
+  CHECK(r.error.empty());
+  CHECK(r.lines == lines({"A #1 = 2", "A #31 = 0", "dir/sub.toy: P in", "dir/sub.toy: A #1 = 9", "dir/sub.toy: A #31 = [#31+1]", "dir/sub.toy: P in",
+                          "dir/sub.toy: A #1 = 9", "dir/sub.toy: A #31 = [#31+1]", "P b", "dir/sub.toy: P in", "dir/sub.toy: A #1 = 9", "dir/sub.toy: A #31 = [#31+1]", "E"}));
+  CHECK(f.opened["sub.toy"] == 1);
+  // A label of the text is called before a file of that name.
+  CHECK(run_with_files("CF sub\nE\nL sub\nP here\nR\n", f).lines == lines({"P here", "E"}));
+  // A file that calls a file; its end of program (E) ends its call.
+  CHECK(run_with_files("CF deep\nP b\n", f).lines ==
+        lines({"dir/deep: P deep", "dir/sub.toy: P in", "dir/sub.toy: A #1 = 9", "dir/sub.toy: A #31 = [#31+1]", "dir/deep: E", "P b"}));
+  // A file that defines the label runs from it, to its end (a keyed subprogram).
+  CHECK(run_with_files("CF keyed\nP b\n", f).lines == lines({"dir/keyed.toy: P k", "P b"}));
+  // Refused: no opener, no file, a file that cannot be read, an error inside a file (named by
+  // the file's path and line), a file that never returns, a file that calls itself for ever.
+  CHECK(run("P a\nCF sub\n").error == "2:1: call of sub: no label sub in this file, and no directory to look for its "
+                                       "file sub.toy or sub in (--include-dir DIR names the directory that holds it)");
+  CHECK(run_with_files("CF none\n", f).error ==
+        "1:1: call of none: no label none in this file, nor a file none.toy or none in the include directories (--include-dir)");
+  CHECK(run_with_files("CF gone\n", f).error == "1:1: call of gone: dir/gone.toy: cannot be read");
+  CHECK(run_with_files("P a\nCF bad\n", f).error == "dir/bad.toy:2:1: jump to nowhere: no such label in this file");
+  CHECK(run_with_files("CF open\n", f).error == "dir/open.toy:1:1: the called file ends without returning to the call from line 1");
+  CHECK(run_with_files("CF self\n", f).error.ends_with("calls nested more than 64 deep (a file that calls itself without end?)"));
+  CHECK(f.opened["self.toy"] == 1);
+  // The bounds count over all files.
+  ip::execution_limits small;
+  small.max_executed_lines = 5;
+  CHECK(run_with_files("CF sub [3]\n", f, small).error.starts_with("dir/sub.toy:"));
 }
 
 TEST_CASE("executor: bounds and errors stop the run at the statement", "[executor]") {
@@ -458,6 +532,42 @@ TEST_CASE("executor law: structured programs run as their trees", "[executor][la
     RC_LOG() << pr.out << "error: " << r.error << "\n";
     RC_ASSERT(r.error.empty());
     RC_ASSERT(r.lines == m.out);
+  });
+  rc::prop("with each subprogram in a file of its own, the same lines run", [] {
+    const int subs = *uniform(1, 4);
+    tree t;
+    t.main = *gen_body(0, -1, subs);
+    for (int s = 0; s < subs; ++s) t.subs.push_back(*gen_body(1, s, subs));
+    int counters = 0;
+    number_loops(t.main, counters);
+    for (body& b : t.subs) number_loops(b, counters);
+    const auto as_file_calls = [](std::string text) {  // "C subN" → "CF subN"
+      for (std::size_t at = text.find("C sub"); at != std::string::npos; at = text.find("C sub", at))
+        if (at == 0 || text[at - 1] == '\n') text.replace(at, 1, "CF");
+        else ++at;
+      return text;
+    };
+    printer pr;
+    pr.print(t.main);
+    pr.line("E");
+    file_set f;
+    for (int s = 0; s < subs; ++s) {
+      printer sub;
+      sub.print(t.subs[static_cast<std::size_t>(s)]);
+      sub.line("R");
+      f.texts["sub" + std::to_string(s) + ".toy"] = as_file_calls(sub.out);
+    }
+    model m{t};
+    m.run(t.main);
+    m.out.push_back("E");
+    run_result r = run_with_files(as_file_calls(pr.out), f);
+    for (std::string& l : r.lines)  // the lines without their files
+      if (l.starts_with("dir/")) l = l.substr(l.find(": ") + 2);
+    for (std::string& l : m.out) l = as_file_calls(l);
+    RC_LOG() << pr.out << "error: " << r.error << "\n";
+    RC_ASSERT(r.error.empty());
+    RC_ASSERT(r.lines == m.out);
+    for (const auto& [name, times] : f.opened) RC_ASSERT(times == 1);
   });
 }
 

@@ -212,7 +212,8 @@ TEST_CASE("FANUC macro B: each construct, and what is refused", "[flow]") {
   const read_result r = iso::read("#1 = 2.\n#2 = #1 * 3\nG1 X#2\n", "t.nc");
   REQUIRE(r.ok());
   CHECK(r.parsed.blocks[1].text == "#2 = 6");
-  CHECK(errors("M98 P1000\n") == "1:1: call of O1000: no such label in this file\n");
+  CHECK(errors("M98 P1000\n") == "1:1: call of O1000: no label O1000 in this file, and no directory to look for its file "
+                                  "O1000, O1000.nc or 1000.nc in (--include-dir DIR names the directory that holds it)\n");
   CHECK(errors("G1 X1.\nM99\n") ==
         "2:1: M99 in the main program: the control runs the program again from its start, without end (kin5 "
         "translates a program that ends: M30 or M2)\n");
@@ -252,7 +253,8 @@ TEST_CASE("LinuxCNC o-words: each construct, and what is refused", "[flow]") {
   CHECK(moves("#<i> = 0\no1 do\n#<i> = [#<i> + 1]\nG1 X#<i> F100\no1 while [#<i> LT 2]\no2 repeat [2]\nG1 Y1\n"
               "o2 endrepeat\n") == "0.000 0.000 0.000\n1.000 0.000 0.000\n2.000 0.000 0.000\n2.000 1.000 0.000\n"
                                    "2.000 1.000 0.000\n");
-  CHECK(errors("o<probe> call [1]\n") == "1:1: call of o<probe>: no such label in this file\n");
+  CHECK(errors("o<probe> call [1]\n") == "1:1: call of o<probe>: no label o<probe> in this file, and no directory to look "
+                                          "for its file probe.ngc in (--include-dir DIR names the directory that holds it)\n");
   CHECK(errors("o1 repeat [2]\no1 break\no1 endrepeat\n") ==
         "2:1: o1 break: break and continue name a while or do loop of their o-word, and o1 is none (LinuxCNC stops: "
         "\"no matching while/do label\")\n");

@@ -10,9 +10,20 @@
 /// only labels are indexed, by one scan when the first jump or call needs one, so memory grows
 /// with the labels and the open calls and loops, not with the program's length.
 ///
+/// A call whose target no label of the text defines, and whose statement names the files that
+/// may hold it (`statement::files`), runs another file: the `file_opener` given to
+/// `open_files_with` finds and loads it (none given: the call is refused, naming the files).
+/// The called file runs as a text of its own, with its own labels and the same parameters and
+/// bounds, from the label the call names when the file defines it (LinuxCNC's `o<name> sub`),
+/// else from its first line, until a return with no call of its own open (M99, M17, RET,
+/// `endsub`) or the end of its program (END PGM, M30): then the caller goes on. Its errors name
+/// its path (`flow_error::file`); `file()` says which file the line being read is in. A file is
+/// loaded once per run, when first called, and kept for the calls after.
+///
 /// Bounds, each an error at the statement that passes it, after which nothing more runs (the
 /// path is unknown): `max_executed_lines` lines executed in all (a loop that never ends);
-/// `max_call_depth` calls open (parameter_store.hpp); `max_open_loops` loops open.
+/// `max_call_depth` calls open (parameter_store.hpp), calls of files included (a file that
+/// calls itself stops there); `max_open_loops` loops open.
 /// @code
 ///   kin5::program::interp::executor run{text, kin5::program::linuxcnc::parameter_rules()};
 ///   run.execute(syntax,                                   // syntax.statement_of(text_line) -> statement
@@ -25,10 +36,14 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -53,22 +68,55 @@ struct flow_error {
   std::size_t line = 0;
   std::size_t column = 1;
   std::string message;
+  std::string file{};  ///< the called file the statement is in (its path); empty: the main text
 };
+
+/// A file a call runs, as a `file_opener` found it.
+struct called_file {
+  std::string path;    ///< as errors in it name it
+  std::string text;    ///< its whole text
+  std::string error{};  ///< not empty: the file was found but cannot be run, and why
+};
+
+/// Finds the file a call names: `(target, names)` → the first of the file names `names` (the
+/// dialect's, for the call's `target`) that exists, loaded; none when no file has one of them.
+using file_opener = std::function<std::optional<called_file>(const std::string& target, const std::vector<std::string>& names)>;
 
 /// Runs one program's text (see the file comment).
 class executor {
  public:
   executor(std::string_view text, parameter_rules rules, execution_limits limits = {})
-      : text_(text), parameters_(std::move(rules)), limits_(limits) {}
+      : owned_(std::make_unique<run_state>(std::move(rules))),
+        run_(*owned_),
+        text_(text),
+        parameters_(run_.parameters),
+        executed_(run_.executed),
+        call_lines_(run_.call_lines),
+        limits_(limits) {}
+  executor(const executor&) = delete;
+  executor& operator=(const executor&) = delete;
 
   parameter_store& parameters() { return parameters_; }
   const parameter_store& parameters() const { return parameters_; }
 
-  /// The lines of the calls open now, outermost first (empty in the main program).
+  /// The lines of the calls open now, outermost first (empty in the main program); a call of a
+  /// file gives the line of its calling statement, in the file that calls.
   const std::vector<std::size_t>& call_lines() const { return call_lines_; }
 
   /// Lines executed so far.
   std::uint64_t executed_lines() const { return executed_; }
+
+  /// Lets calls run other files, found by `open` (see the file comment).
+  void open_files_with(file_opener open) { run_.open = std::move(open); }
+
+  /// The path of the called file whose line runs now; empty in the main text.
+  const std::string& file() const {
+    static const std::string main_text;
+    return run_.running.empty() ? main_text : run_.running.back()->path;
+  }
+
+  /// Files loaded by calls so far (each once).
+  std::size_t files_loaded() const { return run_.files.size(); }
 
   /// Runs the program from its first line. `syntax.statement_of(const text_line&)` says what
   /// each line is; `on_line(const text_line&, const statement&)` reads each ordinary line
@@ -76,7 +124,18 @@ class executor {
   /// the error that stops the run. Returns false when an error stopped it.
   template <class Syntax, class OnLine, class OnError>
   bool execute(Syntax& syntax, OnLine&& on_line, OnError&& on_error) {
-    for (position at{0, 1}; at.offset < text_.size();) {
+    return execute_from(position{0, 1}, syntax, on_line, on_error);
+  }
+
+ private:
+  struct position {
+    std::size_t offset = 0;  ///< of the line's first byte; the text's size: its end
+    std::size_t number = 1;  ///< 1-based line number
+  };
+
+  template <class Syntax, class OnLine, class OnError>
+  bool execute_from(position start, Syntax& syntax, OnLine& on_line, OnError& on_error) {
+    for (position at = start; at.offset < text_.size();) {
       const line_at here = line_of(at);
       if (++executed_ > limits_.max_executed_lines) return fail(on_error, here.line, limit_message());
       const statement s = syntax.statement_of(here.line);
@@ -89,12 +148,21 @@ class executor {
       switch (*runs ? s.kind : statement_kind::label) {
         case statement_kind::ordinary:
           on_line(here.line, s);
-          if (s.ends_program) return true;
+          if (s.ends_program) return end_of_file_call();
           break;
         case statement_kind::label:
         case statement_kind::end_if: break;
         case statement_kind::jump: next = jump(syntax, s, at, here.line, on_error); break;
-        case statement_kind::call: next = call(syntax, s, at, here, on_error); break;
+        case statement_kind::call:
+          if constexpr (runs_files<Syntax>) {
+            if (!s.files.empty() && !find_label(syntax, s.target, s.direction, at)) {
+              if (!call_file(syntax, s, here, on_line, on_error)) return false;
+              next = here.next;
+              break;
+            }
+          }
+          next = call(syntax, s, at, here, on_error);
+          break;
         case statement_kind::subprogram: {  // reached in the program's flow: its body is skipped
           const auto end = find_end_of_subprogram(syntax, here.next, s.key);
           if (!end) return fail(on_error, here.line, "subprogram " + s.key + " has no end");
@@ -103,6 +171,10 @@ class executor {
         }
         case statement_kind::return_from_call:
           if (!in_subprogram()) {
+            if (caller_) {  // the called file's end
+              while (!calls_.empty()) drop_call();
+              return true;
+            }
             if (s.ends_program) return true;
             if (s.only_in_call) break;
             return fail(on_error, here.line, "returns from a call, but no call is open");
@@ -136,17 +208,15 @@ class executor {
       if (next->offset >= text_.size() && !calls_.empty())
         return fail(on_error, here.line,
                     "the text ends inside the call from line " + std::to_string(calls_.back().from.number));
+      if (next->offset >= text_.size() && caller_)
+        return fail(on_error, here.line, "the called file ends without returning to the call from line " +
+                                             std::to_string(call_lines_.back()));
       at = *next;
     }
     if (!loops_.empty()) return fail(on_error, line_of(loops_.back().begin).line, "a loop without its end");
     return true;
   }
 
- private:
-  struct position {
-    std::size_t offset = 0;  ///< of the line's first byte; the text's size: its end
-    std::size_t number = 1;  ///< 1-based line number
-  };
   struct line_at {
     text_line line;
     position next;  ///< the next line's start (the end of the text after the last line)
@@ -177,12 +247,40 @@ class executor {
     position at;
   };
 
+  /// What the main text's executor and those of the files it calls share.
+  struct run_state {
+    explicit run_state(parameter_rules rules) : parameters(std::move(rules)) {}
+    parameter_store parameters;
+    std::uint64_t executed = 0;
+    std::vector<std::size_t> call_lines;
+    file_opener open{};
+    std::map<std::string, std::shared_ptr<const called_file>, std::less<>> files{};  // by the call's target
+    std::vector<const called_file*> running{};  // the called files open, outermost first
+  };
+
+  /// A called file's executor: the caller's run, `file`'s text.
+  executor(executor& caller, const called_file& file)
+      : run_(caller.run_),
+        text_(file.text),
+        parameters_(run_.parameters),
+        executed_(run_.executed),
+        call_lines_(run_.call_lines),
+        limits_(caller.limits_),
+        caller_(&caller),
+        outer_calls_(caller.outer_calls_ + caller.calls_.size() + 1),
+        outer_loops_(caller.outer_loops_ + caller.loops_.size()) {}
+
+  std::unique_ptr<run_state> owned_;  // the main text's executor's
+  run_state& run_;
   std::string_view text_;
-  parameter_store parameters_;
+  parameter_store& parameters_;
+  std::uint64_t& executed_;
+  std::vector<std::size_t>& call_lines_;
   execution_limits limits_;
-  std::uint64_t executed_ = 0;
+  executor* caller_ = nullptr;    // a called file's executor: the one that called it
+  std::size_t outer_calls_ = 0;   // calls open in the callers, the file calls included
+  std::size_t outer_loops_ = 0;   // loops open in the callers
   std::vector<open_call> calls_;
-  std::vector<std::size_t> call_lines_;
   std::vector<open_loop> loops_;
   std::optional<std::vector<label_entry>> labels_;  // in file order, once scanned
   bool entering_else_if_ = false;                   // a false branch passed control to this ELSEIF
@@ -214,9 +312,17 @@ class executor {
       column = 1;
       while (column <= line.text.size() && (line.text[column - 1] == ' ' || line.text[column - 1] == '\t')) ++column;
     }
-    on_error(flow_error{line.number, column, std::move(message)});
+    on_error(flow_error{line.number, column, std::move(message), run_.running.empty() ? std::string() : run_.running.back()->path});
     return false;
   }
+
+  /// The program ends at this line: in a called file, the call ends instead (see the file comment).
+  bool end_of_file_call() {
+    if (caller_) while (!calls_.empty()) drop_call();
+    return true;
+  }
+
+  std::size_t calls_open() const { return outer_calls_ + calls_.size(); }
 
   template <class OnError>
   std::optional<position> failed(OnError& on_error, const text_line& line, std::string message, std::size_t column = 0) {
@@ -364,19 +470,120 @@ class executor {
       end = *last;
     }
     if (s.call_frame) {
-      if (!parameters_.enter_call())
-        return failed(on_error, here.line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) + " deep");
-      for (const argument& a : s.arguments) {
-        const evaluation v = evaluate(a.value, parameters_);
-        if (!v.ok()) return failed(on_error, here.line, v.error->message, v.error->where.column);
-        if (auto why = parameters_.assign(a.key, v.value)) return failed(on_error, here.line, *why);
-      }
-    } else if (calls_.size() >= parameter_store::max_call_depth) {
+      if (!enter_frame(s, here.line, on_error)) return std::nullopt;
+    } else if (calls_open() >= parameter_store::max_call_depth) {
       return failed(on_error, here.line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) + " deep");
     }
     calls_.push_back({at, here.next, start, *count, s.ends, end, s.call_frame, loops_.size()});
     call_lines_.push_back(here.line.number);
     return start;
+  }
+
+  /// Names `names` as a list: "A", "A or B", "A, B or C".
+  static std::string one_of(const std::vector<std::string>& names) {
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i)
+      out += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+    return out;
+  }
+
+  /// The loaded file that holds `s`'s target (loaded now when first called); none after
+  /// reporting why there is none.
+  template <class OnError>
+  std::shared_ptr<const called_file> file_of(const statement& s, const text_line& line, OnError& on_error) {
+    const std::string what = "call of " + s.target + ": ";
+    if (!run_.open) {
+      fail(on_error, line, what + "no label " + s.target + " in this file, and no directory to look for its file " +
+                               one_of(s.files) + " in (--include-dir DIR names the directory that holds it)");
+      return nullptr;
+    }
+    auto found = run_.files.find(s.target);
+    if (found == run_.files.end()) {
+      std::optional<called_file> f = run_.open(s.target, s.files);
+      if (!f) {
+        fail(on_error, line, what + "no label " + s.target + " in this file, nor a file " + one_of(s.files) +
+                                 " in the include directories (--include-dir)");
+        return nullptr;
+      }
+      if (!f->error.empty()) {
+        fail(on_error, line, what + f->path + ": " + f->error);
+        return nullptr;
+      }
+      found = run_.files.emplace(s.target, std::make_shared<const called_file>(std::move(*f))).first;
+    }
+    return found->second;
+  }
+
+  /// A call of another file (see the file comment): its passes run, each to its file's return
+  /// or end; false after reporting an error (in the caller or in the file).
+  template <class Syntax, class OnLine, class OnError>
+  bool call_file(Syntax& syntax, const statement& s, const line_at& here, OnLine& on_line, OnError& on_error) {
+    const auto count = count_of(s, here.line, on_error);
+    if (!count) return false;
+    if (*count == 0) return true;
+    const std::shared_ptr<const called_file> file = file_of(s, here.line, on_error);
+    if (!file) return false;
+    if (calls_open() >= parameter_store::max_call_depth)
+      return fail(on_error, here.line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) +
+                                           " deep (a file that calls itself without end?)");
+    for (std::uint64_t pass = 0; pass < *count; ++pass) {
+      if (s.call_frame && !enter_frame(s, here.line, on_error)) return false;
+      call_lines_.push_back(here.line.number);
+      run_.running.push_back(file.get());
+      executor called{*this, *file};
+      Syntax called_syntax = syntax_for(syntax, std::string_view(file->text));
+      const bool ok = called.run_file(called_syntax, s.target, on_line, on_error);
+      run_.running.pop_back();
+      call_lines_.pop_back();
+      if (!ok) return false;
+      if (s.call_frame) parameters_.leave_call();
+    }
+    return true;
+  }
+
+  /// Whether a syntax can be had for another text (`syntax_for`): only then are calls of files run.
+  template <class Syntax>
+  static constexpr bool runs_files = requires(Syntax& s, std::string_view t) { s.for_text(t); } ||
+                                     std::is_constructible_v<Syntax, std::string_view> ||
+                                     std::is_default_constructible_v<Syntax>;
+
+  /// The syntax of another text: `syntax.for_text(text)` when the dialect's syntax has one, else
+  /// one made from the text, or a fresh one (a syntax that keeps nothing of its text).
+  template <class Syntax>
+  static Syntax syntax_for(Syntax& syntax, std::string_view text) {
+    if constexpr (requires { syntax.for_text(text); }) return syntax.for_text(text);
+    else if constexpr (std::is_constructible_v<Syntax, std::string_view>) return Syntax(text);
+    else return Syntax();
+  }
+
+  /// Runs this called file: from the line after its label `target` when it defines one (a
+  /// subprogram's first line), else from its first line.
+  template <class Syntax, class OnLine, class OnError>
+  bool run_file(Syntax& syntax, const std::string& target, OnLine& on_line, OnError& on_error) {
+    position start{0, 1};
+    if (const auto l = find_label_at_or_after(syntax, target, start)) {
+      const statement first = syntax.statement_of(line_of(*l).line);
+      start = first.kind == statement_kind::label || first.kind == statement_kind::subprogram ? after(*l) : *l;
+    }
+    return execute_from(start, syntax, on_line, on_error);
+  }
+
+  /// Opens the frame of local parameters of call `s` and sets its arguments, evaluated with the
+  /// caller's parameters (`o2 call [#1]` passes the caller's #1); false after reporting an error.
+  template <class OnError>
+  bool enter_frame(const statement& s, const text_line& line, OnError& on_error) {
+    std::vector<double> values;
+    values.reserve(s.arguments.size());
+    for (const argument& a : s.arguments) {
+      const evaluation v = evaluate(a.value, parameters_);
+      if (!v.ok()) return fail(on_error, line, v.error->message, v.error->where.column);
+      values.push_back(v.value);
+    }
+    if (!parameters_.enter_call())
+      return fail(on_error, line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) + " deep");
+    for (std::size_t i = 0; i < values.size(); ++i)
+      if (auto why = parameters_.assign(s.arguments[i].key, values[i])) return fail(on_error, line, *why);
+    return true;
   }
 
   /// The running pass of the innermost call is over: run it again or go back to the caller.
@@ -468,7 +675,7 @@ class executor {
   std::optional<position> loop_top(Syntax& syntax, const statement& s, position at, const line_at& here, OnError& on_error) {
     const bool again = in_loop() && loops_.back().begin.offset == at.offset;  // back at the top: test again
     if (!again) {
-      if (loops_.size() >= limits_.max_open_loops)
+      if (outer_loops_ + loops_.size() >= limits_.max_open_loops)
         return failed(on_error, here.line, "loops nested more than " + std::to_string(limits_.max_open_loops) + " deep");
       std::uint64_t runs = 0;
       if (s.loop == loop_kind::counted) {

@@ -110,6 +110,9 @@ struct statement {
   bool ends_program = false;
   std::vector<assignment> assignments{};         ///< run in order before the line is read
   std::vector<argument> arguments{};             ///< on `call`
+  /// On `call`: the names of the files that may hold the target, tried in order, when no label
+  /// of this text is the target (executor.hpp); empty: a call within this text only.
+  std::vector<std::string> files{};
   std::optional<expression_error> error{};       ///< the line cannot be read as a statement: the run stops here
 };
 

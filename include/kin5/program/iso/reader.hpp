@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../called_files.hpp"
 #include "../interp/evaluate.hpp"
 #include "../interp/executor.hpp"
 #include "../lexing.hpp"
@@ -71,20 +72,37 @@ class basic_reader {
   /// statement.
   void run(std::string_view text, interp::execution_limits limits = {current_read_limits().max_executed_lines}) {
     interp::executor x{text, Own::parameter_rules(), limits};
+    x.open_files_with(called_file_opener(current_read_limits()));
     store_ = &x.parameters();
     call_lines_ = &x.call_lines();
     typename Own::syntax syntax{text};
     std::optional<text_line> ended;
+    const file_name main_file = file_;
+    std::string running;  // the called file being read; empty: the main text
+    const auto in_file = [&](const std::string& path) {
+      if (path == running) return;
+      running = path;
+      file_ = path.empty() ? main_file : file_name(path);
+      in_called_file_ = !path.empty();
+    };
     const bool ran = x.execute(
         syntax,
         [&](const text_line& line, const interp::statement& s) {
+          in_file(x.file());
           read_line(line, s);
-          if (s.ends_program) ended = line;
+          if (s.ends_program && !running.empty()) {
+            line_ = line.number;
+            error(1, "the end of the program (M30, M2) in a called program: end it with M99, which returns to the "
+                     "caller");
+          }
+          if (s.ends_program && running.empty()) ended = line;
         },
         [&](const interp::flow_error& e) {
+          in_file(e.file);
           line_ = e.line;
           error(e.column, syntax.explain(e.message));
         });
+    in_file({});
     if (ran && ended && call_lines_->empty()) {
       // The lines after the end, split as the executor splits them (LF, CRLF or a lone CR).
       std::size_t offset = static_cast<std::size_t>(ended->text.data() - text.data()) + ended->text.size();
@@ -117,6 +135,7 @@ class basic_reader {
   Own own_;
   interp::parameter_store* store_ = nullptr;               // the running program's parameters
   const std::vector<std::size_t>* call_lines_ = nullptr;  // the running program's open calls
+  bool in_called_file_ = false;                           // the line read is in a file a call runs
   std::map<interp::parameter_key, parameter_literal> literals_;  // parameters last assigned a number, as written
   std::vector<interp::expression> values_;                // the computed values of this line's words
   std::deque<std::string> substituted_;                   // the text of this line's computed words
@@ -150,6 +169,7 @@ class basic_reader {
         on_block_(std::move(b));
         return;
       }
+    if (s[first] == '%' && in_called_file_) return;  // a called file's tape marks: the program's are the main text's
     if (s[first] == '%') {  // a tape mark (FANUC B-64014EN/03 §2.5; LinuxCNC file delimiters)
       b.passthrough = true;
       b.framing = true;

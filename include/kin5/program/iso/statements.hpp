@@ -8,6 +8,7 @@
 /// first character, so an ordinary line costs a few byte comparisons.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 #include <set>
@@ -181,6 +182,22 @@ class basic_macro_statements {
   /// or may call: a program (`O1000`) or a block a call went to (M97's `N1000`).
   bool starts_called_part(const interp::statement& s) const {
     return !s.label.empty() && (s.label[0] == 'O' || called_.count(s.label) > 0);
+  }
+
+  /// The files that may hold program number `n` when this file does not (docs/dialects/iso.md):
+  /// `O1000`, `O1000.nc`, `1000.nc`, and the same with the number padded to the control's
+  /// digits (FANUC four: `O0100`; Haas five: `O00100`).
+  static std::vector<std::string> file_names(long n) {
+    std::vector<std::string> names;
+    const auto add = [&](const std::string& digits) {
+      for (std::string name : {"O" + digits, "O" + digits + ".nc", digits + ".nc"})
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(std::move(name));
+    };
+    const std::string digits = std::to_string(n);
+    add(digits);
+    const std::size_t width = Haas ? 5 : 4;
+    if (digits.size() < width) add(std::string(width - digits.size(), '0') + digits);
+    return names;
   }
 
   /// A flow error's message in this dialect's terms.
@@ -415,6 +432,7 @@ class basic_macro_statements {
     out.kind = interp::statement_kind::call;
     labels_wanted_ = true;
     out.target = found == 97 ? block_label(number, text) : "O" + std::to_string(number);
+    if (found != 97) out.files = file_names(number);
     called_.insert(out.target);
     out.call_frame = found == 65;
     out.ends_program = false;

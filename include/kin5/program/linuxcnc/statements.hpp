@@ -14,8 +14,10 @@
 /// | `repeat [n]` … `endrepeat` | a loop run n times |
 /// | `break`, `continue` | leave the while or do loop of their o-word, go to its end (not a `repeat`'s: rs274 stops there) |
 /// Statements pair by their o-word. A value after `endsub` or `return` sets only `#<_value>`,
-/// which kin5 does not read (it is the control's): it is read and left. A call of a subroutine
-/// this file does not define is refused, naming it (LinuxCNC would search its subroutine path).
+/// which kin5 does not read (it is the control's): it is read and left. A call of a named
+/// subroutine this file does not define runs the file `name.ngc` that defines it, found in the
+/// reading's include directories as LinuxCNC searches its SUBROUTINE_PATH (User Manual, "O
+/// Codes", "Calling Files"; ../called_files.hpp); without one it is refused, naming the file.
 /// Any other line is ordinary, perhaps a parameter setting (`#1 = 5000`, `#<feed> = [#1 * 2]`, `#[#1] = sin[30]`,
 /// `#1 = 2 #2 = 3`: LinuxCNC User Manual, "G-code Overview", "Parameters": each value one
 /// operand, a number, parameter, function or bracketed expression). rs274 reads every value
@@ -165,6 +167,7 @@ class statements {
       if (v < code && s[v] == '[') after = bracketed(s, v, code, line.number, shown, out, value);
     } else if (keyword == "call") {
       out.kind = statement_kind::call, out.target = key;
+      if (key.size() > 3 && key[1] == '<') out.files = {key.substr(2, key.size() - 3) + ".ngc"};
       for (std::size_t v = lexing::skip_blanks(s.substr(0, code), i); after && v < code && s[v] == '[';
            v = lexing::skip_blanks(s.substr(0, code), *after)) {
         if (out.arguments.size() == 30)

@@ -7,7 +7,9 @@
 
 #include <kin5/program/address_words.hpp>
 #include <kin5/program/iso/dialect.hpp>
+#include <kin5/program/read_limits.hpp>
 
+#include "../called_dir.hpp"
 #include "../example.hpp"
 
 using namespace kin5::program;
@@ -218,4 +220,44 @@ TEST_CASE("iso: a number written only in a parameter counts for the program's re
   CHECK(later.linear_decimals == 1);
   const auto unassigned = scan_resolution("G1 X#7 Y1.25\n", iso_id);
   CHECK(unassigned.linear_decimals == 2);
+}
+
+TEST_CASE("iso: M98 and G65 of a program in another file run it when its directory is given") {
+  const called_dir dir("iso-calls");
+  dir.write("o1000.NC", "%\nO1000 (POCKET)\nG1 X#100 F100.\n#100 = #100 + 1.\nM99\n%\n");  // another case
+  dir.write("O0020", "O0020\nG1 Y#1\nM99\n");                                              // padded to 4 digits
+  dir.write("1003.nc", "G1 Z1.\nG1 Z#101\nM99\n");
+  const std::string main = "#100 = 1.\nM98 P21000\nG65 P20 A7.\nM98 P1003\nM30\n";
+  read_limits limits;
+  limits.include_dirs = {(dir.path / "none").string(), dir.path.string()};
+  {
+    const read_limits_scope scope(limits);
+    const read_result r = iso::read(main, "main.nc");
+    REQUIRE(r.errors.size() == 1);  // #101 has no value: the error is in the called file, at its line
+    CHECK(r.errors[0].where.file.str() == (dir.path / "1003.nc").string());
+    CHECK(r.errors[0].where.line == 2);
+    std::vector<double> x, y;
+    for (const block& b : r.parsed.blocks) {
+      if (b.axes.x_mm) x.push_back(*b.axes.x_mm);
+      if (b.axes.y_mm) y.push_back(*b.axes.y_mm);
+      CHECK_FALSE(b.framing);  // a called file's % lines are its own, not the program's
+    }
+    CHECK(x == std::vector<double>{1., 2.});
+    CHECK(y == std::vector<double>{7.});
+    CHECK(r.parsed.blocks[1].where.file.str() == (dir.path / "o1000.NC").string());
+    CHECK(r.parsed.blocks[1].where.line == 3);
+  }
+  // Without the directory, the call is refused at its line, naming the files it would need.
+  const read_result none = iso::read(main, "main.nc");
+  REQUIRE_FALSE(none.errors.empty());
+  CHECK(none.errors[0].to_string() ==
+        "main.nc:2:1: error: call of O1000: no label O1000 in this file, and no directory to look for its file O1000, "
+        "O1000.nc or 1000.nc in (--include-dir DIR names the directory that holds it)");
+  // M30 in a called program is refused: it ends with M99.
+  dir.write("O7.nc", "G1 X1.\nM30\n");
+  const read_limits_scope scope(limits);
+  const read_result ends = iso::read("M98 P7\nM30\n", "main.nc");
+  REQUIRE_FALSE(ends.errors.empty());
+  CHECK(ends.errors[0].where.line == 2);
+  CHECK(ends.errors[0].message.starts_with("the end of the program (M30, M2) in a called program"));
 }

@@ -9,7 +9,9 @@
 #include <kin5/program/address_words.hpp>
 #include <kin5/program/io.hpp>
 #include <kin5/program/linuxcnc/dialect.hpp>
+#include <kin5/program/read_limits.hpp>
 
+#include "../called_dir.hpp"
 #include "../example.hpp"
 
 using namespace kin5::program;
@@ -150,4 +152,43 @@ TEST_CASE("linuxcnc: a number written only in a named parameter counts for the p
   CHECK(r.angle_decimals == 5);
   const auto computed = scan_resolution("#<z> = 10.1234\n#<z> = [#1 * 2]\nG1 X#<z> Y1.5\n", id);
   CHECK(computed.linear_decimals == 1);
+}
+
+TEST_CASE("linuxcnc: o<name> call of a subroutine in name.ngc, from the include directories") {
+  const called_dir dir("linuxcnc-calls");
+  // The file holds the subroutine (LinuxCNC's subroutine path); its own locals, its own file.
+  dir.write("corner.ngc", "%\n(a corner)\no<corner> sub\n#<d> = [#1 * 2]\nG1 X#<d> Y#2 F100\no<corner> endsub\nM2\n%\n");
+  dir.write("twice.ngc", "o<twice> sub\no<corner> call [#1] [1]\no<corner> call [#1] [2]\no<twice> endsub\n");
+  const std::string main = "G21 G90\no<twice> call [5]\nG0 Z10\nM2\n";
+  read_limits limits;
+  limits.include_dirs = {dir.path.string()};
+  {
+    const read_limits_scope scope(limits);
+    const read_result r = linuxcnc::read(main, "main.ngc");
+    REQUIRE(r.errors.empty());
+    std::vector<std::string> moves;
+    for (const block& b : r.parsed.blocks)
+      if (b.axes.x_mm || b.axes.z_mm)
+        moves.push_back(std::filesystem::path(b.where.file.str()).filename().string() + ":" + std::to_string(b.where.line) + " " +
+                        (b.axes.x_mm ? "X" + std::to_string(static_cast<int>(*b.axes.x_mm)) : "") +
+                        (b.axes.y_mm ? "Y" + std::to_string(static_cast<int>(*b.axes.y_mm)) : "") +
+                        (b.axes.z_mm ? "Z" + std::to_string(static_cast<int>(*b.axes.z_mm)) : ""));
+    CHECK(moves == strings{"corner.ngc:5 X10Y1", "corner.ngc:5 X10Y2", "main.ngc:3 Z10"});
+  }
+  const read_result none = linuxcnc::read(main, "main.ngc");
+  REQUIRE(none.errors.size() == 1);
+  CHECK(none.errors[0].to_string() ==
+        "main.ngc:2:1: error: call of o<twice>: no label o<twice> in this file, and no directory to look for its file "
+        "twice.ngc in (--include-dir DIR names the directory that holds it)");
+}
+
+TEST_CASE("linuxcnc: a call's arguments take the caller's values (rs274: X3.)") {
+  const read_result r =
+      linuxcnc::read("#1 = 5\no<a> call [3]\nM2\no<a> sub\no<b> call [#1]\no<a> endsub\no<b> sub\nG1 X#1 F100\no<b> endsub\n",
+                     "args.ngc");
+  REQUIRE(r.errors.empty());
+  std::vector<double> x;
+  for (const block& b : r.parsed.blocks)
+    if (b.axes.x_mm) x.push_back(*b.axes.x_mm);
+  CHECK(x == std::vector<double>{3.});
 }
