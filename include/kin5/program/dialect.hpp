@@ -18,7 +18,9 @@
 /// | `writer` | its block-by-block writer: `writer(source, file, options)`, `write(out, block)` |
 ///
 /// An entry carries no id: at run time a dialect is its place in the list (`program::dialect`,
-/// `id_of<D>()`), so nothing outside the folder and this list names it.
+/// `id_of<D>()`). `dialect_order` (program/dialect_id.hpp) names the entries in the same order, so
+/// that a dialect's header needs neither this list nor the other dialects; a static_assert below
+/// checks that the two agree.
 #pragma once
 
 #include <array>
@@ -87,12 +89,6 @@ struct index_in<D, std::tuple<E...>> {
 template <class D, class List>
 inline constexpr dialect id_in{detail::index_in<D, List>::value};
 
-/// Entry D of `program::dialects` as a run-time value.
-template <class D>
-constexpr dialect id_of() {
-  return id_in<D, dialects>;
-}
-
 /// Calls `f(std::type_identity<D>{}, index)` for every dialect D of the list, in order. Every
 /// fold below takes the list as a template argument, `dialects` by default, so a test can run
 /// them on the list with one entry more (tests/property/dialects/adding_a_dialect.cpp).
@@ -135,10 +131,22 @@ constexpr bool distinct_names() {
   });
   return distinct;
 }
+
+/// Whether `dialect_order` (program/dialect_id.hpp) names the entries in the list's order, so
+/// that `id_of<D>()` is D's place in the list.
+constexpr bool ids_follow_the_list() {
+  bool agree = dialect_order.size() == dialect_count;
+  for_each_dialect([&]<class D>(std::type_identity<D>, std::size_t i) {
+    if (i >= dialect_order.size() || dialect_order[i] != D::name || id_of<D>() != dialect(i)) agree = false;
+  });
+  return agree;
+}
 }  // namespace detail
 
 static_assert(detail::all_dialects<dialects>::value, "every entry of program::dialects is an nc_dialect");
 static_assert(detail::distinct_names(), "every dialect has its own name");
+static_assert(detail::ids_follow_the_list(),
+              "dialect_order (program/dialect_id.hpp) names the entries of program::dialects in its order");
 static_assert(dialect_count < 256, "a dialect's index fits its byte");
 
 /// The capabilities of dialect `d` (all false for a value that names no dialect).

@@ -8,8 +8,9 @@
 /// Each entry of `program::dialects` (program/dialect.hpp) carries one `capabilities`, one
 /// `controller` and an array of `marker`s; the translation asks them (can the target write G93?
 /// how many decimals does its controller read?), and `guess_dialect` looks for the markers.
-/// `id_of<D>()` is entry D's `dialect`; program/dialect.hpp defines it after the list, so a
-/// dialect's own folder can name itself before the list is complete.
+/// `dialect_order` names the entries in the list's order, so a dialect's folder knows its own id
+/// and another's (`id_named("iso")`, `id_of<D>()`) without including the list and so every other
+/// dialect; program/dialect.hpp checks that the two orders agree.
 #pragma once
 
 #include <array>
@@ -41,9 +42,24 @@ class dialect {
 /// The name the dialect folders use for `program::dialect` (each folder has a `dialect` of its own).
 using dialect_id = dialect;
 
-/// Entry D of `program::dialects` as a run-time value (defined in program/dialect.hpp).
+/// The names of the entries of `program::dialects`, in its order: a dialect's id is its name's
+/// place here. program/dialect.hpp asserts that the list and this table agree, so a new entry
+/// there needs its name here, in the same place.
+inline constexpr std::array<std::string_view, 6> dialect_order{"siemens", "heidenhain", "iso",
+                                                               "linuxcnc", "haas", "apt"};
+
+/// The dialect named `name` in `dialect_order`; a name that is not there does not compile.
+consteval dialect id_named(std::string_view name) {
+  for (std::size_t i = 0; i < dialect_order.size(); ++i)
+    if (dialect_order[i] == name) return dialect(i);
+  throw "id_named: no entry of dialect_order has this name";
+}
+
+/// Entry D of `program::dialects` as a run-time value (its `name`'s place in `dialect_order`).
 template <class D>
-constexpr dialect id_of();
+constexpr dialect id_of() {
+  return id_named(D::name);
+}
 
 /// What a dialect's writer can express. Each flag is checked against the writer by the dialect
 /// law suite: a capability that is false makes the writer refuse (or, for TCP switches, note) the
@@ -104,7 +120,7 @@ struct controller {
 };
 
 /// What the controller of dialect `d` reads, asked from the folder of entry `Self`, which cannot
-/// name the list (`controller_of`; defined in program/dialect.hpp, as `id_of` is).
+/// name the list (`controller_of`; defined in program/dialect.hpp, after the list).
 template <class Self>
 constexpr controller controller_from(dialect d);
 

@@ -2,8 +2,9 @@
 // a small dialect declared here, put in a list with the others, is named, parsed, guessed and
 // read by the same folds that serve the real list, with no other edit. Most checks are
 // `static_assert`s: if any fold grows a per-dialect case, this file stops compiling. The entry
-// declares no id: its run-time value is its place in the list (`id_in`), so no enum, table or
-// switch outside the folder and the list names a dialect.
+// declares no id: its run-time value is its place in the list (`id_in`), so no enum or switch
+// outside the folder and the list names a dialect (the real list's names are also in
+// `dialect_order`, so that a dialect's header needs no other; a toy list needs no such table).
 #include <algorithm>
 #include <array>
 #include <cstddef>

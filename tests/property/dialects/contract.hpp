@@ -28,7 +28,7 @@
 #include <vector>
 
 #include <kin5/program/block.hpp>
-#include <kin5/program/dialect.hpp>
+#include <kin5/program/dialect_id.hpp>
 
 #include "model_difference.hpp"
 

@@ -55,7 +55,7 @@ class writer {
   /// A writer for blocks read from `source` (another dialect's blocks keep their text in `$$`
   /// comments). Blocks name themselves in messages: `file` is not needed.
   explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
-      : same_(source == id_of<dialect>()),
+      : same_(source == id_named("apt")),
         source_language_(source),
         off_first_(controller_from<dialect>(source).spindle_off_before_motion),
         options_(chosen) {

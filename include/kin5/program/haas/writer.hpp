@@ -16,13 +16,7 @@
 #include "../iso/writer.hpp"
 #include "vocabulary.hpp"
 
-namespace kin5::program::iso {
-struct dialect;
-}
-
 namespace kin5::program::haas {
-
-struct dialect;  // this folder's entry of `program::dialects` (dialect.hpp)
 
 /// Decimals written for each kind of number: as ISO's (`iso::write_options`); the spelling is
 /// always Haas's.
@@ -34,7 +28,7 @@ class writer {
   /// A writer for blocks read from `source`: the ISO writer writes a Haas program's own kept
   /// words and passthrough lines back as they are, another dialect's as comments.
   explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
-      : iso_(source == id_of<dialect>() ? id_of<iso::dialect>() : id_of<dialect>(), std::move(file), haas_options(chosen)) {}
+      : iso_(source == id_named("haas") ? id_named("iso") : id_named("haas"), std::move(file), haas_options(chosen)) {}
 
   /// Appends the line of block `b` to `out`; throws `std::invalid_argument` naming the block
   /// when Haas cannot say it.

@@ -25,7 +25,7 @@ namespace kin5::program::heidenhain {
 /// Reads a Heidenhain conversational program. Never throws on bad input: problems are in
 /// `errors` (and `warnings`), each at the offending word's line and column.
 inline read_result read(std::string_view text, std::string file_name) {
-  return read_whole(id_of<dialect>(), text, std::move(file_name), static_cast<block_reader>(&read_blocks));
+  return read_whole(id_named("heidenhain"), text, std::move(file_name), static_cast<block_reader>(&read_blocks));
 }
 
 /// The Heidenhain conversational dialect: its id, capabilities, file markers, reader and writer.
@@ -62,5 +62,3 @@ struct dialect {
 };
 
 }  // namespace kin5::program::heidenhain
-
-#include "../dialect.hpp"  // id_of<dialect>(): this entry's place in the list

@@ -44,8 +44,6 @@
 
 namespace kin5::program::heidenhain {
 
-struct dialect;  // this folder's entry of `program::dialects` (dialect.hpp)
-
 /// The error number written for another dialect's alarm stop: `FN 14: ERROR = 1`, among the
 /// numbers 0 … 299 whose text is the control's plain "FN 14: ERROR CODE n", naming no cause of
 /// its own (docs/dialects/heidenhain.md).
@@ -60,7 +58,7 @@ class writer {
   /// A writer for blocks read from `source` (another dialect's passthrough text and kept words
   /// go into comments); `file` names the program in messages for blocks without a location.
   explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
-      : same_(source == id_of<dialect>()), program_file_(std::move(file)), options_(chosen) {}
+      : same_(source == id_named("heidenhain")), program_file_(std::move(file)), options_(chosen) {}
 
   /// Appends the lines of block `b` to `out`. Throws `std::invalid_argument` naming the block
   /// (`file:line`) when it cannot be written in Heidenhain.

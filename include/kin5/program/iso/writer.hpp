@@ -41,8 +41,6 @@
 
 namespace kin5::program::iso {
 
-struct dialect;  // this folder's entry of `program::dialects` (dialect.hpp)
-
 /// What a control built on ISO / Fanuc G code spells its own way (Haas: program/haas/writer.hpp).
 /// The defaults are Fanuc's.
 struct spelling {
@@ -134,7 +132,7 @@ class writer {
   /// A writer for blocks read from `source` (another dialect's passthrough text and kept words
   /// go into comments). Blocks name themselves in messages: `file` is not needed.
   explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
-      : same_(source == id_of<dialect>()), options_(chosen) {
+      : same_(source == id_named("iso")), options_(chosen) {
     static_cast<void>(file);
   }
 

@@ -26,7 +26,7 @@ namespace kin5::program::linuxcnc {
 
 /// Reads LinuxCNC G code. Never throws on bad input: problems are in `errors`.
 inline read_result read(std::string_view text, std::string file_name) {
-  return read_whole(id_of<dialect>(), text, std::move(file_name), &read_blocks);
+  return read_whole(id_named("linuxcnc"), text, std::move(file_name), &read_blocks);
 }
 
 /// The LinuxCNC dialect: its capabilities, file markers, reader and writer.
@@ -58,5 +58,3 @@ struct dialect {
 };
 
 }  // namespace kin5::program::linuxcnc
-
-#include "../dialect.hpp"  // id_of<dialect>(): this entry's place in the list

@@ -36,13 +36,7 @@
 #include "lexer.hpp"
 #include "vocabulary.hpp"
 
-namespace kin5::program::iso {
-struct dialect;
-}
-
 namespace kin5::program::linuxcnc {
-
-struct dialect;  // this folder's entry of `program::dialects` (dialect.hpp)
 
 /// Decimals written for each kind of number: as ISO's (`iso::write_options`).
 struct write_options : iso::write_options {};
@@ -53,8 +47,8 @@ class writer {
   /// A writer for blocks read from `source`: the ISO writer writes LinuxCNC's own kept words and
   /// `%` lines back as they are, another dialect's as comments.
   explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
-      : same_(source == id_of<dialect>()),
-        iso_(same_ ? id_of<iso::dialect>() : id_of<dialect>(), std::move(file), iso_options(chosen)) {}
+      : same_(source == id_named("linuxcnc")),
+        iso_(same_ ? id_named("iso") : id_named("linuxcnc"), std::move(file), iso_options(chosen)) {}
 
   /// Appends the lines of block `b` to `out`; throws `std::invalid_argument` naming the block
   /// when LinuxCNC cannot say it.

@@ -43,8 +43,6 @@
 
 namespace kin5::program::siemens {
 
-struct dialect;  // this folder's entry of `program::dialects` (dialect.hpp)
-
 /// Decimals written for each kind of number. Spindle speeds use `feed_decimals`.
 struct write_options {
   int linear_decimals = 3;  ///< X Y Z, I J K, CR= (mm)
@@ -144,7 +142,7 @@ class writer {
   /// A writer for blocks read from `source` (another dialect's passthrough text and kept words
   /// go into comments); `file` names the program in messages.
   explicit writer(dialect_id source, std::string file = {}, const write_options& chosen = {})
-      : same_(source == id_of<dialect>()), program_file_(std::move(file)), options_(chosen) {}
+      : same_(source == id_named("siemens")), program_file_(std::move(file)), options_(chosen) {}
 
   /// Ends a program read in another dialect whose source gave no end (an ISO or LinuxCNC file
   /// that stops at its `%`) with `M30`: an 840D main program ends with M2, M30 or M17 (SF ch. 14).
