@@ -310,7 +310,10 @@ class statements {
     if (first != 'E' && first != 'F' && first != 'G' && first != 'I' && first != 'L' && first != 'R' && first != 'U' &&
         first != 'W' && first != 'C')
       return;
-    const auto [w, end] = word_at(t, i);
+    // Named, not a structured binding: the lambdas below capture `w`, which Clang refuses for a binding.
+    const auto word = word_at(t, i);
+    const std::string& w = word.first;
+    const std::size_t end = word.second;
     if (end < t.size() && (t[end] == '=' || t[end] == '(' || t[end] == '[')) return;  // an assignment or a call
     std::size_t k = end;
     if (is_jump(w)) return jump(s, line, k, w);
