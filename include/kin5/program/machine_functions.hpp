@@ -94,8 +94,10 @@ inline void read_machine_function(block& b, long long m, machine_function_set se
   const bool later =
       g != 0 && std::any_of(b.m_codes.begin(), b.m_codes.end(), [&](int n) { return (groups(n) & g) != 0; });
   if (!later && take_machine_function(b.state, m, set)) return;
-  state_words alone;  // what `m` says by itself: a word that says it again (`M5 M5`) is read once
-  const bool again = !later && take_machine_function(alone, m, set) &&
+  // What `m` says by itself: a word that says again what the state words say (`M5 M5`, the
+  // last M3 of `M3 M4 M3`) is read once, as `m_words_of` writes it once.
+  state_words alone;
+  const bool again = take_machine_function(alone, m, set) &&
                      (!alone.spindle || alone.spindle == b.state.spindle) &&
                      (!alone.coolant_flood || alone.coolant_flood == b.state.coolant_flood) &&
                      (!alone.coolant_mist || alone.coolant_mist == b.state.coolant_mist) &&

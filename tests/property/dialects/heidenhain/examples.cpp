@@ -115,6 +115,20 @@ TEST_CASE("heidenhain: M140 MB MAX is a retract along the tool axis, M92 the bui
   CHECK_THROWS_WITH(iso::write(r.parsed), Catch::Contains("M140 MB MAX"));
 }
 
+TEST_CASE("heidenhain: an M word said again after another of its group is read once, and writes back the same") {
+  // Found by the fuzzer: M3 M3 M4 M3 kept the last M3 as a number, which the writer left out
+  // (it writes each M function once), so the block read back without it.
+  const read_result r = heidenhain::read("0 BEGIN PGM T MM\n1 M3 M3 M4 M3\n2 END PGM T MM\n", "t.h");
+  REQUIRE(r.ok());
+  const auto& b = r.parsed.blocks[1];
+  CHECK(b.state.spindle == spindle_rotation::clockwise);
+  CHECK(b.m_codes == std::vector<int>{4});
+  const read_result back = heidenhain::read(heidenhain::write(r.parsed), "t.h");
+  REQUIRE(back.ok());
+  CHECK(back.parsed.blocks[1].m_codes == b.m_codes);
+  CHECK(back.parsed.blocks[1].state == b.state);
+}
+
 TEST_CASE("heidenhain: a tool call by name is read, TOOL CALL's axis sets the plane") {
   const read_result r = heidenhain::read(
       "TOOL CALL \"MILL_D10\" Z S5000 DL+0.1\nTOOL CALL 5 Y\nCR X+1 Z+0 R+5 DR+\nTOOL CALL \"\" Z\n", "n.h");
