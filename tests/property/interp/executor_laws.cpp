@@ -402,6 +402,18 @@ void number_loops(body& b, int& next) {
   }
 }
 
+/// A random program tree (inside a property): a main body and 1 to 4 subprograms, its loops numbered.
+tree gen_tree() {
+  const int subs = *uniform(1, 4);
+  tree t;
+  t.main = *gen_body(0, -1, subs);
+  for (int s = 0; s < subs; ++s) t.subs.push_back(*gen_body(1, s, subs));
+  int counters = 0;
+  number_loops(t.main, counters);
+  for (body& b : t.subs) number_loops(b, counters);
+  return t;
+}
+
 // The printed program.
 struct printer {
   std::string out;
@@ -510,13 +522,8 @@ struct model {
 
 TEST_CASE("executor law: structured programs run as their trees", "[executor][law]") {
   rc::prop("the executed ordinary lines equal a direct run of the program's tree", [] {
-    const int subs = *uniform(1, 4);
-    tree t;
-    t.main = *gen_body(0, -1, subs);
-    for (int s = 0; s < subs; ++s) t.subs.push_back(*gen_body(1, s, subs));
-    int counters = 0;
-    number_loops(t.main, counters);
-    for (body& b : t.subs) number_loops(b, counters);
+    const tree t = gen_tree();
+    const int subs = static_cast<int>(t.subs.size());
     printer pr;
     pr.print(t.main);
     pr.line("E");
@@ -534,13 +541,8 @@ TEST_CASE("executor law: structured programs run as their trees", "[executor][la
     RC_ASSERT(r.lines == m.out);
   });
   rc::prop("with each subprogram in a file of its own, the same lines run", [] {
-    const int subs = *uniform(1, 4);
-    tree t;
-    t.main = *gen_body(0, -1, subs);
-    for (int s = 0; s < subs; ++s) t.subs.push_back(*gen_body(1, s, subs));
-    int counters = 0;
-    number_loops(t.main, counters);
-    for (body& b : t.subs) number_loops(b, counters);
+    const tree t = gen_tree();
+    const int subs = static_cast<int>(t.subs.size());
     const auto as_file_calls = [](std::string text) {  // "C subN" → "CF subN"
       for (std::size_t at = text.find("C sub"); at != std::string::npos; at = text.find("C sub", at))
         if (at == 0 || text[at - 1] == '\n') text.replace(at, 1, "CF");
