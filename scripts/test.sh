@@ -5,13 +5,22 @@
 # unit, property, golden, CLI and consumer tests through CTest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Each stage prints its wall time and the CPU time of its processes so far, for the CI budget
+# (docs/performance.md, "CI time").
+stage_start=$SECONDS
+stage_done() {
+  echo "== stage $1: $((SECONDS - stage_start)) s (CPU of all stages so far, user and system: $(times | tail -n 1))"
+  stage_start=$SECONDS
+}
 ./scripts/setup-debian.sh
+stage_done setup
 jobs=$(nproc 2>/dev/null || echo 2)
 
 # The benchmark programs are built with the rest (not run): a benchmark that no longer compiles,
 # such as a catalog machine without a closed form in bench/closed_forms.hpp, fails CI.
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DKIN5_BUILD_BENCH=ON
 cmake --build build -j"$jobs"
+stage_done build
 
 # Fuzz smoke run: KIN5_FUZZ_RUNS inputs per reader (default 150000, 0 to skip) and
 # KIN5_PIPELINE_FUZZ_RUNS through the whole pipeline (read, translate, write; default 1000, at
@@ -24,6 +33,7 @@ if [ "$runs" -gt 0 ]; then
   cmake -S . -B build-fuzz -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DKIN5_BUILD_FUZZ=ON -DKIN5_BUILD_TESTS=OFF -DKIN5_BUILD_TOOLS=OFF -DKIN5_BUILD_REACH=OFF -DKIN5_INSTALL=OFF
   cmake --build build-fuzz -j"$jobs"
+  stage_done fuzz-build
   shopt -s nullglob
   for fuzzer in build-fuzz/tests/fuzz/*_fuzz; do
     n=$runs max_len=0 seconds=0  # 0: libFuzzer chooses the length; no time limit
@@ -41,6 +51,7 @@ if [ "$runs" -gt 0 ]; then
     tail -n 2 "$corpus/log"
     rm -rf "$corpus"
   done
+  stage_done fuzz
 fi
 
 # The command-line tests once more against an AddressSanitizer + UndefinedBehaviorSanitizer
@@ -51,8 +62,11 @@ if [ "${KIN5_SANITIZE:-1}" != 0 ]; then
   cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
     -DCMAKE_CXX_FLAGS="$sanitize" -DCMAKE_EXE_LINKER_FLAGS="$sanitize" -DKIN5_BUILD_REACH=OFF -DKIN5_INSTALL=OFF
   cmake --build build-asan -j"$jobs" --target kin5_cli
+  stage_done sanitizer-build
   ctest --test-dir build-asan --output-on-failure -j"$jobs" -R '^(cli|cli_program|cli_program reliability|cli_program silent|bad): '
+  stage_done sanitizer-tests
 fi
 
 # CTest last, so that its summary closes the output.
 ctest --test-dir build --output-on-failure -j"$jobs"
+stage_done tests
