@@ -56,7 +56,7 @@ struct cursor {
   std::size_t i = 0;
   unsigned line = 1, column = 1;
   /// Where a backslash in a basic string is followed (after blanks) by a non-ASCII character.
-  std::optional<std::pair<unsigned, unsigned>> after_line_end;
+  std::optional<std::pair<unsigned, unsigned>> after_line_end{};
 
   bool done() const { return i >= text.size(); }
   char peek(std::size_t ahead = 0) const { return i + ahead < text.size() ? text[i + ahead] : '\0'; }

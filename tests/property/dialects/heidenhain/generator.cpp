@@ -277,16 +277,16 @@ item draw_item(modal& m) {
         // no M91/M92 (another machine position) nor M128/M129 (no TCP switch in an M140 block).
         const auto codes = *rc::gen::container<std::vector<int>>(*rc::gen::inRange<std::size_t>(0, 3),
                                                                  rc::gen::element(0, 3, 5, 9, 13, 117));
-        for (int m : codes) {
-          t += gap() + draw_case("M") + std::to_string(m);
-          read_machine_function(b, m, {.m7_mist = false, .m13_m14 = true});
+        for (int code : codes) {
+          t += gap() + draw_case("M") + std::to_string(code);
+          read_machine_function(b, code, {.m7_mist = false, .m13_m14 = true});
         }
         break;
       }
       t = draw_case("M") + std::to_string(*rc::gen::element(3, 5, 9, 30, 91, 128, 129));
       const int first = std::stoi(t.substr(1));
-      const auto take = [&b](int m) {
-        read_machine_function(b, m, {.m7_mist = false, .m13_m14 = true});
+      const auto take = [&b](int code) {
+        read_machine_function(b, code, {.m7_mist = false, .m13_m14 = true});
       };
       if (first == 128 || first == 129) b.tcp = first == 128;
       else take(first), b.machine_coordinates = first == 91;

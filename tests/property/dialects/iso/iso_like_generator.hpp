@@ -162,9 +162,9 @@ inline void draw_motion(item& it, state& st, const flavour& f) {
   for (int k = 0; k < 6; ++k)
     if (have[k]) st.last[k] = pos[k];
   if (*rc::gen::inRange(0, 3) == 0 || (st.inverse_time && effective != motion_kind::rapid)) {
-    const double f = draw_decimal(0.1, 20000, 1);
-    b.feed = f;
-    it.words.push_back(spell_word('F', f, 1));
+    const double rate = draw_decimal(0.1, 20000, 1);
+    b.feed = rate;
+    it.words.push_back(spell_word('F', rate, 1));
   }
 }
 
