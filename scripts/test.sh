@@ -66,16 +66,20 @@ fi
 # The command-line tests once more against an AddressSanitizer + UndefinedBehaviorSanitizer
 # build of the tool alone (-O1; KIN5_SANITIZE=0 skips it): memory errors in the tool's own code
 # and on its file, signal and limit paths, which the fuzzers (library only) do not reach.
+cli_tests='^(cli|cli_program|cli_program reliability|cli_program silent|bad): '
+ran_cli_tests=()
 if [ "${KIN5_SANITIZE:-1}" != 0 ]; then
   sanitize="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
   cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
     -DCMAKE_CXX_FLAGS="$sanitize" -DCMAKE_EXE_LINKER_FLAGS="$sanitize" -DKIN5_BUILD_REACH=OFF -DKIN5_INSTALL=OFF
   cmake --build build-asan -j"$jobs" --target kin5_cli
   stage_done sanitizer-build
-  ctest --test-dir build-asan --output-on-failure -j"$jobs" -R '^(cli|cli_program|cli_program reliability|cli_program silent|bad): '
+  ctest --test-dir build-asan --output-on-failure -j"$jobs" -R "$cli_tests"
+  ran_cli_tests=(-E "$cli_tests")
   stage_done sanitizer-tests
 fi
 
-# CTest last, so that its summary closes the output.
-ctest --test-dir build --output-on-failure -j"$jobs"
+# CTest last, so that its summary closes the output; the command-line tests that passed against
+# the sanitizer build are not run twice.
+ctest --test-dir build --output-on-failure -j"$jobs" "${ran_cli_tests[@]}"
 stage_done tests
