@@ -50,12 +50,14 @@ inline const read_limits& current_read_limits() {
   return detail::reading_limits ? *detail::reading_limits : defaults;
 }
 
-/// Makes `limits` this thread's `current_read_limits()` while it lives.
+/// Makes `limits` this thread's `current_read_limits()` while it lives. It keeps the address of
+/// `limits`, which must outlive it: a temporary does not compile.
 class read_limits_scope {
  public:
   explicit read_limits_scope(const read_limits& limits) : saved_(detail::reading_limits) {
     detail::reading_limits = &limits;
   }
+  explicit read_limits_scope(read_limits&&) = delete;
   ~read_limits_scope() { detail::reading_limits = saved_; }
   read_limits_scope(const read_limits_scope&) = delete;
   read_limits_scope& operator=(const read_limits_scope&) = delete;
