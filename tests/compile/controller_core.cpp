@@ -55,23 +55,23 @@ int controller_inverse(const char* id, const double* tip_axis, double tool_lengt
   return 0;
 }
 
-// What kin5kins calls: LinuxCNC's TCP world from joints and back, geometry from pins.
+// What kin5kins calls: LinuxCNC's tool-centre world from joints and back, geometry from pins.
 int controller_linuxcnc(const char* id, const double* pins, const double* joints, double* world, double* back) {
   const auto* e = kin5::linuxcnc::find_entry(id);
-  const kin5::machine_model* base = e ? kin5::machines::find_machine(e->id) : nullptr;
-  if (!base) return -1;
-  kin5::linuxcnc::pin_values p{};
-  for (std::size_t i = 0; i < p.size(); ++i) p[i] = pins[i];
-  const kin5::machine_model m = kin5::linuxcnc::with_pins(*base, *e, p);
-  const double tool = p[static_cast<std::size_t>(kin5::linuxcnc::pin::tool_offset)];
-  kin5::linuxcnc::world_position w{};
-  const kin5::linuxcnc::joint_values j{joints[0], joints[1], joints[2], joints[3], joints[4]};
-  if (!kin5::linuxcnc::tcp_forward(m, j, tool, w)) return -1;
-  const double v[6]{w.xyz_mm.x, w.xyz_mm.y, w.xyz_mm.z, w.abc_deg[0], w.abc_deg[1], w.abc_deg[2]};
-  for (int i = 0; i < 6; ++i) world[i] = v[i];
+  if (!e) return -1;
+  kin5::linuxcnc::pin_values p = kin5::linuxcnc::initial_pins(*e);
+  for (std::size_t i = 0; i < p.size(); ++i) p[i] += pins[i];
+  const kin5::machine_model m = kin5::linuxcnc::with_pins(*e, p);
+  kin5::linuxcnc::joint_values j{};
+  for (std::size_t k = 0; k < e->joints.size(); ++k) j[k] = joints[k];
+  kin5::linuxcnc::world_values w{};
+  if (!kin5::linuxcnc::tcp_forward(*e, m, p, j, w)) return -1;
+  for (std::size_t i = 0; i < w.size(); ++i) world[i] = w[i];
   kin5::linuxcnc::joint_values out{};
-  if (!kin5::linuxcnc::tcp_inverse(m, w, tool, out)) return -1;
-  for (std::size_t i = 0; i < out.size(); ++i) back[i] = out[i];
+  if (!kin5::linuxcnc::tcp_inverse(*e, m, p, w, out)) return -1;
+  kin5::linuxcnc::identity_forward(*e, out, w);
+  kin5::linuxcnc::identity_inverse(*e, w, out);
+  for (std::size_t k = 0; k < e->joints.size(); ++k) back[k] = out[k];
   return 0;
 }
 

@@ -101,7 +101,9 @@ int run(int argc, char** argv) {
   auto forward = symbol<decltype(&kinematicsForward)>(module, "kinematicsForward");
   auto inverse = symbol<decltype(&kinematicsInverse)>(module, "kinematicsInverse");
   auto kins_switch = symbol<decltype(&kinematicsSwitch)>(module, "kinematicsSwitch");
-  if (!app_main || !app_exit || !forward || !inverse || !kins_switch) return fail(path + " lacks an entry point");
+  auto kins_type = symbol<decltype(&kinematicsType)>(module, "kinematicsType");
+  if (!app_main || !app_exit || !forward || !inverse || !kins_switch || !kins_type)
+    return fail(path + " lacks an entry point");
 
   const int probe = hal_init("kins-probe");
   if (probe < 0) return fail("hal_init failed (run under halrun)");
@@ -109,6 +111,8 @@ int run(int argc, char** argv) {
     hal_exit(probe);
     return fail(path + ": rtapi_app_main failed");
   }
+  // As motion does first: xyzab_tdr_kins creates its pins only then.
+  if (kins_type() != KINEMATICS_BOTH) return fail(path + ": kinematicsType is not KINEMATICS_BOTH");
   auto** values = static_cast<hal_float_t**>(hal_malloc(static_cast<long>(sizeof(hal_float_t*) * pin_names.size())));
   int res = 0;
   for (std::size_t i = 0; i < pin_names.size(); ++i) {
@@ -130,8 +134,10 @@ int run(int argc, char** argv) {
   int status = 0;
   for (int g = 0; g < geometries && status == 0; ++g) {
     for (std::size_t i = 0; i < pin_names.size(); ++i) {
-      const bool tool = pin_names[i] == "tool-offset";
-      *values[i] = tool ? rng.uniform(0.0, 250.0) : rng.uniform(-300.0, 300.0);
+      const std::string& name = pin_names[i];
+      *values[i] = name.rfind("tool-offset", 0) == 0 ? rng.uniform(0.0, 250.0)
+                   : name == "pivot-length"          ? rng.uniform(50.0, 400.0)
+                                                     : rng.uniform(-300.0, 300.0);
       if (pin_names[i] == offset_pin) *values[i] += offset_mm;
     }
     const random_source inputs = rng;
@@ -143,6 +149,7 @@ int run(int argc, char** argv) {
         for (int j = 0; j < 3; ++j) joints[j] = r.uniform(-500.0, 500.0);
         joints[3] = r.uniform(-120.0, 120.0);
         joints[4] = r.uniform(-720.0, 720.0);
+        joints[5] = r.uniform(-50.0, 50.0);  // W of XYZBCW; no joint of the 5-joint machines
         EmcPose world{};
         KINEMATICS_FORWARD_FLAGS fflags = 0;
         KINEMATICS_INVERSE_FLAGS iflags = 0;
@@ -154,13 +161,14 @@ int run(int argc, char** argv) {
         target.tran.x = r.uniform(-500.0, 500.0);
         target.tran.y = r.uniform(-500.0, 500.0);
         target.tran.z = r.uniform(-500.0, 500.0);
-        const double tilt = r.uniform(-120.0, 120.0), turn = r.uniform(-720.0, 720.0);
-        target.a = target.b = tilt;  // the module's tilting axis is A or B; the other is not a joint
-        target.c = turn;
+        target.a = r.uniform(-120.0, 120.0);
+        target.b = r.uniform(-120.0, 120.0);
+        target.c = r.uniform(-720.0, 720.0);
+        target.w = r.uniform(-50.0, 50.0);  // a coordinate only of the machines with a W joint
         double back[EMCMOT_MAX_JOINTS] = {};
         if (inverse(&target, back, &iflags, &fflags) != 0) status = fail("kinematicsInverse failed");
         out << "g" << g << " t" << type << " inv";
-        for (int j = 0; j < 5; ++j) out << ' ' << back[j];
+        for (int j = 0; j < 6; ++j) out << ' ' << back[j];
         out << '\n';
       }
     }

@@ -35,8 +35,11 @@ unset DISPLAY
 geometries=8
 poses=200
 # machine, LinuxCNC's module, its geometry pins, the pin the negative control moves
+# (xyzab_tdr_kins has no sparm: its type 0 is always identity)
 cases="xyzac-trt xyzac-trt-kins x-rot-point,y-rot-point,z-rot-point,y-offset,z-offset,tool-offset y-offset
-xyzbc-trt xyzbc-trt-kins x-rot-point,y-rot-point,z-rot-point,x-offset,z-offset,tool-offset x-offset"
+xyzbc-trt xyzbc-trt-kins x-rot-point,y-rot-point,z-rot-point,x-offset,z-offset,tool-offset x-offset
+xyzab-tdr xyzab_tdr_kins x-rot-point,y-rot-point,z-rot-point,x-offset,z-offset,tool-offset-z z-offset
+bridgemill 5axiskins pivot-length pivot-length"
 lcnc_modules=/usr/lib/linuxcnc/modules
 
 status=0
@@ -44,15 +47,17 @@ hal="$work/probe.hal"
 : >"$hal"
 n=0
 echo "$cases" | while read -r machine kins pins moved; do
-  for sparm in "" identityfirst; do
+  sparms="default identityfirst"
+  [ "$kins" = xyzab_tdr_kins ] && sparms=default
+  for sparm in $sparms; do
     n=$((n + 1))
     extra=""
-    [ -n "$sparm" ] && extra="sparm=$sparm"
+    [ "$sparm" = identityfirst ] && extra="sparm=identityfirst"
     offset=""
     [ "$mode" = negative ] && offset="--offset $moved=0.001"
     echo "loadusr -w $probe run $lcnc_modules/$kins.so $kins $pins $seed $geometries $poses $work/$n.lcnc $extra" >>"$hal"
     echo "loadusr -w $probe run $module kin5kins $pins $seed $geometries $poses $work/$n.kin5 machine=$machine $extra $offset" >>"$hal"
-    echo "$n $machine ${sparm:-default}" >>"$work/cases"
+    echo "$n $machine $sparm" >>"$work/cases"
   done
 done
 if ! halrun -f "$hal" >"$work/halrun.log" 2>&1; then

@@ -25,25 +25,24 @@ namespace {
 namespace lc = kin5::linuxcnc;
 
 struct hal_pins {
-  hal_float_t* geometry[lc::pin_count];
+  hal_float_t* geometry[lc::max_pins];
   hal_bit_t* is_type[3];
 };
 
 hal_pins* pins = nullptr;
 const lc::machine_entry* entry = nullptr;
-const kin5::machine_model* base = nullptr;
 int comp_id = -1;
-int switch_type = 0;   // LinuxCNC's switchkins_type
-int tcp_type = 0;      // the type number of the tool-centre kinematics (0, or 1 with identityfirst)
+int switch_type = 0;  // LinuxCNC's switchkins_type
+int tcp_type = 0;     // the type number of the tool-centre kinematics (0, or 1 when identity is first)
 
 lc::pin_values read_pins() {
   lc::pin_values v{};
-  for (std::size_t i = 0; i < lc::pin_count; ++i) v[i] = pins->geometry[i] ? *pins->geometry[i] : 0.0;
+  for (std::size_t i = 0; i < lc::max_pins; ++i) v[i] = pins->geometry[i] ? *pins->geometry[i] : 0.0;
   return v;
 }
 
 void set_type_pins() {
-  for (int t = 0; t < 3; ++t) *pins->is_type[t] = (t == switch_type);
+  for (int t = 0; t < entry->type_pins; ++t) *pins->is_type[t] = (t == switch_type);
 }
 
 }  // namespace
@@ -51,7 +50,7 @@ void set_type_pins() {
 extern "C" {
 
 char* machine = nullptr;
-RTAPI_MP_STRING(machine, "kin5 catalog id of the machine: xyzac-trt or xyzbc-trt");
+RTAPI_MP_STRING(machine, "the machine: xyzac-trt, xyzbc-trt, xyzab-tdr or bridgemill");
 char* sparm = nullptr;
 RTAPI_MP_STRING(sparm, "identityfirst: switchkins type 0 is identity, 1 the machine's kinematics");
 
@@ -72,37 +71,39 @@ KINEMATICS_TYPE kinematicsType() { return KINEMATICS_BOTH; }
 
 int kinematicsForward(const double* joint, EmcPose* world, const KINEMATICS_FORWARD_FLAGS*,
                       KINEMATICS_INVERSE_FLAGS*) {
-  const lc::joint_values j{joint[0], joint[1], joint[2], joint[3], joint[4]};
-  lc::world_position w{};
+  lc::joint_values j{};
+  for (std::size_t k = 0; k < entry->joints.size(); ++k) j[k] = joint[k];
+  lc::world_values w{};
   if (switch_type == tcp_type) {
     const lc::pin_values p = read_pins();
-    const kin5::machine_model m = lc::with_pins(*base, *entry, p);
-    if (!lc::tcp_forward(m, j, p[static_cast<std::size_t>(lc::pin::tool_offset)], w)) return -1;
+    if (!lc::tcp_forward(*entry, lc::with_pins(*entry, p), p, j, w)) return -1;
   } else {
-    lc::identity_forward(*base, j, w);
+    lc::identity_forward(*entry, j, w);
   }
-  world->tran.x = w.xyz_mm.x;
-  world->tran.y = w.xyz_mm.y;
-  world->tran.z = w.xyz_mm.z;
-  world->a = w.abc_deg[0];
-  world->b = w.abc_deg[1];
-  world->c = w.abc_deg[2];
-  world->u = world->v = world->w = 0.0;
+  world->tran.x = w[0];
+  world->tran.y = w[1];
+  world->tran.z = w[2];
+  world->a = w[3];
+  world->b = w[4];
+  world->c = w[5];
+  world->u = w[6];
+  world->v = w[7];
+  world->w = w[8];
   return 0;
 }
 
 int kinematicsInverse(const EmcPose* world, double* joint, const KINEMATICS_INVERSE_FLAGS*,
                       KINEMATICS_FORWARD_FLAGS*) {
-  const lc::world_position w{{world->tran.x, world->tran.y, world->tran.z}, {world->a, world->b, world->c}};
+  const lc::world_values w{world->tran.x, world->tran.y, world->tran.z, world->a, world->b,
+                           world->c,      world->u,      world->v,      world->w};
   lc::joint_values j{};
   if (switch_type == tcp_type) {
     const lc::pin_values p = read_pins();
-    const kin5::machine_model m = lc::with_pins(*base, *entry, p);
-    if (!lc::tcp_inverse(m, w, p[static_cast<std::size_t>(lc::pin::tool_offset)], j)) return -1;
+    if (!lc::tcp_inverse(*entry, lc::with_pins(*entry, p), p, w, j)) return -1;
   } else {
-    lc::identity_inverse(*base, w, j);
+    lc::identity_inverse(*entry, w, j);
   }
-  for (std::size_t i = 0; i < j.size(); ++i) joint[i] = j[i];
+  for (std::size_t k = 0; k < entry->joints.size(); ++k) joint[k] = j[k];
   return 0;
 }
 
@@ -114,16 +115,16 @@ EXPORT_SYMBOL(kinematicsInverse);
 MODULE_LICENSE("GPL");
 
 int rtapi_app_main(void) {
-  if (!machine || !(entry = lc::find_entry(machine)) || !(base = kin5::machines::find_machine(entry->id))) {
-    rtapi_print_msg(RTAPI_MSG_ERR, "kin5kins: machine=%s is not a machine kin5kins serves; give machine=xyzac-trt or "
-                    "machine=xyzbc-trt\n", machine ? machine : "(not given)");
+  if (!machine || !(entry = lc::find_entry(machine))) {
+    rtapi_print_msg(RTAPI_MSG_ERR, "kin5kins: machine=%s is not a machine kin5kins serves; give machine=xyzac-trt, "
+                    "xyzbc-trt, xyzab-tdr or bridgemill\n", machine ? machine : "(not given)");
     return -EINVAL;
   }
   if (sparm && !strstr(sparm, "identityfirst")) {
     rtapi_print_msg(RTAPI_MSG_ERR, "kin5kins: sparm=%s is not understood; the one sparm is identityfirst\n", sparm);
     return -EINVAL;
   }
-  tcp_type = sparm ? 1 : 0;
+  tcp_type = (entry->identity_first || sparm) ? 1 : 0;
   comp_id = hal_init("kin5kins");
   if (comp_id < 0) return comp_id;
   pins = static_cast<hal_pins*>(hal_malloc(sizeof(hal_pins)));
@@ -132,13 +133,17 @@ int rtapi_app_main(void) {
     return -ENOMEM;
   }
   int res = 0;
-  for (std::size_t i = 0; i < lc::pin_count; ++i) {
+  for (std::size_t i = 0; i < lc::max_pins; ++i) {
     pins->geometry[i] = nullptr;
-    if (entry->reads[i])
-      res += hal_pin_float_newf(HAL_IN, &pins->geometry[i], comp_id, "kin5kins.%s", lc::pin_name(static_cast<lc::pin>(i)));
+    const lc::pin_spec& spec = entry->pins[i];
+    if (spec.role == lc::pin_role::none) continue;
+    res += hal_pin_float_newf(HAL_IN, &pins->geometry[i], comp_id, "kin5kins.%.*s", static_cast<int>(spec.name.size()),
+                              spec.name.data());
+    if (pins->geometry[i]) *pins->geometry[i] = spec.initial;
   }
   // Unprefixed, as LinuxCNC's switchable modules name them.
-  for (int t = 0; t < 3; ++t) res += hal_pin_bit_newf(HAL_OUT, &pins->is_type[t], comp_id, "kinstype.is-%d", t);
+  for (int t = 0; t < entry->type_pins; ++t)
+    res += hal_pin_bit_newf(HAL_OUT, &pins->is_type[t], comp_id, "kinstype.is-%d", t);
   if (res) {
     hal_exit(comp_id);
     return -EINVAL;
