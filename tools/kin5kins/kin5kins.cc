@@ -145,6 +145,8 @@ int rtapi_app_main(void) {
   for (int t = 0; t < entry->type_pins; ++t)
     res += hal_pin_bit_newf(HAL_OUT, &pins->is_type[t], comp_id, "kinstype.is-%d", t);
   if (res) {
+    rtapi_print_msg(RTAPI_MSG_ERR, "kin5kins: cannot create its pins; is another kinematics module loaded (its "
+                    "kinstype.is-N pins have the same names)?\n");
     hal_exit(comp_id);
     return -EINVAL;
   }
