@@ -3,13 +3,14 @@
 # directly under halrun by kins_probe, on random geometries (the module pins) and random joint
 # vectors and world positions, for both kinematics types and both type orders (sparm).
 #
-#   linuxcnc_kins.sh agree    PROBE MODULE   forward and inverse agree within 1e-9
-#   linuxcnc_kins.sh negative PROBE MODULE   one geometry pin of kin5kins off by 0.001 mm: the
-#                                            comparison must find it, for every machine
+#   linuxcnc_kins.sh agree    PROBE MODULE RTLIB_DIR   forward and inverse agree within 1e-9
+#   linuxcnc_kins.sh negative PROBE MODULE RTLIB_DIR   one geometry pin of kin5kins off by
+#                                                      0.001 mm: the comparison must find it
+# (RTLIB_DIR: LinuxCNC's module directory, where its modules are loaded from.)
 # Exit 77 (skipped) when kin5kins was not built (no linuxcnc-uspace-dev) or halrun is absent.
 # KIN5_LINUXCNC_SEED fixes the seed; otherwise it is drawn and printed.
 set -u
-mode=$1 probe=$2 module=$3
+mode=$1 probe=$2 module=$3 rtlib=$4
 if [ -z "$probe" ] || [ -z "$module" ]; then
   echo "skipped: kin5kins was not built (install linuxcnc-uspace-dev, scripts/setup-debian.sh, and configure again)"
   exit 77
@@ -40,7 +41,6 @@ cases="xyzac-trt xyzac-trt-kins x-rot-point,y-rot-point,z-rot-point,y-offset,z-o
 xyzbc-trt xyzbc-trt-kins x-rot-point,y-rot-point,z-rot-point,x-offset,z-offset,tool-offset x-offset
 xyzab-tdr xyzab_tdr_kins x-rot-point,y-rot-point,z-rot-point,x-offset,z-offset,tool-offset-z z-offset
 bridgemill 5axiskins pivot-length pivot-length"
-lcnc_modules=/usr/lib/linuxcnc/modules
 
 status=0
 hal="$work/probe.hal"
@@ -55,7 +55,7 @@ echo "$cases" | while read -r machine kins pins moved; do
     [ "$sparm" = identityfirst ] && extra="sparm=identityfirst"
     offset=""
     [ "$mode" = negative ] && offset="--offset $moved=0.001"
-    echo "loadusr -w $probe run $lcnc_modules/$kins.so $kins $pins $seed $geometries $poses $work/$n.lcnc $extra" >>"$hal"
+    echo "loadusr -w $probe run $rtlib/$kins.so $kins $pins $seed $geometries $poses $work/$n.lcnc $extra" >>"$hal"
     echo "loadusr -w $probe run $module kin5kins $pins $seed $geometries $poses $work/$n.kin5 machine=$machine $extra $offset" >>"$hal"
     echo "$n $machine $sparm" >>"$work/cases"
   done
