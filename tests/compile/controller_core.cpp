@@ -2,6 +2,8 @@
 // compiled by controller_core.cmake with -fno-exceptions -fno-rtti, which then checks that the
 // object needs no symbol of the C++ library. Each call is noexcept (asserted here), allocates
 // nothing (no allocation function is referenced) and throws nothing.
+#include <utility>
+
 #include <kin5/kinematics.hpp>
 
 #include "linuxcnc_machine.hpp"
