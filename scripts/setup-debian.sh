@@ -13,7 +13,8 @@ packages=(
   clang libclang-rt-14-dev # libFuzzer targets
   chromium fonts-dejavu-core libpng-dev  # the sphere maps checked in a browser (tests/match)
   python3                  # JSON reports parsed back (tests/cli_program/report.sh)
-  linuxcnc-uspace          # rs274, the oracle of LinuxCNC expressions (tests/property/interp)
+  linuxcnc-uspace          # rs274, the oracle of LinuxCNC expressions (tests/property/interp); halrun
+  linuxcnc-uspace-dev      # kin5kins, the LinuxCNC kinematics module (tools/kin5kins, tests/linuxcnc)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -14,7 +14,7 @@ struct rigid_transform {
   mat3 rotation = mat3::identity();  ///< proper orthogonal, det = +1
   vec3 translation_mm{};             ///< origin of frame b, in frame a, millimetres
 
-  static constexpr rigid_transform identity() { return {}; }
+  static constexpr rigid_transform identity() noexcept { return {}; }
 
   /// A point given in frame b, in frame a (millimetres).
   constexpr vec3 map_point(const vec3& b_point_mm) const { return rotation * b_point_mm + translation_mm; }

@@ -55,7 +55,7 @@ struct mat3 {
          : j == 1 ? vec3{row[0].y, row[1].y, row[2].y}
                   : vec3{row[0].z, row[1].z, row[2].z};
   }
-  static constexpr mat3 identity() { return {{vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}}; }
+  static constexpr mat3 identity() noexcept { return {{vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}}; }
   static constexpr mat3 from_columns(const vec3& c0, const vec3& c1, const vec3& c2) {
     return {{vec3{c0.x, c1.x, c2.x}, vec3{c0.y, c1.y, c2.y}, vec3{c0.z, c1.z, c2.z}}};
   }

@@ -69,7 +69,7 @@ constexpr const one_axis_geometry& geometry() {
 
 /// (G1): the unit tool axis u in the workpiece frame (W = identity) for commanded rotary angles.
 template <std::size_t N>
-constexpr vec3 tool_axis(const machine_model& m, const std::array<radians, N>& commanded) {
+constexpr vec3 tool_axis(const machine_model& m, const std::array<radians, N>& commanded) noexcept {
   if constexpr (N >= 2) {
     if (m.rotary_count == 2) return m.orientation.tool_axis(m.rotary(0).psi(commanded[0]), m.rotary(1).psi(commanded[1]));
   }
@@ -78,18 +78,18 @@ constexpr vec3 tool_axis(const machine_model& m, const std::array<radians, N>& c
 
 /// (G1) for machine type M.
 template <machine M>
-constexpr vec3 tool_axis(const rotary_angles<M>& commanded) {
+constexpr vec3 tool_axis(const rotary_angles<M>& commanded) noexcept {
   return tool_axis(M::model, commanded);
 }
 
 /// `x` turned by rotary axis `a` through the physical angle φ about its line.
-constexpr vec3 turn_about(const rotary_axis& a, radians phi, const vec3& x) {
+constexpr vec3 turn_about(const rotary_axis& a, radians phi, const vec3& x) noexcept {
   return a.point_mm + rotate(a.direction, phi, x - a.point_mm);
 }
 
 /// T(θ)x: where the tables carry the point x of the part (both in the machine frame).
 template <std::size_t N>
-constexpr vec3 tables_carry(const machine_model& m, const std::array<radians, N>& commanded, vec3 x) {
+constexpr vec3 tables_carry(const machine_model& m, const std::array<radians, N>& commanded, vec3 x) noexcept {
   for (std::size_t i = 0; i < m.rotary_count && i < N; ++i)  // innermost table first
     if (m.rotary(i).side == mount::table) x = turn_about(m.rotary(i), m.rotary(i).physical(commanded[i]), x);
   return x;
@@ -97,7 +97,7 @@ constexpr vec3 tables_carry(const machine_model& m, const std::array<radians, N>
 
 /// T(θ)⁻¹x: the point of the part (at the zero pose) that the tables bring to x.
 template <std::size_t N>
-constexpr vec3 tables_undo(const machine_model& m, const std::array<radians, N>& commanded, vec3 x) {
+constexpr vec3 tables_undo(const machine_model& m, const std::array<radians, N>& commanded, vec3 x) noexcept {
   for (std::size_t i = m.rotary_count < N ? m.rotary_count : N; i-- > 0;)  // outermost table first
     if (m.rotary(i).side == mount::table) x = turn_about(m.rotary(i), -m.rotary(i).physical(commanded[i]), x);
   return x;
@@ -105,21 +105,22 @@ constexpr vec3 tables_undo(const machine_model& m, const std::array<radians, N>&
 
 /// H(θ)x: where the heads carry the point x of the spindle.
 template <std::size_t N>
-constexpr vec3 heads_carry(const machine_model& m, const std::array<radians, N>& commanded, vec3 x) {
+constexpr vec3 heads_carry(const machine_model& m, const std::array<radians, N>& commanded, vec3 x) noexcept {
   for (std::size_t i = m.rotary_count < N ? m.rotary_count : N; i-- > 0;)  // innermost head first
     if (m.rotary(i).side == mount::head) x = turn_about(m.rotary(i), m.rotary(i).physical(commanded[i]), x);
   return x;
 }
 
 /// g: the tool tip at the zero pose relative to the reference point, −(L + ℓ)t.
-constexpr vec3 tip_at_zero(const machine_model& m, const run_inputs& in) {
+constexpr vec3 tip_at_zero(const machine_model& m, const run_inputs& in) noexcept {
   return -(m.geometry.tool.pivot_length_mm + in.tool_length_mm) * m.tool_reference();
 }
 
 /// (G6): tool tip and unit tool axis in the workpiece frame for axis values `q` in machine
 /// coordinates, the tool length and the work offset of `in`.
 template <std::size_t N>
-constexpr tool_pose forward(const machine_model& m, const basic_axis_position<N>& q, const run_inputs& in = {}) {
+constexpr tool_pose forward(const machine_model& m, const basic_axis_position<N>& q,
+                            const run_inputs& in = {}) noexcept {
   const vec3 machine_tip = m.linear_displacement(q.xyz_mm) + heads_carry(m, q.rotary, tip_at_zero(m, in));
   const rigid_transform work_T_machine = in.work_offset.inverse();
   return {work_T_machine.map_point(tables_undo(m, q.rotary, machine_tip)),
@@ -128,19 +129,20 @@ constexpr tool_pose forward(const machine_model& m, const basic_axis_position<N>
 
 /// (G6) for machine type M.
 template <machine M>
-constexpr tool_pose forward(const axis_position<M>& q, const run_inputs& in = {}) {
+constexpr tool_pose forward(const axis_position<M>& q, const run_inputs& in = {}) noexcept {
   return forward(M::model, q, in);
 }
 
 /// (G8): the XYZ (workpiece frame, mm) that a program without tool-tip tracking writes for the
 /// linear axis values `xyz_mm`: the tip as if every rotary axis stood at zero.
-constexpr vec3 untracked_point(const machine_model& m, const vec3& xyz_mm, const run_inputs& in = {}) {
+constexpr vec3 untracked_point(const machine_model& m, const vec3& xyz_mm, const run_inputs& in = {}) noexcept {
   return in.work_offset.inverse().map_point(m.linear_displacement(xyz_mm) + tip_at_zero(m, in));
 }
 
 /// (G8) solved for the linear axis values: the slides a control without tool-tip tracking drives
 /// to for the programmed point `program_mm`.
-constexpr vec3 axes_for_untracked_point(const machine_model& m, const vec3& program_mm, const run_inputs& in = {}) {
+constexpr vec3 axes_for_untracked_point(const machine_model& m, const vec3& program_mm,
+                                        const run_inputs& in = {}) noexcept {
   return m.linear_inverse * (in.work_offset.map_point(program_mm) - tip_at_zero(m, in));
 }
 

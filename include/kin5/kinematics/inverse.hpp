@@ -217,7 +217,7 @@ constexpr radians outside_travel_gap(const machine_model& m, const vec3& u, cons
 /// zero pose), written into `out` (N >= m.rotary_count; see `max_solutions` for the capacity).
 template <std::size_t N, std::size_t Capacity>
 constexpr void inverse_into(const machine_model& m, const vec3& u, const inverse_options& options,
-                            basic_inverse_result<N, Capacity>& out) {
+                            basic_inverse_result<N, Capacity>& out) noexcept {
   const std::size_t n = m.rotary_count < N ? m.rotary_count : N;
   two_axis_solution raw{};
   if (n == 2) {
@@ -253,7 +253,7 @@ constexpr void inverse_into(const machine_model& m, const vec3& u, const inverse
 
 /// Every commanded angle set of machine `m` whose tool axis is `u` (unit, table frame at the
 /// zero pose): (G1)–(G5).
-constexpr inverse_values inverse(const machine_model& m, const vec3& u, const inverse_options& options = {}) {
+constexpr inverse_values inverse(const machine_model& m, const vec3& u, const inverse_options& options = {}) noexcept {
   inverse_values out{};
   inverse_into(m, u, options, out);
   return out;
@@ -261,7 +261,7 @@ constexpr inverse_values inverse(const machine_model& m, const vec3& u, const in
 
 /// Every commanded angle set of machine type M whose tool axis is `u`.
 template <machine M>
-constexpr inverse_result<M> inverse(const vec3& u, const inverse_options& options = {}) {
+constexpr inverse_result<M> inverse(const vec3& u, const inverse_options& options = {}) noexcept {
   inverse_result<M> out{};
   inverse_into(M::model, u, options, out);
   return out;

@@ -71,7 +71,7 @@ using pose_result = basic_pose_result<rotary_count<M>, max_solutions<M>()>;
 /// at the zero pose, W p) with the rotary angles `rotary`.
 template <std::size_t N>
 constexpr vec3 linear_axes_for(const machine_model& m, const std::array<radians, N>& rotary, const vec3& part_point_mm,
-                               const run_inputs& in) {
+                               const run_inputs& in) noexcept {
   const vec3 slides = tables_carry(m, rotary, part_point_mm) - heads_carry(m, rotary, tip_at_zero(m, in));
   return m.linear_inverse * slides;
 }
@@ -80,7 +80,7 @@ constexpr vec3 linear_axes_for(const machine_model& m, const std::array<radians,
 /// written into `out` (N >= m.rotary_count).
 template <std::size_t N, std::size_t Capacity>
 constexpr void inverse_into(const machine_model& m, const tool_pose& target, const run_inputs& in,
-                            const inverse_options& options, basic_pose_result<N, Capacity>& out) {
+                            const inverse_options& options, basic_pose_result<N, Capacity>& out) noexcept {
   basic_inverse_result<N, Capacity> rotary{};
   inverse_into(m, in.work_offset.map_direction(normalized(target.axis)), options, rotary);
   out.gap = rotary.gap;
@@ -113,7 +113,7 @@ constexpr void inverse_into(const machine_model& m, const tool_pose& target, con
 
 /// Every set of axis values of machine `m` that puts the tool at `target`: (G7).
 constexpr pose_values inverse(const machine_model& m, const tool_pose& target, const run_inputs& in,
-                              const inverse_options& options = {}) {
+                              const inverse_options& options = {}) noexcept {
   pose_values out{};
   inverse_into(m, target, in, options, out);
   return out;
@@ -121,7 +121,8 @@ constexpr pose_values inverse(const machine_model& m, const tool_pose& target, c
 
 /// Every set of axis values of machine type M that puts the tool at `target`.
 template <machine M>
-constexpr pose_result<M> inverse(const tool_pose& target, const run_inputs& in, const inverse_options& options = {}) {
+constexpr pose_result<M> inverse(const tool_pose& target, const run_inputs& in,
+                                  const inverse_options& options = {}) noexcept {
   pose_result<M> out{};
   inverse_into(M::model, target, in, options, out);
   return out;

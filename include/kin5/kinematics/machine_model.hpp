@@ -68,7 +68,7 @@ struct machine_model {
 
   /// The model of `g`. `g` should pass `machine_rules::check`; a geometry that does not gives
   /// meaningless constants, never undefined behaviour.
-  static constexpr machine_model from(const machine_geometry& g) {
+  static constexpr machine_model from(const machine_geometry& g) noexcept {
     machine_model m{g};
     m.rotary_count = g.rotary[0].letter == axis_letter::none ? 0 : (g.rotary[1].letter == axis_letter::none ? 1 : 2);
     if (m.rotary_count == 2)

@@ -35,11 +35,11 @@ struct pole_policy {
   vec3 approach_direction{};  ///< `approach`: the direction from which u comes to the pole
 
   /// Keep ψp, typically the value of the previous block.
-  static constexpr pole_policy keep(radians psi_p_value) { return {kind::keep, psi_p_value, {}}; }
+  static constexpr pole_policy keep(radians psi_p_value) noexcept { return {kind::keep, psi_p_value, {}}; }
   /// ψp is the limit of (G4) as u approaches the pole along `direction` (a vector not parallel
   /// to p). This generalises the convention of Tian et al. 2010 (c_t → 90°, P16): pass the direction in
   /// which the source machine's tool axis leaves the pole.
-  static constexpr pole_policy approach(const vec3& direction) { return {kind::approach, {}, direction}; }
+  static constexpr pole_policy approach(const vec3& direction) noexcept { return {kind::approach, {}, direction}; }
 };
 
 /// ψp and ψq of one branch, radians, not wrapped.

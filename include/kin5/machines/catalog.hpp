@@ -65,7 +65,7 @@ constexpr bool with_machine(std::string_view id, F&& f) {
 
 /// The model of the catalog machine with `M::id == id`, or null when no catalog machine has
 /// that id: the one lookup of a machine *value* by id.
-constexpr const machine_model* find_machine(std::string_view id) {
+constexpr const machine_model* find_machine(std::string_view id) noexcept {
   const machine_model* found = nullptr;
   for_each_machine([&]<class M>() {
     if (!found && M::id == id) found = &M::model;
