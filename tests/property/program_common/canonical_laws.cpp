@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <variant>
@@ -21,6 +22,14 @@
 #include <kin5/program/canonical/print.hpp>
 
 #include "block_generators.hpp"
+
+namespace kin5::program::canonical {
+/// An operation in a failed case's log, as `kin5 canon` prints it, after its line and column.
+inline void showValue(const operation& op, std::ostream& os) {
+  const source_location& at = origin_of(op).where;
+  os << at.line << ":" << at.column << ": " << operation_printer().text(op);
+}
+}  // namespace kin5::program::canonical
 
 namespace {
 
