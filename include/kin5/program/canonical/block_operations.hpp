@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cstddef>
+#include <iterator>
 #include <optional>
 #include <span>
 #include <tuple>
@@ -48,6 +49,18 @@ static_assert(field_count<origin>() == std::tuple_size_v<decltype(origin_fields)
 static_assert(field_count<state_words>() == 17,
               "a field of `state_words` has no canonical operation: map it in block_operations.hpp and draw it in "
               "canonical_laws");
+
+/// The members of each operation that `append_operations` and `block_of` map, `from` included,
+/// in the order of `operation`'s alternatives.
+inline constexpr std::size_t operation_fields[] = {3, 2, 2, 2, 1, 1, 1, 2, 2, 1, 2, 2, 2, 1, 2, 3, 2, 3, 2,
+                                                   2, 2, 2, 3, 3, 2, 2, 2, 2, 2, 2, 2, 2, 4, 2, 4, 2, 2};
+static_assert(std::size(operation_fields) == operation_kinds, "every kind of operation has its count");
+static_assert(
+    []<std::size_t... k>(std::index_sequence<k...>) {
+      return ((field_count<std::variant_alternative_t<k, operation>>() == operation_fields[k]) && ...);
+    }(std::make_index_sequence<operation_kinds>{}),
+    "a member of an operation has no mapping: map it in append_operations and block_of, count it in "
+    "operation_fields and draw it in canonical_laws");
 
 /// Appends the operations of `b` to `out`, in the order of execution (operation.hpp).
 inline void append_operations(const block& b, std::vector<operation>& out) {
