@@ -25,8 +25,8 @@ struct arc_data {
   friend bool operator==(const arc_data&, const arc_data&) = default;
 };
 
-/// G0: a straight move at rapid traverse. (Heidenhain's `L … FMAX` and APT's `RAPID` before a
-/// `GOTO` are a `linear_move` after a `rapid_feed`, as their text says.)
+/// G0, Heidenhain's `L … FMAX` (after its `rapid_feed`), APT's `GOTO` after `RAPID`: a straight
+/// move at rapid traverse.
 struct rapid_move {
   static constexpr std::string_view kind_name = "rapid_move";
   origin from;
