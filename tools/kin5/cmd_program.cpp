@@ -3,6 +3,7 @@
 //   kin5 translate --from ID --to ID [--feed P] [--from-dialect D] [--to-dialect D] [-o OUT] IN
 //   kin5 reverse   --machine ID [--dialect D] [-o OUT] IN       NC program -> APT CL data
 //   kin5 post      --machine ID [--dialect D] [-o OUT] IN       APT CL data -> NC program
+//   kin5 canon     [--dialect D] IN                             the program's canonical operations
 // (each machine also as a machine file: --from-file, --to-file, --machine-file; machine_option.hpp)
 //
 // Each one reads IN (a path, or '-' for stdin) as bytes and runs a `block_translator`
@@ -39,6 +40,8 @@
 #include <vector>
 
 #include <kin5/machines/tool_table_file.hpp>
+#include <kin5/program/canonical/block_operations.hpp>
+#include <kin5/program/canonical/print.hpp>
 #include <kin5/program/io.hpp>
 #include <kin5/program/number.hpp>
 #include <kin5/program/printable.hpp>
@@ -853,6 +856,60 @@ int run_post(const machine_arguments& a) {
   return execute(j);
 }
 
+struct canon_arguments {
+  std::string dialect, input;
+  prog::read_limits limits;
+};
+
+/// `kin5 canon`: reads IN as the control runs it (its loops, calls and parameters) and prints
+/// each executed block's canonical operations, one a line, `FILE:LINE: name values` (the block's
+/// own `block_start` is left out: its line is named on each). Nothing is printed when the
+/// program has errors: they go to stderr, exit 2.
+int run_canon(const canon_arguments& a) {
+  const std::string prefix = "kin5 canon: ";
+  const std::string file = display_name(a.input);
+  std::string error;
+  auto bytes = read_input(a.input, a.limits, error);
+  if (!bytes) {
+    std::cerr << prefix << "cannot read '" << file << "': " << error << '\n';
+    return exit_codes::input_error;
+  }
+  std::optional<prog::dialect> dialect = a.dialect.empty() ? prog::guess_dialect(*bytes) : prog::parse_dialect(a.dialect);
+  if (!dialect) {
+    std::cerr << prefix << "no marker of one dialect in " << file << "; choose it with --dialect\n";
+    return exit_codes::usage;
+  }
+  prog::read_result diagnostics;
+  std::string out;
+  std::vector<prog::canonical::operation> operations;
+  prog::canonical::operation_printer printer;
+  prog::read_blocks(
+      *dialect, *bytes, file, diagnostics,
+      [&](prog::block&& b) {
+        if (!diagnostics.ok()) return;  // nothing partial: the output is dropped anyway
+        operations.clear();
+        prog::canonical::append_operations(b, operations);
+        const std::string where = prog::printable(b.where.file.str()) + ":" + std::to_string(b.where.line) + ": ";
+        for (const auto& op : operations) {
+          const std::string text = printer.text(op);  // a block's start too: the printer keeps its text
+          if (!std::holds_alternative<prog::canonical::block_start>(op)) out += where + text + '\n';
+        }
+      },
+      a.limits);
+  std::vector<message> messages;
+  collect(messages, diagnostics.errors, "error");
+  collect(messages, diagnostics.warnings, "warning");
+  print_in_source_order(std::move(messages), prefix, {diagnostics.errors_not_kept, diagnostics.warnings_not_kept});
+  if (!diagnostics.ok()) {
+    const std::size_t n = diagnostics.error_count();
+    std::cerr << prefix << n << (n == 1 ? " error" : " errors") << " in " << file << " (read as "
+              << prog::name(*dialect) << "); nothing written\n";
+    return exit_codes::input_error;
+  }
+  std::cout << out;
+  return exit_codes::ok;
+}
+
 /// The help footer's table of default dialects, one machine per line.
 std::string default_dialect_table() {
   std::size_t width = 0;
@@ -937,6 +994,20 @@ void add_program_commands(CLI::App& app, int& exit_code) {
     sub->add_option("input", a->input, "Input APT CL file; '-' for stdin")->required();
     sub->footer(default_dialect_table() + exit_code_footer);
     sub->callback([a, &exit_code] { exit_code = run_post(*a); });
+  }
+  {
+    auto a = std::make_shared<canon_arguments>();
+    auto* sub = app.add_subcommand("canon", "Print an NC program's canonical operations as the control runs it, one a line");
+    const auto every_name = dialect_names([](const prog::capabilities&) { return true; });
+    sub->add_option("--dialect", a->dialect, "Dialect of IN (default: the one recognised from its markers)")
+        ->check(CLI::IsMember(std::vector<std::string>(every_name.begin(), every_name.end())));
+    add_limit_options(sub, a->limits);
+    sub->add_option("input", a->input, "Input NC program; '-' for stdin")->required();
+    sub->footer(
+        "\n\nEach line: FILE:LINE: name values, lengths in mm, angles in deg (docs/user-guide.md, \"Canonical "
+        "operations\").\nExit codes: 0 printed; 1 bad arguments; 2 the input cannot be read or has errors (all "
+        "listed as\nFILE:LINE:COL: error: ...); nothing is printed then.\n");
+    sub->callback([a, &exit_code] { exit_code = run_canon(*a); });
   }
 }
 

@@ -3,6 +3,7 @@
 // between dialects (generated text, how a writer numbers blocks) comes from the dialect's
 // `contract` (contract.hpp), its error table from `<name>/errors.txt` (bad_inputs.hpp).
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -11,6 +12,7 @@
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
+#include <kin5/program/canonical/block_operations.hpp>
 #include <kin5/program/dialect.hpp>
 #include <kin5/program/io.hpp>
 
@@ -91,6 +93,25 @@ struct read_write_read {
   }
 };
 const bool law_3 = for_every_dialect<read_write_read>("read, write, read is stable and writing is idempotent", "[dialects]");
+
+/// Every block a reader gives is its canonical operations (program/canonical/): they read back as
+/// the same block, in the order of execution.
+template <class D>
+struct reads_as_operations {
+  static void check() {
+    rc::prop("block_of(operations_of(b)) == b for every block read", [] {
+      const read_result r = read_as<D>(contract<D>::draw_program().text);
+      RC_ASSERT(r.ok());
+      for (const block& b : r.parsed.blocks) {
+        const std::optional<block> back = canonical::block_of(canonical::operations_of(b));
+        RC_ASSERT(back.has_value());
+        RC_ASSERT(*back == b);
+      }
+    });
+  }
+};
+const bool law_canonical =
+    for_every_dialect<reads_as_operations>("every block read is its canonical operations", "[dialects]");
 
 /// Every program kin5 writes reads back through kin5's own reader: a program drawn in D,
 /// written by each other dialect's writer, either is refused by that writer (a block it cannot

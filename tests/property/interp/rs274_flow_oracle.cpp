@@ -2,7 +2,8 @@
 // program with parameters, expressions, o-word branches and loops (if/elseif/else, while,
 // do/while, repeat, break and continue of while and do loops) and a subroutine called with arguments is read by kin5's
 // LinuxCNC reader, which executes it (program/linuxcnc/statements.hpp), and run by `rs274 -g`:
-// the moves kin5 reads end where rs274's STRAIGHT_TRAVERSE and STRAIGHT_FEED end, to 1e-9.
+// kin5's canonical moves (program/canonical/: rapid_move, linear_move, or a modal_move in the mode
+// before it) are rs274's STRAIGHT_TRAVERSE and STRAIGHT_FEED, and end where they end, to 1e-9.
 // Positions are sums of numbers of 3 decimals, which rs274's 4 printed decimals give exactly.
 // Left out, as rs274 (LinuxCNC 2.9) parts from its manual there: once it has passed over a
 // `break` it did not take (in an `if` whose condition failed, or in a while loop that did not
@@ -15,6 +16,7 @@
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
+#include <kin5/program/canonical/block_operations.hpp>
 #include <kin5/program/linuxcnc/dialect.hpp>
 
 #include "rs274_canonical.hpp"
@@ -23,6 +25,7 @@ namespace {
 
 using namespace kin5::program;
 namespace rs = kin5::test::rs274;
+namespace can = kin5::program::canonical;
 
 std::string fixed3(int thousandths) {
   const bool negative = thousandths < 0;
@@ -158,16 +161,23 @@ TEST_CASE("LinuxCNC control flow: kin5 executes what rs274 executes") {
     RC_ASSERT(r.errors.empty());
     std::vector<kin5_move> ours;
     double at[3] = {0, 0, 0};
-    for (const block& b : r.parsed.blocks) {
-      if (!b.moves()) continue;
-      if (b.axes.x_mm) at[0] = *b.axes.x_mm;
-      if (b.axes.y_mm) at[1] = *b.axes.y_mm;
-      if (b.axes.z_mm) at[2] = *b.axes.z_mm;
-      kin5_move m;
-      m.rapid = b.motion == motion_kind::rapid;
-      for (int k = 0; k < 3; ++k) m.end[k] = at[k];
-      ours.push_back(m);
-    }
+    bool rapid_mode = false;
+    for (const block& b : r.parsed.blocks)
+      for (const can::operation& op : can::operations_of(b)) {
+        const axis_words* to = nullptr;
+        if (const auto* m = std::get_if<can::rapid_move>(&op)) rapid_mode = true, to = &m->to;
+        else if (const auto* m = std::get_if<can::linear_move>(&op)) rapid_mode = false, to = &m->to;
+        else if (const auto* m = std::get_if<can::modal_move>(&op)) to = &m->to;
+        RC_ASSERT(!std::holds_alternative<can::arc_move>(op) && !std::holds_alternative<can::machine_move>(op));
+        if (!to || to->empty()) continue;
+        if (to->x_mm) at[0] = *to->x_mm;
+        if (to->y_mm) at[1] = *to->y_mm;
+        if (to->z_mm) at[2] = *to->z_mm;
+        kin5_move m;
+        m.rapid = rapid_mode;
+        for (int k = 0; k < 3; ++k) m.end[k] = at[k];
+        ours.push_back(m);
+      }
     const rs::run theirs = rs::run_program(text);
     RC_LOG() << "--- rs274:\n" << theirs.text << "\n";
     RC_ASSERT(theirs.status == 0);

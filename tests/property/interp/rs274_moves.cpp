@@ -1,11 +1,13 @@
 // An independent oracle for LinuxCNC moves: random programs mixing G90 and G91, G0 and G1, G2
 // and G3 (with I J and with R, in each plane), in inches or millimetres, run by rs274
-// (rs274_canonical.hpp) and read by kin5's LinuxCNC reader: every move kin5 reads ends where
-// rs274's canonical move ends, to 1e-9, and an arc with I J (K) has rs274's centre. rs274 prints
+// (rs274_canonical.hpp) and read by kin5's LinuxCNC reader into canonical operations
+// (program/canonical/): each of kin5's moves is rs274's canonical move of the same kind
+// (rapid_move STRAIGHT_TRAVERSE, linear_move STRAIGHT_FEED, arc_move ARC_FEED, turning the same
+// way), ends where it ends, to 1e-9, and an arc with I J (K) has rs274's centre. rs274 prints
 // 4 decimals, so the programs use positions of 3 decimals, whose sums and arc ends on quarter
 // turns stay on 3 decimals: rs274's printed value is then the exact one, and the comparison to
-// 1e-9 means what it says. rs274 works in the program's unit (USE_LENGTH_UNITS); kin5's model
-// holds millimetres, compared after dividing by 25.4.
+// 1e-9 means what it says. rs274 works in the program's unit (USE_LENGTH_UNITS); kin5's
+// operations hold millimetres, divided by 25.4 after a `use_length_units` inch.
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -16,8 +18,8 @@
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
+#include <kin5/program/canonical/block_operations.hpp>
 #include <kin5/program/linuxcnc/reader.hpp>
-#include <kin5/program/modal.hpp>
 #include <kin5/program/number.hpp>
 
 #include "rs274_canonical.hpp"
@@ -26,6 +28,7 @@ namespace {
 
 using namespace kin5::program;
 namespace rs = kin5::test::rs274;
+namespace can = kin5::program::canonical;
 
 /// A position in thousandths as text.
 std::string at(long long n) { return format_number(static_cast<double>(n) / 1000.0, 3); }
@@ -107,29 +110,62 @@ drawn draw_moves() {
   return d;
 }
 
-/// kin5's moves: the end of every block that moves, X Y Z in the program's unit.
+/// kin5's moves: its canonical operations of move kinds, each with the end of its move (X Y Z in
+/// the unit of the last `use_length_units`, the program's), its kind, and an arc's direction and
+/// centre.
 struct kin5_move {
+  rs::move_kind kind = rs::move_kind::feed;
   std::array<double, 6> end{};
+  bool clockwise = false;
   std::optional<std::array<double, 3>> centre;
-  bool arc = false;
 };
 
-std::vector<kin5_move> kin5_moves(const std::string& text, bool inches, std::string& errors) {
+/// The moves among the canonical operations of `text` as kin5's LinuxCNC reader runs it. A move
+/// keeps the axes it does not name where they were. A motion word without axis words sets the
+/// mode only (rs274 runs it as a move to where the tool stands; the drawn programs have none).
+std::vector<kin5_move> kin5_moves(const std::string& text, std::string& errors) {
   read_result r;
   std::vector<kin5_move> moves;
-  modal_state m;
-  const double unit = inches ? 25.4 : 1.0;
+  std::array<double, 6> at;
+  at.fill(NAN);
+  double unit_mm = 1.0;
+  std::optional<rs::move_kind> mode;
+  std::vector<can::operation> operations;
   linuxcnc::read_blocks(text, "t.ngc", r, [&](block&& b) {
-    m.apply(b);
-    if (!b.moves() || b.machine_coordinates) return;
-    kin5_move k;
-    const std::optional<double> v[6] = {m.x_mm, m.y_mm, m.z_mm, m.a_deg, m.b_deg, m.c_deg};
-    for (int i = 0; i < 6; ++i) k.end[i] = v[i] ? *v[i] / (i < 3 ? unit : 1.0) : NAN;
-    const auto kind = m.motion;
-    k.arc = kind && is_arc(*kind);
-    if (b.arc && b.arc->centre_mm) k.centre = std::array<double, 3>{b.arc->centre_mm->x / unit, b.arc->centre_mm->y / unit,
-                                                                     b.arc->centre_mm->z / unit};
-    moves.push_back(k);
+    operations.clear();
+    can::append_operations(b, operations);
+    for (const can::operation& op : operations) {
+      if (const auto* u = std::get_if<can::use_length_units>(&op))
+        unit_mm = u->unit == can::length_unit::inch ? 25.4 : 1.0;
+      kin5_move k;
+      const axis_words* to = nullptr;
+      if (const auto* m = std::get_if<can::rapid_move>(&op)) {
+        k.kind = rs::move_kind::traverse, to = &m->to;
+      } else if (const auto* m = std::get_if<can::linear_move>(&op)) {
+        k.kind = rs::move_kind::feed, to = &m->to;
+      } else if (const auto* m = std::get_if<can::arc_move>(&op)) {
+        k.kind = rs::move_kind::arc, to = &m->to, k.clockwise = m->clockwise;
+        if (m->circle && m->circle->centre_mm) {
+          const kin5::vec3& c = *m->circle->centre_mm;
+          k.centre = std::array<double, 3>{c.x / unit_mm, c.y / unit_mm, c.z / unit_mm};
+        }
+      } else if (const auto* m = std::get_if<can::modal_move>(&op)) {
+        if (!mode) {
+          errors += "a move without a motion mode\n";
+          continue;
+        }
+        k.kind = *mode, to = &m->to;
+      } else {
+        continue;
+      }
+      mode = k.kind;
+      if (to->empty()) continue;
+      const std::optional<double> v[6] = {to->x_mm, to->y_mm, to->z_mm, to->a_deg, to->b_deg, to->c_deg};
+      for (int i = 0; i < 6; ++i)
+        if (v[i]) at[i] = *v[i] / (i < 3 ? unit_mm : 1.0);
+      k.end = at;
+      moves.push_back(k);
+    }
   });
   for (const diagnostic& d : r.errors) errors += d.to_string() + "\n";
   return moves;
@@ -142,7 +178,7 @@ TEST_CASE("LinuxCNC moves: kin5 reads the end points rs274 runs to, G90 and G91,
     const drawn d = draw_moves();
     const rs::run theirs = rs::run_program(d.text);
     std::string errors;
-    const std::vector<kin5_move> ours = kin5_moves(d.text, d.inches, errors);
+    const std::vector<kin5_move> ours = kin5_moves(d.text, errors);
     RC_LOG() << d.text << "\n--- rs274:\n" << theirs.text << "\n";
     RC_ASSERT(errors == "");
     RC_ASSERT(theirs.status == 0);
@@ -151,7 +187,8 @@ TEST_CASE("LinuxCNC moves: kin5 reads the end points rs274 runs to, G90 and G91,
       const rs::canonical_move& t = theirs.moves[i];
       RC_LOG() << "move " << i << ": " << t.call << "\n";
       RC_ASSERT(t.inches == d.inches);
-      RC_ASSERT((t.kind == rs::move_kind::arc) == ours[i].arc);
+      RC_ASSERT(t.kind == ours[i].kind);
+      if (t.kind == rs::move_kind::arc) RC_ASSERT((t.rotation < 0) == ours[i].clockwise);
       for (int k = 0; k < 6; ++k) RC_ASSERT(std::abs(ours[i].end[k] - t.end[k]) <= 1e-9);
       if (ours[i].centre) {
         const auto o = rs::arc_order(t.arc_plane);
