@@ -31,7 +31,7 @@ runs=${KIN5_FUZZ_RUNS:-150000}
 pipeline_runs=${KIN5_PIPELINE_FUZZ_RUNS:-1000}
 if [ "$runs" -gt 0 ]; then
   cmake -S . -B build-fuzz -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DKIN5_BUILD_FUZZ=ON -DKIN5_BUILD_TESTS=OFF -DKIN5_BUILD_TOOLS=OFF -DKIN5_BUILD_REACH=OFF -DKIN5_INSTALL=OFF
+    -DKIN5_BUILD_FUZZ=ON -DKIN5_BUILD_TESTS=OFF -DKIN5_BUILD_TOOLS=OFF -DKIN5_BUILD_REACH=OFF -DKIN5_BUILD_LINUXCNC=OFF -DKIN5_INSTALL=OFF
   cmake --build build-fuzz -j"$jobs"
   stage_done fuzz-build
   # One fuzzer per core at a time, the slowest (Siemens: its inputs loop up to the executed-line
@@ -71,7 +71,7 @@ ran_cli_tests=()
 if [ "${KIN5_SANITIZE:-1}" != 0 ]; then
   sanitize="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
   cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
-    -DCMAKE_CXX_FLAGS="$sanitize" -DCMAKE_EXE_LINKER_FLAGS="$sanitize" -DKIN5_BUILD_REACH=OFF -DKIN5_INSTALL=OFF
+    -DCMAKE_CXX_FLAGS="$sanitize" -DCMAKE_EXE_LINKER_FLAGS="$sanitize" -DKIN5_BUILD_REACH=OFF -DKIN5_BUILD_LINUXCNC=OFF -DKIN5_INSTALL=OFF
   cmake --build build-asan -j"$jobs" --target kin5_cli
   stage_done sanitizer-build
   ctest --test-dir build-asan --output-on-failure -j"$jobs" -R "$cli_tests"
