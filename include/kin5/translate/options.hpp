@@ -138,7 +138,7 @@ struct translation {
   void refuse(program::diagnostic d, const allowances& allow) {
     // Not one `?:` over both: `allowed` is a vector and `errors` a diagnostic_list, so the
     // conditional would be a copy of the vector, and the error would be added to the copy.
-    if (!d.construct.empty() && allow.allows(d.construct)) allowed.push_back(std::move(d));
+    if (!d.construct.empty() && allow.allows(d.construct)) allowed.push_back(called(std::move(d)));
     else errors.push_back(std::move(d));
   }
 };
