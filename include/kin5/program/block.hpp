@@ -213,9 +213,10 @@ struct diagnostic {
   /// file name and the message may quote the input: bytes a terminal acts on are written `\xHH`
   /// (printable.hpp), so a program cannot send escape sequences through a diagnostic.
   std::string to_string(std::string_view severity = "error") const {
-    std::string out = located(where) + std::string(severity) + ": " + printable(message);
+    std::string out = located(where);
+    out.append(severity).append(": ").append(printable(message));
     for (auto call = called_from.rbegin(); call != called_from.rend(); ++call)
-      out += "\n" + located(*call) + "note: called from here";
+      out.append("\n").append(located(*call)).append("note: called from here");
     return out;
   }
 

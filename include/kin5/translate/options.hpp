@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -110,6 +111,9 @@ struct block_report {
   /// The block's place among the motion blocks reported (from 0): consecutive unreachable blocks
   /// are grouped by it (run_report.hpp).
   std::size_t ordinal = 0;
+  /// The calls open when the block ran (`block::call_chain`, an id into the reader's
+  /// `read_result::calls`); 0: none.
+  std::uint32_t call_chain = 0;
 };
 
 /// The result of `translate`, `reverse` or `post`.
