@@ -208,15 +208,27 @@ struct diagnostic {
   /// (call_chain.hpp); empty at the top level.
   std::vector<source_location> called_from{};
 
+  /// Calls noted one by one in `to_string`, at most: the innermost; then the outermost says how
+  /// many were left out (a call nested 64 deep).
+  static constexpr std::size_t calls_noted = 8;
+
   /// `FILE:LINE:COL: error: message`, the format compilers use, so editors can jump to it, then
-  /// for each open call, innermost first, a line `FILE:LINE:COL: note: called from here`. The
-  /// file name and the message may quote the input: bytes a terminal acts on are written `\xHH`
-  /// (printable.hpp), so a program cannot send escape sequences through a diagnostic.
+  /// for each open call, innermost first, a line `FILE:LINE:COL: note: called from here` (at
+  /// most `calls_noted` of them and the outermost). The file name and the message may quote the
+  /// input: bytes a terminal acts on are written `\xHH` (printable.hpp), so a program cannot
+  /// send escape sequences through a diagnostic.
   std::string to_string(std::string_view severity = "error") const {
     std::string out = located(where);
     out.append(severity).append(": ").append(printable(message));
-    for (auto call = called_from.rbegin(); call != called_from.rend(); ++call)
-      out.append("\n").append(located(*call)).append("note: called from here");
+    const std::size_t n = called_from.size();
+    for (std::size_t k = 0; k < n; ++k) {  // innermost first
+      if (k == calls_noted && k + 1 < n) {
+        out.append("\n").append(located(called_from.front())).append("note: called from here, through ");
+        out.append(std::to_string(n - calls_noted - 1)).append(" more calls not shown");
+        break;
+      }
+      out.append("\n").append(located(called_from[n - 1 - k])).append("note: called from here");
+    }
     return out;
   }
 
