@@ -141,6 +141,19 @@ case "$name" in
     [ "$(cat lim.h)" = old ] || report "lim.h changed"
     no_temporary
     ;;
+  store-file-limit)
+    # The blocks past --max-memory-bytes go to a temporary file; when it cannot be written (here
+    # ulimit -f, during the first pass) the run is an input error naming it, OUT unchanged.
+    big big.mpf 40000
+    echo old >lim.h
+    (ulimit -f 100 && exec env --default-signal "$exe" $translate --max-memory-bytes 1KiB -o lim.h big.mpf) >out 2>err
+    rc=$?
+    [ "$rc" = 2 ] || { report "exit $rc, expected 2"; show err; }
+    grep -q "^big.mpf: error: cannot write the temporary file that holds the executed blocks beyond 1024 bytes (--max-memory-bytes): File too large" err ||
+      { report "no message about the temporary file"; show err; }
+    [ "$(cat lim.h)" = old ] || report "lim.h changed"
+    no_temporary
+    ;;
   signals)
     # SIGTERM, SIGINT, SIGHUP during the write: the process dies of the signal, OUT keeps its
     # old contents and no temporary file is left; SIGKILL too where the temporary file has no

@@ -77,7 +77,8 @@ assert d["exit_code"] == 2 and d["written"] is False
 assert b == {"read": 1503, "translated": 2, "comment_only": 1, "refused": 1500, "written": 0, "added": 0}, b
 assert d["error_count"] == 1501 and d["errors_not_listed"] == 501 and len(d["errors"]) == 1000, d["error_count"]
 e = d["errors"][0]
-assert e == {"file": "bad.mpf", "line": 2, "column": 11, "construct": None, "reason": "unknown word '"'"'YY2'"'"'", "option": None}, e'
+assert e == {"file": "bad.mpf", "line": 2, "column": 11, "construct": None, "reason": "unknown word '"'"'YY2'"'"'", "option": None,
+             "called_from": []}, e'
     # The last line is beyond the 1,000 kept: read it alone for the quoting.
     tail -n 3 bad.mpf >q.mpf
     run 2 translate --from sajo-12000p --to dmu-80p -o q.h --report q.json q.mpf

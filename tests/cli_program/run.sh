@@ -809,6 +809,28 @@ EOF
     printf 'O1000\nG1 X#7\nM99\n' >sub/O1000.nc
     run 2 translate $pair --include-dir sub -o no.nc main.nc
     grep -q '^sub/O1000\.nc:2:' err || { report "the error is not at the called file's line"; show err; }
+    # ... and the call it ran from, on the next line, as compilers note it.
+    grep -A1 '^sub/O1000\.nc:2:5: error:' err | tail -n 1 | grep -q '^main\.nc:6:1: note: called from here$' ||
+      { report "no note of the call"; show err; }
+    # A subprogram of the same file called twice, 2 passes each: each error notes its call.
+    printf '%%\nO0001\nT1 M6\nG43.4 H1\nG0 X0. Y0. Z10. A0. C0.\nM98 P2000\nM98 P2000\nM30\nO2000\nG1 X#7 F100.\nM99\n%%\n' >same.nc
+    run 2 translate $pair --report r.json -o no.nc same.nc
+    [ "$(grep -c '^same\.nc:10:5: error:' err)" = 2 ] || { report "not one error per call"; show err; }
+    grep -q '^same\.nc:6:1: note: called from here$' err && grep -q '^same\.nc:7:1: note: called from here$' err ||
+      { report "the calls are not noted"; show err; }
+    grep -q '"called_from": \[{"file": "same.nc", "line": 7, "column": 1}\]' r.json ||
+      { report "the report does not list the call"; show r.json; }
+    ;;
+  memory-bound)
+    # A loop executes 210,000 lines into 140,000 blocks: with 64 KiB of memory for them (the
+    # rest in a temporary file), the output is the same as with the default 256 MiB.
+    printf '%%\nO0001\nT1 M6\nG43.4 H1\nG0 X0. Y0. Z10. A0. C0.\n#1=0\nWHILE [#1 LT 70000] DO1\nG1 X[#1/1000] F500.\n#1=#1+1\nEND1\nG49\nM30\n%%\n' >loop.nc
+    pair="--from ac-trunnion --to ac-head --from-dialect iso --to-dialect iso"
+    run 0 translate $pair -o default.nc loop.nc
+    run 0 translate $pair --max-memory-bytes 64KiB -o bounded.nc loop.nc
+    [ "$(grep -c '^N[0-9]* *G1\|^G1' default.nc)" -ge 70000 ] || { report "the loop's moves are not all written"; tail -n 3 default.nc; }
+    cmp -s default.nc bounded.nc || { report "a bounded store writes another program"; cmp default.nc bounded.nc; }
+    run 1 translate $pair --max-memory-bytes 0 -o no.nc loop.nc  # at least one byte
     ;;
   *)
     echo "run.sh: unknown test '$name'" >&2

@@ -122,12 +122,15 @@ void print_in_source_order(std::vector<message> messages, const std::string& pre
                 << " not shown (the first " << max_shown << " are)\n";
 }
 
-/// A note for a block translated on the other solution branch (listed with --verbose).
-prog::diagnostic other_branch_note(const block_report& r) {
+/// A note for a block translated on the other solution branch (listed with --verbose), with the
+/// calls it ran in (`calls`: the reader's).
+prog::diagnostic other_branch_note(const block_report& r, const prog::call_chains& calls) {
   std::string text = "translated on the other solution branch";
   if (!r.source_angles.empty()) text += ": " + r.source_angles;
   if (!r.why.empty()) text += " (" + r.why + ")";
-  return {r.where, text};
+  prog::diagnostic note{r.where, text};
+  if (r.call_chain != 0 && r.call_chain <= calls.size()) note.called_from = calls.sites(r.call_chain);
+  return note;
 }
 
 /// One error for a run of more than one unreachable block, at its first block.
@@ -299,7 +302,7 @@ int translate_and_write(const job& j, std::string bytes, prog::dialect dialect, 
     }
     if (j.verbose)
       for (const auto& r : result.reports)
-        if (r.match == matchability::other_branch) messages.push_back({"note", other_branch_note(r)});
+        if (r.match == matchability::other_branch) messages.push_back({"note", other_branch_note(r, run.input.calls)});
     print_in_source_order(std::move(messages), prefix,
                           {errors_by_run_not_kept(result, a.unreachable, j.target), result.warnings.not_kept()});
   }

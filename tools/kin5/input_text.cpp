@@ -83,6 +83,11 @@ void add_limit_options(CLI::App* sub, program::read_limits& limits) {
                   "Refuse a program that executes more lines than this, counting each pass of a loop or call "
                   "(it may loop for ever); default 100000000")
       ->check(CLI::Range(std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max()));
+  sub->add_option("--max-memory-bytes", limits.max_memory_bytes,
+                  "Keep at most this many bytes of executed blocks in memory between the two passes of a "
+                  "translation; the rest wait in a temporary file (a number, or with a unit: 64MiB); default 256MiB")
+      ->transform(CLI::AsSizeValue(true))
+      ->check(CLI::Range(std::size_t{1}, std::numeric_limits<std::size_t>::max()));
   sub->add_option("--include-dir", limits.include_dirs,
                   "Directory where a call of another file (M98 P1000, G65 P1000, o<name> call) finds it; "
                   "repeatable, searched in the order given (docs/user-guide.md)")

@@ -29,8 +29,8 @@ namespace kin5::tool {
 std::optional<std::string> read_input(const std::string& path, const program::read_limits& limits,
                                       std::string& error);
 
-/// Adds --max-file-bytes, --max-line-bytes, --max-block-words, --max-executed-lines and
-/// --include-dir (repeatable), which set `limits`, to `sub`.
+/// Adds --max-file-bytes, --max-line-bytes, --max-block-words, --max-executed-lines,
+/// --max-memory-bytes and --include-dir (repeatable), which set `limits`, to `sub`.
 void add_limit_options(CLI::App* sub, program::read_limits& limits);
 
 }  // namespace kin5::tool

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -19,44 +20,14 @@
 
 #include "../core/vec.hpp"
 #include "alarm_stop.hpp"
+#include "call_chain.hpp"
 #include "dialect_id.hpp"
 #include "printable.hpp"
 #include "resolution.hpp"
+#include "source_location.hpp"
 #include "state_words.hpp"
 
 namespace kin5::program {
-
-/// The name of a program's file, shared by every location in it: copying one copies a pointer,
-/// so the blocks of a long program hold one string, not one each. Reads as a `const std::string&`.
-class file_name {
- public:
-  file_name() = default;
-  file_name(std::string name) : name_(std::make_shared<const std::string>(std::move(name))) {}
-  file_name(const char* name) : file_name(std::string(name)) {}
-
-  const std::string& str() const noexcept { return name_ ? *name_ : none(); }
-  operator const std::string&() const noexcept { return str(); }
-  bool empty() const noexcept { return str().empty(); }
-
-  friend bool operator==(const file_name& a, const file_name& b) noexcept { return a.str() == b.str(); }
-  friend std::string operator+(const file_name& a, std::string_view b) { return a.str() + std::string(b); }
-  friend std::string operator+(const file_name& a, const char* b) { return a.str() + b; }
-
- private:
-  static const std::string& none() noexcept {
-    static const std::string empty_name;
-    return empty_name;
-  }
-  std::shared_ptr<const std::string> name_;
-};
-
-/// Where a block or a word starts: 1-based line and column (columns count bytes).
-struct source_location {
-  file_name file;
-  std::size_t line = 0;
-  std::size_t column = 0;
-  friend bool operator==(const source_location&, const source_location&) = default;
-};
 
 /// Motion commanded by a block.
 enum class motion_kind {
@@ -114,6 +85,9 @@ enum class machine_position {
 /// One block of an NC program (one line; an APT statement with its `$` continuations).
 struct block {
   source_location where;              ///< first character of the block
+  /// The calls open when the block ran, as an id into the run's `call_chains`
+  /// (`read_result::calls`); 0: none, the block ran at the top level.
+  std::uint32_t call_chain = 0;
   std::string text;                   ///< source text without the line ending
   std::optional<long long> number;    ///< N number or Heidenhain block number
 
@@ -173,10 +147,12 @@ struct block {
   /// Whether the block moves any axis.
   bool moves() const { return !axes.empty(); }
 
-  /// The block without where it stands and how it was written: no location, text or number.
+  /// The block without where it stands and how it was written: no location, call chain, text
+  /// or number.
   block unplaced() const {
     block rest = *this;
     rest.where = {};
+    rest.call_chain = 0;
     rest.text.clear();
     rest.number.reset();
     return rest;
@@ -228,13 +204,37 @@ struct diagnostic {
   std::string construct{};
   /// The option that resolves it ("--allow unset-rotary", "--angle-tolerance"), when one does.
   std::string option{};
+  /// The calls open at `where` when it ran inside a called subprogram or file, outermost first
+  /// (call_chain.hpp); empty at the top level.
+  std::vector<source_location> called_from{};
 
-  /// `FILE:LINE:COL: error: message`, the format compilers use, so editors can jump to it. The
-  /// file name and the message may quote the input: bytes a terminal acts on are written `\xHH`
-  /// (printable.hpp), so a program cannot send escape sequences through a diagnostic.
+  /// Calls noted one by one in `to_string`, at most: the innermost; then the outermost says how
+  /// many were left out (a call nested 64 deep).
+  static constexpr std::size_t calls_noted = 8;
+
+  /// `FILE:LINE:COL: error: message`, the format compilers use, so editors can jump to it, then
+  /// for each open call, innermost first, a line `FILE:LINE:COL: note: called from here` (at
+  /// most `calls_noted` of them and the outermost). The file name and the message may quote the
+  /// input: bytes a terminal acts on are written `\xHH` (printable.hpp), so a program cannot
+  /// send escape sequences through a diagnostic.
   std::string to_string(std::string_view severity = "error") const {
-    return printable(where.file.str()) + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
-           ": " + std::string(severity) + ": " + printable(message);
+    std::string out = located(where);
+    out.append(severity).append(": ").append(printable(message));
+    const std::size_t n = called_from.size();
+    for (std::size_t k = 0; k < n; ++k) {  // innermost first
+      if (k == calls_noted && k + 1 < n) {
+        out.append("\n").append(located(called_from.front())).append("note: called from here, through ");
+        out.append(std::to_string(n - calls_noted - 1)).append(" more calls not shown");
+        break;
+      }
+      out.append("\n").append(located(called_from[n - 1 - k])).append("note: called from here");
+    }
+    return out;
+  }
+
+ private:
+  static std::string located(const source_location& at) {
+    return printable(at.file.str()) + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": ";
   }
 };
 
@@ -257,8 +257,20 @@ struct read_result {
   std::vector<diagnostic> warnings;  ///< accepted, but worth a look (printed as "warning:")
   std::size_t errors_not_kept = 0;   ///< errors found after the first `max_kept_diagnostics`
   std::size_t warnings_not_kept = 0;
-  void add_error(diagnostic d) { keep_or_count(errors, errors_not_kept, std::move(d)); }
-  void add_warning(diagnostic d) { keep_or_count(warnings, warnings_not_kept, std::move(d)); }
+  /// The call chains of the blocks read (`block::call_chain`): those the program's executor
+  /// opened (interp/executor.hpp).
+  call_chains calls{};
+  /// The chain of the line being read (0: the top level): a reader running a program sets it
+  /// before reading each line, stamps it on the line's blocks, and the errors and warnings
+  /// added meanwhile say where they were called from (`diagnostic::called_from`).
+  std::uint32_t reading_call = 0;
+  void add_error(diagnostic d) { keep_or_count(errors, errors_not_kept, called(std::move(d))); }
+  void add_warning(diagnostic d) { keep_or_count(warnings, warnings_not_kept, called(std::move(d))); }
+  /// `d` with the calls open while the line being read runs, unless it has its own.
+  diagnostic called(diagnostic d) const {
+    if (reading_call != 0 && d.called_from.empty()) d.called_from = calls.sites(reading_call);
+    return d;
+  }
   std::size_t error_count() const { return errors.size() + errors_not_kept; }
   std::size_t warning_count() const { return warnings.size() + warnings_not_kept; }
   /// How finely the text writes its numbers. The streaming driver fills it from the text

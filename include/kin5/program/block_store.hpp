@@ -11,18 +11,30 @@
 /// its heap parts. Records go into chunks, so the store grows without copying: a record that
 /// does not fit the rest of the last chunk starts a new one, of its own size if it is larger.
 /// Chunks double from 64 KiB up to 1 MiB, so a short program does not take a whole 1 MiB.
+///
+/// Memory is bounded: once the chunks held would pass the store's budget of bytes
+/// (`memory_bytes`, 256 MiB by default; the tool's `--max-memory-bytes`), the full chunks are
+/// written to an anonymous temporary file (`std::tmpfile`, removed when the store goes) and
+/// freed; `replay` reads them back in order, a chunk at a time, before those in memory. The
+/// budget is looked at once per new chunk, never per record. A failure to write or read that file
+/// is an `error()`: no block is pushed after it, and `replay` stops there and returns false, so
+/// a caller never takes a partial replay for a whole one.
 /// Every field of `block` and of `state_words` has its codec here: the field counts are checked
 /// at compile time (`field_count`), and `block_store_laws` draws every field.
 /// `replay` gives back blocks equal (`==`) to those stored, except:
-/// - `where.file` is the store's file name (one per program, not one per block);
+/// - `where.file` is the store's file name where the block's was the same string (one per
+///   program, not one per block); a block of another file (one a call ran) gets its own back;
 /// - `text` is dropped where the caller asks (`keep_text`), for blocks whose consumer never
 ///   reads it: the translator does not read the text of a block it moves.
 #pragma once
 
 #include <algorithm>
+#include <cerrno>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -54,23 +66,32 @@ class block_store {
   static constexpr std::size_t default_chunk_bytes = std::size_t{1} << 20;
   /// Bytes of the first chunk; each next one doubles, up to the chunk size.
   static constexpr std::size_t default_first_chunk_bytes = std::size_t{1} << 16;
+  /// Bytes of chunks held in memory before the full ones go to the temporary file.
+  static constexpr std::size_t default_memory_bytes = std::size_t{256} << 20;
 
   explicit block_store(std::string file, std::size_t chunk_bytes = default_chunk_bytes,
                        std::size_t first_chunk_bytes = default_first_chunk_bytes)
-      : file_(std::move(file)),
+      : file_(file_name(std::move(file))),
         chunk_bytes_(std::max<std::size_t>(chunk_bytes, 1)),
         next_chunk_bytes_(std::clamp<std::size_t>(first_chunk_bytes, 1, chunk_bytes_)) {}
 
-  /// Appends `b` (without its text unless `keep_text`).
+  /// Sets the bytes of chunks held in memory (at least the chunk being filled is).
+  void memory_bytes(std::size_t bytes) { memory_bytes_ = bytes; }
+  std::size_t memory_bytes() const { return memory_bytes_; }
+
+  /// Appends `b` (without its text unless `keep_text`); nothing after an `error()`.
   void push(const block& b, bool keep_text = true) {
+    if (!error_.empty()) return;
     encode(b, keep_text);
     record_.resize(static_cast<std::size_t>(write_ - record_.data()));
     if (chunks_.empty() || capacity_ - used_ < record_.size()) {  // used_ <= capacity_ always
       capacity_ = std::max(next_chunk_bytes_, record_.size());
       next_chunk_bytes_ = std::min(chunk_bytes_, 2 * next_chunk_bytes_);
+      if (held_bytes_ + capacity_ > memory_bytes_ && !spill()) return;  // the full chunks go to the file
       // Not zeroed: replay reads only the bytes push copied in (up to sizes_).
       chunks_.push_back(std::make_unique_for_overwrite<unsigned char[]>(capacity_));
       sizes_.push_back(0);
+      held_bytes_ += capacity_;
       used_ = 0;
     }
     std::memcpy(chunks_.back().get() + used_, record_.data(), record_.size());
@@ -79,25 +100,41 @@ class block_store {
     ++count_;
   }
 
-  /// Calls `f(const block&)` for every stored block, in the order pushed. The store is
-  /// unchanged. One block object is reused for all, so its strings keep their capacity.
+  /// Calls `f(const block&)` for every stored block, in the order pushed; true when it did for
+  /// all, false when an `error()` (before or while reading the temporary file) stopped it. The
+  /// store is unchanged. One block object is reused for all, so its strings keep their capacity.
   template <class F>
-  void replay(F&& f) const {
+  bool replay(F&& f) const {
+    if (!error_.empty()) return false;
     block b;
     b.where.file = file_;
+    std::uint64_t file_index = 0;  // of b.where.file: 0 the store's, else files_[file_index - 1]
+    std::vector<unsigned char> spilled;  // a chunk read back from the file
+    if (spilled_ > 0 && std::fseek(spill_.get(), 0, SEEK_SET) != 0) return failed("cannot go back to the start of");
     for (std::size_t c = 0; c < chunks_.size(); ++c) {
       const unsigned char* p = chunks_[c].get();
+      if (c < spilled_) {
+        spilled.resize(sizes_[c]);
+        if (std::fread(spilled.data(), 1, sizes_[c], spill_.get()) != sizes_[c]) return failed("cannot read");
+        p = spilled.data();
+      }
       const unsigned char* const end = p + sizes_[c];
       while (p < end) {
-        p = decode(p, b);
+        p = decode(p, b, file_index);
         f(std::as_const(b));
       }
     }
+    return true;
   }
+
+  /// Why the store failed (its temporary file could not be written or read); empty while it has not.
+  const std::string& error() const { return error_; }
 
   std::size_t size() const { return count_; }
   /// Chunks allocated so far.
   std::size_t chunks() const { return chunks_.size(); }
+  /// Chunks written to the temporary file and freed: the first ones.
+  std::size_t spilled_chunks() const { return spilled_; }
   /// Bytes held by the records (chunks are allocated a chunk at a time).
   std::size_t bytes() const {
     std::size_t n = 0;
@@ -115,6 +152,8 @@ class block_store {
     has_feed = 1u << 15, feed_rapid = 1u << 16,
     has_other = 1u << 17,  // an `other` word follows
     has_state = 1u << 18,  // a word of `state_words` follows
+    has_call_chain = 1u << 19,  // the block's call chain follows the location (LEB128)
+    other_file = 1u << 20,      // the block's file, an index into files_ from 1, follows (LEB128)
   };
   // The word of the fields a motion block rarely has, after the flags' `has_other`.
   enum other : std::uint32_t {
@@ -123,7 +162,7 @@ class block_store {
     has_kept = 1u << 10, machine_coordinates = 1u << 11, passthrough = 1u << 12, framing = 1u << 13,
     assignment = 1u << 14, has_alarm = 1u << 15, alarm_number = 1u << 16,
   };
-  static_assert(field_count<block>() == 26,
+  static_assert(field_count<block>() == 27,
                 "a field of `block` has no codec: give it one in block_store.hpp and draw it in block_store_laws");
   static_assert(field_count<axis_words>() == 7 && field_count<arc_words>() == 3,
                 "a field of `axis_words` or `arc_words` has no codec: give it one in block_store.hpp and draw it "
@@ -143,14 +182,59 @@ class block_store {
                 "a field of `state_words` has no codec: add it to block_store::state_fields and draw it in "
                 "block_store_laws");
 
-  std::string file_;
-  std::vector<std::unique_ptr<unsigned char[]>> chunks_;
+  struct closes_file {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+  };
+
+  file_name file_;
+  std::vector<file_name> files_;  // of the blocks not in file_, in the order first seen
+  std::vector<std::unique_ptr<unsigned char[]>> chunks_;  // the first spilled_ freed, their bytes in spill_
   std::vector<std::size_t> sizes_;
   std::size_t chunk_bytes_;
   std::size_t next_chunk_bytes_;  // of the next chunk: doubles after each, up to chunk_bytes_
   std::size_t capacity_ = 0, used_ = 0, count_ = 0;  // of the last chunk: its size, bytes used
   std::vector<unsigned char> record_;  // the record being built
   unsigned char* write_ = nullptr;     // where `put` writes in it
+  std::size_t memory_bytes_ = default_memory_bytes;
+  std::size_t held_bytes_ = 0;   // of the chunks in memory
+  std::size_t spilled_ = 0;      // chunks in the temporary file
+  std::unique_ptr<std::FILE, closes_file> spill_;
+  mutable std::string error_;
+
+  /// Writes the chunks in memory, all full, to the end of the temporary file and frees them;
+  /// false after an error.
+  bool spill() {
+    if (!spill_) {
+      spill_.reset(std::tmpfile());
+      if (!spill_) return failed("cannot create");
+    }
+    if (spilled_ > 0 && std::fseek(spill_.get(), 0, SEEK_END) != 0) return failed("cannot go to the end of");
+    for (; spilled_ < chunks_.size(); ++spilled_) {
+      if (std::fwrite(chunks_[spilled_].get(), 1, sizes_[spilled_], spill_.get()) != sizes_[spilled_])
+        return failed("cannot write");
+      chunks_[spilled_].reset();
+    }
+    if (std::fflush(spill_.get()) != 0) return failed("cannot write");
+    held_bytes_ = 0;
+    return true;
+  }
+
+  bool failed(const char* what) const {
+    const int why = errno;
+    error_ = std::string(what) + " the temporary file that holds the executed blocks beyond " +
+             std::to_string(memory_bytes_) + " bytes (--max-memory-bytes)" +
+             (why ? std::string(": ") + std::strerror(why) : std::string());
+    return false;
+  }
+
+  /// The index of `f` for a record: 0 for the store's file, else in files_ from 1.
+  std::uint64_t file_index(const file_name& f) {
+    if (&f.str() == &file_.str() || f.str() == file_.str()) return 0;
+    for (std::size_t i = files_.size(); i > 0; --i)  // the latest first: blocks of one file come together
+      if (f.str() == files_[i - 1].str()) return i;
+    files_.push_back(f);
+    return files_.size();
+  }
 
   void put_bytes(const void* bytes, std::size_t n) {
     std::memcpy(write_, bytes, n);
@@ -276,6 +360,9 @@ class block_store {
     set(flags, b.feed.has_value(), has_feed);
     set(flags, b.feed_rapid, feed_rapid);
     set(flags, !b.state.empty(), has_state);
+    set(flags, b.call_chain != 0, has_call_chain);
+    const std::uint64_t file = file_index(b.where.file);
+    set(flags, file != 0, other_file);
     set(others, b.program_begin.has_value(), has_begin);
     set(others, b.program_end.has_value(), has_end);
     set(others, b.comment.has_value(), has_comment);
@@ -297,7 +384,7 @@ class block_store {
     // An upper bound of the record's size: the fixed part, then the strings and lists (a
     // LEB128 size takes at most 10 bytes).
     constexpr std::size_t leb = 10;
-    std::size_t size = sizeof flags + sizeof others + 2 * leb + sizeof(long long) + sizeof(feed_unit) +
+    std::size_t size = sizeof flags + sizeof others + 4 * leb + sizeof(long long) + sizeof(feed_unit) +
                        sizeof(long long) + sizeof(double) + sizeof(motion_kind) + 6 * sizeof(double) + sizeof(vec3) +
                        sizeof(arc_plane) + sizeof(vec3) + sizeof(double) + sizeof(double) + leb + sizeof(std::uint32_t) +
                        sizeof(state_words) + sizeof(long long) + sizeof(machine_position);
@@ -312,6 +399,8 @@ class block_store {
     put(flags);
     put_size(b.where.line);
     put_size(b.where.column);
+    if (flags & has_call_chain) put_size(b.call_chain);
+    if (flags & other_file) put_size(file);
     if (flags & has_text) put_string(b.text);
     if (flags & has_number) put(*b.number);
     if (flags & has_other) {
@@ -352,8 +441,9 @@ class block_store {
     if (flags & has_state) put_state(b.state);
   }
 
-  /// Reads one record into `b`, every field but `where.file` replaced.
-  static const unsigned char* decode(const unsigned char* p, block& b) {
+  /// Reads one record into `b`, every field replaced; `file`: the index of `b.where.file` (see
+  /// `file_index`), kept from record to record so that the name is copied only when it changes.
+  const unsigned char* decode(const unsigned char* p, block& b, std::uint64_t& file) const {
     b.text.clear();
     b.number.reset();
     b.program_begin.reset();
@@ -381,6 +471,17 @@ class block_store {
     b.where.line = static_cast<std::size_t>(v);
     p = get_size(p, v);
     b.where.column = static_cast<std::size_t>(v);
+    b.call_chain = 0;
+    if (flags & has_call_chain) {
+      p = get_size(p, v);
+      b.call_chain = static_cast<std::uint32_t>(v);
+    }
+    v = 0;
+    if (flags & other_file) p = get_size(p, v);
+    if (v != file) {
+      file = v;
+      b.where.file = file == 0 ? file_ : files_[static_cast<std::size_t>(file - 1)];
+    }
     if (flags & has_text) p = get_string(p, b.text);
     p = get_optional(p, flags, has_number, b.number);
     if (flags & has_other) {

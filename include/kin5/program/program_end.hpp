@@ -31,6 +31,7 @@ inline bool ends_program(const block& b) {
 inline bool without_effect(const block& b) {
   block content = b;
   content.where = {};
+  content.call_chain = 0;
   content.text.clear();
   content.number.reset();
   content.comment.reset();

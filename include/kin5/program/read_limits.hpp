@@ -4,7 +4,8 @@
 /// a single pass before any dialect's lexer runs, so that reading costs memory in proportion to
 /// the limits, not to whatever bytes arrive (`/dev/zero`, a line of 60 MiB). `program::read`
 /// and `read_blocks` (io.hpp) check them; the tool's options `--max-file-bytes`,
-/// `--max-line-bytes`, `--max-block-words` and `--max-executed-lines` raise or lower them
+/// `--max-line-bytes`, `--max-block-words`, `--max-executed-lines` and `--max-memory-bytes` (what
+/// a translation keeps in memory) raise or lower them
 /// (docs/reliability.md gives the defaults' reasons). They also carry where a program's calls of
 /// other files look for them (`include_dirs`, `--include-dir`).
 #pragma once
@@ -34,6 +35,10 @@ struct read_limits {
   /// Lines a program's interpreter executes in all, counting each pass of a loop or call again
   /// (interp/executor.hpp): past it the program is taken to loop for ever and refused there.
   std::uint64_t max_executed_lines = 100'000'000;
+  /// Bytes of executed blocks a translation's first pass keeps in memory for its second
+  /// (block_store.hpp): past it, the full chunks of records wait in a temporary file
+  /// (`--max-memory-bytes`). 256 MiB: about 3.8 million motion blocks.
+  std::size_t max_memory_bytes = std::size_t{256} << 20;
   /// Directories a call of another file searches, in order (called_files.hpp; the tool's
   /// `--include-dir`). None: such a call is refused, naming the file it needs.
   std::vector<std::string> include_dirs{};

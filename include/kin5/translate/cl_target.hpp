@@ -70,6 +70,7 @@ class cl_target {
       return;
     }
     block_report report{b.where, s.principal ? matchability::direct : matchability::other_branch, {}, {}, {}, 0.0};
+    report.call_chain = b.call_chain;
     if (!s.principal) report.why = "the source pose is on the second solution branch of the source machine (K3)";
     on_report(std::move(report));
     if (program::is_arc(s.motion) && !arc_into(o, b, s, out)) return;

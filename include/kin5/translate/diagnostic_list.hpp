@@ -6,7 +6,8 @@
 /// at peak); now at most twice the bound are held at any time. It reads as the
 /// `std::vector<program::diagnostic>` it replaces (`size`, `[]`, iteration, conversion). The line
 /// of every diagnostic added is kept (`line(i)`, 8 bytes each), for the exact count of refused
-/// blocks (run_report.hpp, `block_accounting`).
+/// blocks (run_report.hpp, `block_accounting`). A diagnostic added while a `calls_scope` lives
+/// says where its block was called from (`diagnostic::called_from`), unless it says so itself.
 /// @code
 ///   kin5::diagnostic_list errors;
 ///   errors.push_back({where, "cannot reach this block"});
@@ -23,6 +24,31 @@
 
 namespace kin5 {
 
+namespace detail {
+inline thread_local const std::vector<program::source_location>* block_calls = nullptr;
+}  // namespace detail
+
+/// Makes `calls` (outermost first) the calls open at the block being translated on this thread
+/// while it lives: the diagnostics added meanwhile were called from there (`called_from`).
+class calls_scope {
+ public:
+  explicit calls_scope(const std::vector<program::source_location>& calls) : saved_(detail::block_calls) {
+    detail::block_calls = calls.empty() ? nullptr : &calls;
+  }
+  ~calls_scope() { detail::block_calls = saved_; }
+  calls_scope(const calls_scope&) = delete;
+  calls_scope& operator=(const calls_scope&) = delete;
+
+ private:
+  const std::vector<program::source_location>* saved_;
+};
+
+/// `d`, with the calls of the block being translated (`calls_scope`) unless it names its own.
+inline program::diagnostic called(program::diagnostic d) {
+  if (detail::block_calls && d.called_from.empty()) d.called_from = *detail::block_calls;
+  return d;
+}
+
 /// Diagnostics in bounded memory (see the file comment).
 class diagnostic_list {
  public:
@@ -33,7 +59,7 @@ class diagnostic_list {
   /// order (line, then column; ties in the order added) and counts the rest.
   void push_back(program::diagnostic d) {
     lines_.push_back(d.where.line);
-    kept_.push_back(std::move(d));
+    kept_.push_back(called(std::move(d)));
     if (kept_.size() >= 2 * program::max_kept_diagnostics) prune();
   }
 

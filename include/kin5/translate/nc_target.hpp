@@ -595,6 +595,7 @@ class nc_target {
   bool report_motion(const program::block& b, const source_step& s, std::size_t j, translation& out,
                      Report&& on_report) {
     block_report report{b.where, matchability::direct, {}, {}, {}, 0.0};
+    report.call_chain = b.call_chain;
     if (!path_.angles[j]) {
       report.match = matchability::unreachable;
       report.gap = path_.gap[j];

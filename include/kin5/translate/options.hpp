@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -110,6 +111,9 @@ struct block_report {
   /// The block's place among the motion blocks reported (from 0): consecutive unreachable blocks
   /// are grouped by it (run_report.hpp).
   std::size_t ordinal = 0;
+  /// The calls open when the block ran (`block::call_chain`, an id into the reader's
+  /// `read_result::calls`); 0: none.
+  std::uint32_t call_chain = 0;
 };
 
 /// The result of `translate`, `reverse` or `post`.
@@ -138,7 +142,7 @@ struct translation {
   void refuse(program::diagnostic d, const allowances& allow) {
     // Not one `?:` over both: `allowed` is a vector and `errors` a diagnostic_list, so the
     // conditional would be a copy of the vector, and the error would be added to the copy.
-    if (!d.construct.empty() && allow.allows(d.construct)) allowed.push_back(std::move(d));
+    if (!d.construct.empty() && allow.allows(d.construct)) allowed.push_back(called(std::move(d)));
     else errors.push_back(std::move(d));
   }
 };

@@ -119,7 +119,7 @@ struct block_counts {
 inline bool comment_only(const program::block& b) {
   if (b.moves()) return false;
   program::block content = b;
-  content.where = {}, content.text.clear(), content.number.reset(), content.comment.reset();
+  content.where = {}, content.call_chain = 0, content.text.clear(), content.number.reset(), content.comment.reset();
   content.passthrough = content.framing = false;  // framing text (`%`, `;$PATH=`) is text too
   return content == program::block{};
 }
@@ -312,11 +312,21 @@ std::string array(const std::vector<T>& items, F&& to_json) {
   return out + (items.empty() ? "]" : "\n  ]");
 }
 
-/// A diagnostic: where (line 0: about the whole file), the construct and option if named, why.
+/// A place in the source: file, line, column.
+inline std::string location(const program::source_location& at) {
+  return object({{"file", json_string(at.file.str())}, {"line", std::to_string(at.line)},
+                 {"column", std::to_string(at.column)}});
+}
+
+/// A diagnostic: where (line 0: about the whole file), the construct and option if named, why,
+/// and the calls open there, outermost first (none at the top level).
 inline std::string diagnostic(const program::diagnostic& d) {
+  std::string calls = "[";
+  for (const auto& c : d.called_from) calls += (calls.size() > 1 ? ", " : "") + location(c);
   return object({{"file", json_string(d.where.file.str())}, {"line", std::to_string(d.where.line)},
                  {"column", std::to_string(d.where.column)}, {"construct", string_or_null(d.construct)},
-                 {"reason", json_string(d.message)}, {"option", string_or_null(d.option)}});
+                 {"reason", json_string(d.message)}, {"option", string_or_null(d.option)},
+                 {"called_from", calls + "]"}});
 }
 
 /// A run of unreachable blocks.

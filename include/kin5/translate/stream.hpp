@@ -6,6 +6,11 @@
 ///             the input text is freed after this pass
 ///     pass 2: replay the records → write(b) → block_writer of the output dialect → sink
 ///
+/// The records take at most `read_limits::max_memory_bytes` of memory; the rest wait in a
+/// temporary file (block_store.hpp), and a failure to use it is an input error, never a partial
+/// output. A diagnostic about a block run inside a call says where it was called from
+/// (`diagnostic::called_from`, from the reader's `call_chains`).
+///
 /// The output is written only while the run is clean: once any error is known (a reader error
 /// stops before pass 2; a translation error; a block the output dialect cannot say; the sink
 /// failing), nothing more reaches the sink, so the sink holds the whole program exactly when
@@ -87,6 +92,7 @@ inline bool blank(const program::block& b) {
   if (b.text.find_first_not_of(" \t\f\v\r\n") != std::string::npos) return false;
   program::block content = b;
   content.where = {};
+  content.call_chain = 0;
   content.text.clear();
   content.passthrough = false;
   return content == program::block{};
@@ -134,6 +140,18 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
                             const block_watch& watch = {}, const program::write_settings& chosen = {}) {
   stream_result run;
   program::block_store records(file);
+  records.memory_bytes(t.limits().max_memory_bytes);
+  // The calls of the block being translated, for its diagnostics: looked up when the chain changes.
+  std::uint32_t chain = 0;
+  std::vector<program::source_location> calls;
+  const auto calls_of = [&](const program::block& b) -> const std::vector<program::source_location>& {
+    if (b.call_chain != chain) {
+      chain = b.call_chain;
+      calls = chain != 0 && chain <= run.input.calls.size() ? run.input.calls.sites(chain)
+                                                            : std::vector<program::source_location>{};
+    }
+    return calls;
+  };
   bool says_something = false;  // a block with more than blanks
   std::size_t moving = 0, not_understood = 0;
   program::program_unit unit;  // for writers that state the unit and name at the top
@@ -144,11 +162,13 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
     name.take(b);
     moving += b.moves() ? 1 : 0;
     not_understood += b.passthrough && !b.framing && !b.assignment ? 1 : 0;
+    const calls_scope called_from(calls_of(b));
     t.plan(b);
     if (watch) watch(b, run.input, t.result());
     records.push(b, second_pass_reads_text(b));
   });
   run.record_chunks = records.chunks();
+  if (!records.error().empty()) run.input.errors.push_back(translate_detail::file_error(file, records.error()));
   if (run.input.ok() && !says_something)
     run.input.errors.push_back(translate_detail::file_error(file, "empty program: no block to translate"));
   if (run.input.ok() && program::capabilities_of(source_language).cl_data && moving == 0 && not_understood > 0)
@@ -168,12 +188,19 @@ stream_result stream_blocks(block_translator& t, const block_source& read, const
       std::string_view why = e.what();
       const std::string line = o.where.file.str() + ":" + std::to_string(o.where.line) + ": ";
       if (why.starts_with(line)) why.remove_prefix(line.size());  // the writer named the block
-      run.writer_error = program::diagnostic{o.where, std::string(why)};
+      run.writer_error = called(program::diagnostic{o.where, std::string(why)});
       return;
     }
     run.sink_failed = !sink.flush_if_full();
   };
-  records.replay([&](const program::block& b) { t.write(b, emit); });
+  const bool replayed = records.replay([&](const program::block& b) {
+    const calls_scope called_from(calls_of(b));
+    t.write(b, emit);
+  });
+  if (!replayed) {  // nothing more reaches the sink, and the run is not ok
+    run.input.errors.push_back(translate_detail::file_error(file, records.error()));
+    return run;
+  }
   if (!run.writer_error && !run.sink_failed && t.result().ok()) {
     writer.finish(sink.buffer());
     run.sink_failed = !sink.flush_if_full();

@@ -305,6 +305,64 @@ TEST_CASE("executor: calls of other files", "[executor][files]") {
   CHECK(run_with_files("CF sub [3]\n", f, small).error.starts_with("dir/sub.toy:"));
 }
 
+namespace {
+
+/// Each ordinary line run, with the calls open at it as `[FILE:LINE:COL <- …]`, outermost first
+/// (the main text is "main"); the run's table of call chains afterwards (`calls`).
+struct chain_run {
+  std::vector<std::string> lines;
+  kin5::program::call_chains calls;
+  std::string error;
+};
+
+chain_run run_chains(const std::string& text, file_set& files) {
+  toy_syntax syntax;
+  chain_run r;
+  ip::executor x{text, kin5::program::linuxcnc::parameter_rules()};
+  x.record_calls_in(r.calls, "main");
+  x.open_files_with([&](const std::string&, const std::vector<std::string>& names) -> std::optional<ip::called_file> {
+    for (const std::string& n : names)
+      if (auto f = files.texts.find(n); f != files.texts.end()) return ip::called_file{"dir/" + n, f->second};
+    return std::nullopt;
+  });
+  x.execute(
+      syntax,
+      [&](const text_line& l, const ip::statement&) {
+        std::string line(l.text);
+        if (x.call_chain() != 0) {
+          line += " [";
+          const auto sites = r.calls.sites(x.call_chain());
+          for (std::size_t i = 0; i < sites.size(); ++i)
+            line += (i ? " <- " : "") + sites[i].file.str() + ":" + std::to_string(sites[i].line) + ":" +
+                    std::to_string(sites[i].column);
+          line += "]";
+        }
+        r.lines.push_back(line);
+      },
+      [&](const ip::flow_error& e) { r.error = std::to_string(e.line) + ": " + e.message; });
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("executor: every line runs in the chain of the calls open, interned once", "[executor][calls]") {
+  file_set none;
+  // A loop calls s 1,000 times; s calls t: two chains in all, whatever the count.
+  const auto r = run_chains("A #31 = 0\nW [#31 LT 1000]\nA #31 = [#31+1]\nC s\nEW\nP top\nE\nL s\nP in-s\nC t\nR\nL t\nP in-t\nR\n", none);
+  CHECK(r.error.empty());
+  REQUIRE(r.lines.size() == 2 + 3 * 1000 + 1);
+  CHECK(r.lines[2] == "P in-s [main:4:1]");
+  CHECK(r.lines[3] == "P in-t [main:4:1 <- main:10:1]");
+  CHECK(r.lines[r.lines.size() - 3] == "P in-t [main:4:1 <- main:10:1]");
+  CHECK(r.lines[r.lines.size() - 2] == "P top");  // back at the top level
+  CHECK(r.calls.size() == 2);
+  // Repeats and calls of other files are calls too; a file's own call sites name its path.
+  file_set f{{{"sub.toy", "P in\nC t\nR\nL t\nP deep\nR\n"}}};
+  CHECK(run_chains("P a\nCF sub [2]\nP b\nL r\nP x\nS r [1]\n", f).lines ==
+        lines({"P a", "P in [main:2:1]", "P deep [main:2:1 <- dir/sub.toy:2:1]", "P in [main:2:1]",
+               "P deep [main:2:1 <- dir/sub.toy:2:1]", "P b", "P x", "P x [main:6:1]"}));
+}
+
 TEST_CASE("executor: bounds and errors stop the run at the statement", "[executor]") {
   ip::execution_limits small;
   small.max_executed_lines = 100;

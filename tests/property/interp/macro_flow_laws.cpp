@@ -267,3 +267,49 @@ TEST_CASE("LinuxCNC o-words: each construct, and what is refused", "[flow]") {
   CHECK(errors("#1 = 2 #2 = #1\n").find("a second parameter setting on a line that reads a parameter") != std::string::npos);
   CHECK(errors("o1 endsub\n") == "1:1: returns from a call, but no call is open\n");
 }
+
+namespace {
+
+/// The calls open at `b` as "FILE:LINE:COL <- …", outermost first; "" at the top level.
+std::string calls_of(const read_result& r, const block& b) {
+  std::string out;
+  for (const source_location& s : r.calls.sites(b.call_chain))
+    out += (out.empty() ? "" : " <- ") + s.file.str() + ":" + std::to_string(s.line) + ":" + std::to_string(s.column);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("ISO and LinuxCNC: blocks and errors in a call say where it was called from", "[flow][calls]") {
+  // A loop calls O1000 100 times from one line, O1000 calls O2000: two chains in all.
+  const read_result r = iso::read(
+      "#1 = 0\nWHILE [#1 LT 100] DO1\n  M98 P1000\n#1 = #1 + 1\nEND1\nG1 Z1.\nM30\nO1000\nG1 X1.\nM98 P2000\nM99\n"
+      "O2000\nG1 Y1.\nM99\n",
+      "t.nc");
+  REQUIRE(errors_of(r).empty());
+  CHECK(r.calls.size() == 2);
+  std::map<std::string, std::map<std::string, int>> seen;  // block text → its calls → how often
+  for (const block& b : r.parsed.blocks) ++seen[b.text][calls_of(r, b)];
+  CHECK(seen["G1 X1."] == std::map<std::string, int>{{"t.nc:3:3", 100}});
+  CHECK(seen["G1 Y1."] == std::map<std::string, int>{{"t.nc:3:3 <- t.nc:10:1", 100}});
+  CHECK(seen["G1 Z1."] == std::map<std::string, int>{{"", 1}});
+  // An error in a subprogram called from two places: once per call, each noting its call.
+  const read_result e = iso::read("M98 P1000\nM98 P1000\nM30\nO1000\nG1 X#7\nM99\n", "t.nc");
+  REQUIRE(e.errors.size() == 2);
+  CHECK(e.errors[0].to_string() ==
+        "t.nc:5:5: error: parameter #7 is read before it is assigned in the main program\n"
+        "t.nc:1:1: note: called from here");
+  CHECK(e.errors[1].called_from == std::vector<source_location>{{"t.nc", 2, 1}});
+  // An error of the executor itself inside a call: the same.
+  const read_result j = iso::read("M98 P1000\nM30\nO1000\nGOTO 99\nM99\n", "t.nc");
+  REQUIRE(j.errors.size() == 1);
+  CHECK(j.errors[0].called_from == std::vector<source_location>{{"t.nc", 1, 1}});
+  // LinuxCNC: a sub called with an argument; nested in another.
+  const read_result l = linuxcnc::read(
+      "o100 sub\nG1 X#1\no100 endsub\no200 sub\no100 call [3]\no200 endsub\nG21 G90\no200 call\nG1 Z1\nM2\n", "t.ngc");
+  REQUIRE(errors_of(l).empty());
+  std::vector<std::string> moves;
+  for (const block& b : l.parsed.blocks)
+    if (b.moves()) moves.push_back(calls_of(l, b));
+  CHECK(moves == std::vector<std::string>{"t.ngc:8:1 <- t.ngc:5:1", ""});
+}

@@ -82,10 +82,13 @@ inline state_words any_state() {
 /// every field of `block`.
 inline block any_block(const std::string& file) {
   block b;
-  auto& [where, text, number, program_begin, program_end, comment, tcp, feed_mode, metric, tool, tool_name,
+  auto& [where, call_chain, text, number, program_begin, program_end, comment, tcp, feed_mode, metric, tool, tool_name,
          spindle_rpm, m_codes, motion, axes, arc, feed, feed_rapid, machine_coordinates, machine_reference, kept_words, passthrough,
          framing, assignment, state, alarm] = b;
-  where = {file, *rc::gen::inRange<std::size_t>(0, 1u << 31), *rc::gen::inRange<std::size_t>(0, 5000)};
+  // Mostly the store's file; now and then one a call ran, by name.
+  const std::string in_file = *rc::gen::inRange(0, 4) ? file : *rc::gen::element<std::string>("sub.h", "L100.spf", "");
+  where = {in_file, *rc::gen::inRange<std::size_t>(0, 1u << 31), *rc::gen::inRange<std::size_t>(0, 5000)};
+  call_chain = *rc::gen::oneOf(rc::gen::just<std::uint32_t>(0), rc::gen::arbitrary<std::uint32_t>());
   text = *any_string();
   number = maybe(rc::gen::arbitrary<long long>());
   program_begin = maybe(any_string());

@@ -1,6 +1,8 @@
 // A block store gives back exactly the blocks put in, in order: every field, whatever is
-// present, including strings with any bytes, extreme numbers and records across chunk ends.
+// present, including strings with any bytes, extreme numbers, records across chunk ends, blocks
+// of other files than the store's, and chunks spilled to its temporary file past a small budget.
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <initializer_list>
 #include <limits>
@@ -18,6 +20,7 @@ namespace {
 
 using namespace kin5::program;
 using kin5::test::blocks::any_block;
+using kin5::test::blocks::any_double;
 using kin5::test::blocks::any_string;
 
 /// Doubles compared by their bits, so that -0.0 comes back as -0.0.
@@ -26,28 +29,65 @@ bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; 
 }  // namespace
 
 TEST_CASE("replay gives back every block pushed, in order, field for field") {
-  rc::prop("random blocks, some without their text", [] {
+  rc::prop("random blocks, some without their text; small chunks spilled past a small budget or none", [] {
     const std::string file = *any_string();
     const auto n = *rc::gen::inRange<std::size_t>(0, 60);
     std::vector<block> in;
     std::vector<bool> keep;
-    block_store store(file);
+    const bool small = *rc::gen::arbitrary<bool>();
+    block_store store(file, small ? 512 : block_store::default_chunk_bytes, small ? 256 : block_store::default_first_chunk_bytes);
+    if (small) store.memory_bytes(*rc::gen::inRange<std::size_t>(0, 4096));
     for (std::size_t k = 0; k < n; ++k) {
       in.push_back(any_block(file));
       keep.push_back(*rc::gen::arbitrary<bool>());
       store.push(in.back(), keep.back());
     }
     RC_ASSERT(store.size() == n);
+    RC_ASSERT(store.error().empty());
+    for (int pass = 0; pass < 2; ++pass) {  // a replay leaves the store as it was
+      std::size_t k = 0;
+      RC_ASSERT(store.replay([&](const block& b) {
+        RC_ASSERT(k < n);
+        block expected = in[k];
+        if (!keep[k]) expected.text.clear();
+        RC_ASSERT(b == expected);
+        if (b.axes.x_mm) RC_ASSERT(same_bits(*b.axes.x_mm, *expected.axes.x_mm));
+        if (b.feed) RC_ASSERT(same_bits(*b.feed, *expected.feed));
+        ++k;
+      }));
+      RC_ASSERT(k == n);
+    }
+  });
+}
+
+TEST_CASE("a store with a budget of a few KiB replays what an unbounded one does") {
+  rc::prop("generated programs of motion blocks, called or not, in default chunks", [] {
+    const auto n = *rc::gen::inRange<std::size_t>(0, 6000);
+    block_store bounded("p.h"), unbounded("p.h");
+    bounded.memory_bytes(*rc::gen::inRange<std::size_t>(1, 8192));
+    unbounded.memory_bytes(std::numeric_limits<std::size_t>::max());
+    for (std::size_t k = 0; k < n; ++k) {
+      block b;
+      b.where = {k % 7 ? "p.h" : "sub.h", k + 1, 1};
+      b.call_chain = static_cast<std::uint32_t>(k % 5);
+      b.number = static_cast<long long>(k);
+      b.motion = motion_kind::linear;
+      b.axes.x_mm = *any_double(), b.axes.y_mm = static_cast<double>(k), b.axes.a_deg = *any_double();
+      if (k % 3 == 0) b.comment = *any_string();
+      bounded.push(b);
+      unbounded.push(b);
+    }
+    RC_ASSERT(unbounded.spilled_chunks() == 0);
+    RC_ASSERT(bounded.chunks() == unbounded.chunks());
+    RC_ASSERT(bounded.chunks() <= 1 || bounded.spilled_chunks() == bounded.chunks() - 1);
+    std::vector<block> expected;
+    RC_ASSERT(unbounded.replay([&](const block& b) { expected.push_back(b); }));
     std::size_t k = 0;
-    store.replay([&](const block& b) {
-      RC_ASSERT(k < n);
-      block expected = in[k];
-      if (!keep[k]) expected.text.clear();
-      RC_ASSERT(b == expected);
-      if (b.axes.x_mm) RC_ASSERT(same_bits(*b.axes.x_mm, *expected.axes.x_mm));
-      if (b.feed) RC_ASSERT(same_bits(*b.feed, *expected.feed));
+    RC_ASSERT(bounded.replay([&](const block& b) {
+      RC_ASSERT(k < expected.size());
+      RC_ASSERT(b == expected[k]);
       ++k;
-    });
+    }));
     RC_ASSERT(k == n);
   });
 }

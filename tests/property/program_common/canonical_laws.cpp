@@ -7,6 +7,7 @@
 // otherwise.
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -80,7 +81,8 @@ std::pair<std::optional<A>, std::optional<B>> one_or_both(const rc::Gen<A>& a, c
 /// function and a kept word up to three times), every field drawn, at most one move, circle
 /// data only beside a move that is no arc.
 std::vector<can::operation> any_operations(const std::string& file) {
-  const can::origin o{{file, *rc::gen::inRange<std::size_t>(0, 1u << 31), *rc::gen::inRange<std::size_t>(0, 5000)}};
+  const can::origin o{{file, *rc::gen::inRange<std::size_t>(0, 1u << 31), *rc::gen::inRange<std::size_t>(0, 5000)},
+                     *rc::gen::oneOf(rc::gen::just<std::uint32_t>(0), rc::gen::arbitrary<std::uint32_t>())};
   std::vector<can::operation> ops;
   const auto some = [] { return *rc::gen::inRange(0, 3) == 0; };
   ops.push_back(can::block_start{o, maybe(rc::gen::arbitrary<long long>()), *any_string()});

@@ -153,7 +153,7 @@ std::vector<block> run_blocks(const std::string& text) {
   INFO(text);
   CHECK(errors == "");
   std::vector<block> out = r.parsed.blocks;
-  for (block& b : out) b.text.clear(), b.where = {}, b.comment.reset();
+  for (block& b : out) b.text.clear(), b.where = {}, b.call_chain = 0, b.comment.reset();
   return out;
 }
 }  // namespace

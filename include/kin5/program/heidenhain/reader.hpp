@@ -596,6 +596,7 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
     const std::vector<text_line> lines = split_lines(body);
     statements syntax(lines);
     interp::executor run(body, parameter_rules(), limits);
+    run.record_calls_in(out.calls, file);
     state.parameters = &run.parameters();
     std::optional<std::size_t> tail;  // the first line after the block that ended the run
     bool tail_in_subprogram = false;   // the run ended inside a called subprogram
@@ -605,9 +606,10 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
       source.file = file;
       const std::size_t last = detail::join_block(lines, li, source);
       block b = detail::block_reader(source, state, out).read();
+      b.call_chain = out.reading_call;
       if (ends_run && !b.passthrough && (b.program_end || detail::ends_program(b))) {
         tail = last + 1;
-        tail_in_subprogram = !run.call_lines().empty();
+        tail_in_subprogram = run.call_chain() != 0;
         syntax.end_program();
       }
       sink(std::move(b));
@@ -617,9 +619,11 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
         syntax,
         [&](const text_line& line, const interp::statement& s) {
           if (s.ends_program || lexing::is_blank(line.text)) return;  // the line after the end; a blank line
+          out.reading_call = run.call_chain();
           read_block(line.number - 1, true);
         },
         [&](const interp::flow_error& e) {  // at the statement, after its block number
+          out.reading_call = run.call_chain();
           std::size_t column = e.column;
           if (e.line >= 1 && e.line <= lines.size()) {
             const std::string_view t = lines[e.line - 1].text;
@@ -630,6 +634,7 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
           }
           out.add_error({{file, e.line, column}, e.message});
         });
+    out.reading_call = 0;
     if (ran && tail) {  // after the end: what lies outside the subprograms, as written
       syntax.resume();
       bool in_subprogram = tail_in_subprogram;

@@ -20,6 +20,11 @@
 /// its path (`flow_error::file`); `file()` says which file the line being read is in. A file is
 /// loaded once per run, when first called, and kept for the calls after.
 ///
+/// The calls open at each line are a chain of call sites (the calling statements' first
+/// non-blank bytes), interned in a `call_chains` table (call_chain.hpp): `call_chain()` is the
+/// chain of the line running now, 0 at the top level; `record_calls_in` gives the table and the
+/// main text's file name (the table is the executor's own without it).
+///
 /// Bounds, each an error at the statement that passes it, after which nothing more runs (the
 /// path is unknown): `max_executed_lines` lines executed in all (a loop that never ends);
 /// `max_call_depth` calls open (parameter_store.hpp), calls of files included (a file that
@@ -47,6 +52,8 @@
 #include <utility>
 #include <vector>
 
+#include "../call_chain.hpp"
+#include "../source_location.hpp"
 #include "../text.hpp"
 #include "evaluate.hpp"
 #include "parameter_store.hpp"
@@ -91,7 +98,6 @@ class executor {
         text_(text),
         parameters_(run_.parameters),
         executed_(run_.executed),
-        call_lines_(run_.call_lines),
         limits_(limits) {}
   executor(const executor&) = delete;
   executor& operator=(const executor&) = delete;
@@ -99,9 +105,17 @@ class executor {
   parameter_store& parameters() { return parameters_; }
   const parameter_store& parameters() const { return parameters_; }
 
-  /// The lines of the calls open now, outermost first (empty in the main program); a call of a
-  /// file gives the line of its calling statement, in the file that calls.
-  const std::vector<std::size_t>& call_lines() const { return call_lines_; }
+  /// Interns the call chains in `table`, the call sites of the main text named `main_file`.
+  /// Call it before `execute`.
+  void record_calls_in(call_chains& table, file_name main_file) {
+    run_.calls = &table;
+    run_.main_file = std::move(main_file);
+  }
+
+  /// The calls open now, as an id into the table of `calls()`: 0 in the main program, none open.
+  std::uint32_t call_chain() const { return run_.chain; }
+  /// The table the call chains are interned in.
+  const call_chains& calls() const { return *run_.calls; }
 
   /// Lines executed so far.
   std::uint64_t executed_lines() const { return executed_; }
@@ -210,7 +224,7 @@ class executor {
                     "the text ends inside the call from line " + std::to_string(calls_.back().from.number));
       if (next->offset >= text_.size() && caller_)
         return fail(on_error, here.line, "the called file ends without returning to the call from line " +
-                                             std::to_string(call_lines_.back()));
+                                             std::to_string(run_.calls->site(run_.chain).line));
       at = *next;
     }
     if (!loops_.empty()) return fail(on_error, line_of(loops_.back().begin).line, "a loop without its end");
@@ -252,7 +266,10 @@ class executor {
     explicit run_state(parameter_rules rules) : parameters(std::move(rules)) {}
     parameter_store parameters;
     std::uint64_t executed = 0;
-    std::vector<std::size_t> call_lines;
+    call_chains own_calls{};
+    call_chains* calls = &own_calls;  // where the chains are interned (`record_calls_in`)
+    file_name main_file{};
+    std::uint32_t chain = 0;                    // the calls open now
     file_opener open{};
     std::map<std::string, std::shared_ptr<const called_file>, std::less<>> files{};  // by the call's target
     std::vector<const called_file*> running{};  // the called files open, outermost first
@@ -264,9 +281,9 @@ class executor {
         text_(file.text),
         parameters_(run_.parameters),
         executed_(run_.executed),
-        call_lines_(run_.call_lines),
         limits_(caller.limits_),
         caller_(&caller),
+        text_file_(file.path),
         outer_calls_(caller.outer_calls_ + caller.calls_.size() + 1),
         outer_loops_(caller.outer_loops_ + caller.loops_.size()) {}
 
@@ -275,9 +292,9 @@ class executor {
   std::string_view text_;
   parameter_store& parameters_;
   std::uint64_t& executed_;
-  std::vector<std::size_t>& call_lines_;
   execution_limits limits_;
   executor* caller_ = nullptr;    // a called file's executor: the one that called it
+  file_name text_file_{};  // of this text, for its call sites: a called file's path
   std::size_t outer_calls_ = 0;   // calls open in the callers, the file calls included
   std::size_t outer_loops_ = 0;   // loops open in the callers
   std::vector<open_call> calls_;
@@ -475,7 +492,7 @@ class executor {
       return failed(on_error, here.line, "calls nested more than " + std::to_string(parameter_store::max_call_depth) + " deep");
     }
     calls_.push_back({at, here.next, start, *count, s.ends, end, s.call_frame, loops_.size()});
-    call_lines_.push_back(here.line.number);
+    open_call_at(here.line);
     return start;
   }
 
@@ -528,13 +545,13 @@ class executor {
                                            " deep (a file that calls itself without end?)");
     for (std::uint64_t pass = 0; pass < *count; ++pass) {
       if (s.call_frame && !enter_frame(s, here.line, on_error)) return false;
-      call_lines_.push_back(here.line.number);
+      open_call_at(here.line);
       run_.running.push_back(file.get());
       executor called{*this, *file};
       Syntax called_syntax = syntax_for(syntax, std::string_view(file->text));
       const bool ok = called.run_file(called_syntax, s.target, on_line, on_error);
       run_.running.pop_back();
-      call_lines_.pop_back();
+      run_.chain = run_.calls->outer(run_.chain);
       if (!ok) return false;
       if (s.call_frame) parameters_.leave_call();
     }
@@ -601,7 +618,15 @@ class executor {
     loops_.resize(calls_.back().loops_open);
     if (calls_.back().frame) parameters_.leave_call();
     calls_.pop_back();
-    call_lines_.pop_back();
+    run_.chain = run_.calls->outer(run_.chain);
+  }
+
+  /// A call from `line` of this text opens: the chain of the calls open gains its site.
+  void open_call_at(const text_line& line) {
+    std::size_t column = 1;
+    while (column <= line.text.size() && (line.text[column - 1] == ' ' || line.text[column - 1] == '\t')) ++column;
+    if (!caller_) text_file_ = run_.main_file;  // `record_calls_in` may name it after construction
+    run_.chain = run_.calls->enter(run_.chain, {text_file_, line.number, column});
   }
 
   /// The first statement from `from` on of one of `kinds` that pairs with an opening statement

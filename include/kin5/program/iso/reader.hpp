@@ -74,7 +74,8 @@ class basic_reader {
     interp::executor x{text, Own::parameter_rules(), limits};
     x.open_files_with(called_file_opener(current_read_limits()));
     store_ = &x.parameters();
-    call_lines_ = &x.call_lines();
+    run_ = &x;
+    x.record_calls_in(result_.calls, file_);
     typename Own::syntax syntax{text};
     std::optional<text_line> ended;
     const file_name main_file = file_;
@@ -89,6 +90,7 @@ class basic_reader {
         syntax,
         [&](const text_line& line, const interp::statement& s) {
           in_file(x.file());
+          result_.reading_call = x.call_chain();
           read_line(line, s);
           if (s.ends_program && !running.empty()) {
             line_ = line.number;
@@ -99,11 +101,14 @@ class basic_reader {
         },
         [&](const interp::flow_error& e) {
           in_file(e.file);
+          result_.reading_call = x.call_chain();
           line_ = e.line;
           error(e.column, syntax.explain(e.message));
         });
     in_file({});
-    if (ran && ended && call_lines_->empty()) {
+    const bool ended_in_call = x.call_chain() != 0;
+    result_.reading_call = 0;
+    if (ran && ended && !ended_in_call) {
       // The lines after the end, split as the executor splits them (LF, CRLF or a lone CR).
       std::size_t offset = static_cast<std::size_t>(ended->text.data() - text.data()) + ended->text.size();
       std::size_t number = ended->number;
@@ -121,7 +126,7 @@ class basic_reader {
       }
     }
     store_ = nullptr;
-    call_lines_ = nullptr;
+    run_ = nullptr;
   }
 
  private:
@@ -134,7 +139,7 @@ class basic_reader {
   std::vector<word> words_;  // reused from line to line
   Own own_;
   interp::parameter_store* store_ = nullptr;               // the running program's parameters
-  const std::vector<std::size_t>* call_lines_ = nullptr;  // the running program's open calls
+  const interp::executor* run_ = nullptr;                  // the running program's executor
   bool in_called_file_ = false;                           // the line read is in a file a call runs
   std::map<interp::parameter_key, parameter_literal> literals_;  // parameters last assigned a number, as written
   std::vector<interp::expression> values_;                // the computed values of this line's words
@@ -156,8 +161,9 @@ class basic_reader {
     failed_ = false;
     block b;
     b.where = {file_, line.number, first + 1};
+    b.call_chain = result_.reading_call;
     b.text = std::string(s.substr(first, end - first));
-    if (!statement.label.empty() && statement.label[0] == 'O' && !call_lines_->empty()) return;  // a called program's number
+    if (!statement.label.empty() && statement.label[0] == 'O' && run_ && run_->call_chain() != 0) return;  // a called program's number
     if (!statement.assignments.empty()) {
       if (auto problem = own_.line(s, first, end)) error(problem->column, problem->message);  // LinuxCNC's (ABORT, …)
       else assigned(statement, s, b);

@@ -433,6 +433,7 @@ class line_reader {
     block b;
     const std::size_t first = lexing::skip_blanks(line.text, 0);
     b.where = {file_, line.number, (first < line.text.size() ? first : 0) + 1};
+    b.call_chain = diagnostics.reading_call;
     b.text = std::string(line.text);
     if (first == line.text.size()) {  // blanks only
       b.passthrough = true;
@@ -492,6 +493,7 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
                         const block_sink& on_block, const read_limits& limits) {
   read_transmitted(text, file_path, diagnostics, on_block, [&](std::string_view body, const block_sink& sink) {
     interp::executor run{body, parameter_rules(), {limits.max_executed_lines}};
+    run.record_calls_in(diagnostics.calls, file_path);
     detail::line_reader reader(file_path, run.parameters());
     statements syntax;
     const text_line* last = nullptr;
@@ -499,12 +501,15 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
     const bool ended = run.execute(
         syntax,
         [&](const text_line& line, const interp::statement& s) {
+          diagnostics.reading_call = run.call_chain();
           reader.read(line, diagnostics, sink);
           if (s.ends_program) end_line = line, last = &end_line;
         },
         [&](const interp::flow_error& e) {
+          diagnostics.reading_call = run.call_chain();
           diagnostics.add_error({{file_name(file_path), e.line, e.column}, e.message});
         });
+    diagnostics.reading_call = 0;
     if (!ended || !last) return;
     // After the end: the lines never run (see above).
     const std::size_t from = static_cast<std::size_t>(last->text.data() - body.data()) + last->text.size();

@@ -144,6 +144,7 @@ void unrolled(const std::vector<node>& nodes, int depth, std::map<int, int> valu
 std::vector<block> compared(std::vector<block> blocks) {
   for (block& b : blocks) {
     b.where = {};
+    b.call_chain = 0;  // where it was called from: the twin has no calls
     if (!b.passthrough) b.text.clear();
   }
   return blocks;
