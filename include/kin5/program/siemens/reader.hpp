@@ -530,10 +530,11 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
   });
 }
 
-/// The same with the default limits (`block_reader`).
+/// The same, with the limits of the reading under way (`current_read_limits`), as the other
+/// dialects' readers take them.
 inline void read_blocks(std::string_view text, const std::string& file_path, read_result& diagnostics,
                         const block_sink& on_block) {
-  read_blocks(text, file_path, diagnostics, on_block, read_limits{});
+  read_blocks(text, file_path, diagnostics, on_block, current_read_limits());
 }
 
 }  // namespace kin5::program::siemens

@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <kin5/program/address_words.hpp>
+#include <kin5/program/read_limits.hpp>
 #include <kin5/program/siemens/dialect.hpp>
 
 namespace {
@@ -290,4 +291,15 @@ TEST_CASE("siemens: a number written only in an R parameter counts for the progr
   CHECK(variables.feed_decimals == 2);
   const auto forgotten = scan_resolution("_Z=10.1234\n_Z=R1*2\nG1 X=_Z Y1.5\n", id);
   CHECK(forgotten.linear_decimals == 1);
+}
+
+TEST_CASE("siemens: a reading without limits of its own takes the reading's, as the other dialects do") {
+  // 20 passes of a loop of 3 lines: more than the reading's bound of 40 executed lines.
+  const std::string text = "R1=0\nWHILE R1<20\nR1=R1+1\nENDWHILE\nM30\n";
+  read_limits limits;
+  limits.max_executed_lines = 40;
+  const read_limits_scope scope(limits);
+  const read_result r = siemens::read(text, "loop.mpf");
+  REQUIRE(r.errors.size() == 1);
+  CHECK(r.errors[0].message.starts_with("more than 40 lines executed"));
 }
