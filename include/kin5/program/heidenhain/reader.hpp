@@ -626,7 +626,7 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
         return interp::called_file{names.front(), {}, where + " (--include-dir DIR names the directory that holds it)"};
       }
       interp::called_file f = load_called_file(*path, reading);
-      if (f.error.empty()) {
+      if (f.error.empty() && called.find(f.path) == called.end()) {  // loaded again for another caller: the same text
         called_program& c = called[f.path];
         c.text = f.text;
         c.lines = split_lines(c.text);
@@ -650,7 +650,8 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
       return last;
     };
     // Reads the block at line `line` of the called program at `path`: its BEGIN PGM and END PGM
-    // make no block (the main program's frame the program), and must say the caller's unit.
+    // make no block (the main program's frame the executed program), and must say the caller's
+    // unit.
     const auto read_called_block = [&](const std::string& path, const text_line& line) {
       if (lexing::is_blank(line.text)) return;
       called_program& c = called[path];
