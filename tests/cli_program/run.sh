@@ -832,6 +832,44 @@ EOF
     cmp -s default.nc bounded.nc || { report "a bounded store writes another program"; cmp default.nc bounded.nc; }
     run 1 translate $pair --max-memory-bytes 0 -o no.nc loop.nc  # at least one byte
     ;;
+  include-dir-heidenhain)
+    # CALL PGM of a program in another file (docs/dialects/heidenhain.md, "Calls of other
+    # files"): found in an include directory or beside the calling program, run to its END PGM.
+    mkdir sub prog
+    printf '0 BEGIN PGM MAIN MM\n1 TOOL CALL 1 Z S5000\n2 L X+0 Y+0 Z+10 A+0 C+0 R0 FMAX M128\n3 CALL PGM SUB\n4 L Z+50 FMAX\n5 M129\n6 END PGM MAIN MM\n' >prog/main.h
+    printf '0 BEGIN PGM SUB MM\n1 L X+11 Y+12 Z+1 R0 F500\n2 L X+13\n3 END PGM SUB MM\n' >sub/sub.h
+    pair="--from ac-trunnion --to ac-head --from-dialect heidenhain --to-dialect heidenhain"
+    run 0 translate $pair --include-dir sub -o out.h prog/main.h
+    words out.h | awk '$1 == "X=11" && $2 == "Y=12" && $3 == "Z=1" { a = 1 } $1 == "X=13" { b = 1 } END { exit !(a && b) }' ||
+      { report "the called moves are not in the output"; show out.h; }
+    grep -q 'CALL PGM\|PGM SUB' out.h && { report "the call was written, not executed"; show out.h; }
+    run 2 translate $pair -o no.h prog/main.h
+    grep -q "^prog/main\.h:4:3: error: call of PGM SUB: SUB\.h: not in the calling program's directory .*--include-dir" err ||
+      { report "the missing file not named"; show err; }
+    [ -e no.h ] && report "no.h written"
+    # Beside the calling program it needs no option; an error inside it names its file and line.
+    printf '0 BEGIN PGM SUB MM\n1 L X+Q7 R0 F500\n2 END PGM SUB MM\n' >prog/SUB.H
+    run 2 translate $pair -o no.h prog/main.h
+    grep -q '^prog/SUB\.H:2:' err || { report "the error is not at the called file's line"; show err; }
+    ;;
+  include-dir-siemens)
+    # A subprogram named alone in its block (L100 P2) runs its file L100.SPF, to M17, twice.
+    mkdir sub
+    printf '%%_N_MAIN_MPF\nT1 M6\nTRAORI\nG0 X0 Y0 Z10 A0 C0\nN50 L100 P2\nG0 Z50\nTRAFOOF\nM30\n' >main.mpf
+    printf '%%_N_L100_SPF\nG1 X11 Y12 Z1 F500\nG1 X13\nM17\n' >sub/l100.spf
+    pair="--from ac-trunnion --to ac-head --from-dialect siemens --to-dialect siemens"
+    run 0 translate $pair --include-dir sub -o out.mpf main.mpf
+    [ "$(words out.mpf | awk '$1 == "X=11" && $3 == "Z=1"' | wc -l)" = 2 ] && [ "$(words out.mpf | awk '$1 == "X=13" && $3 == "Z=1"' | wc -l)" = 2 ] ||
+      { report "the called moves are not in the output twice"; show out.mpf; }
+    grep -q 'L100\|M17\|_SPF' out.mpf && { report "the call was written, not executed"; show out.mpf; }
+    run 2 translate $pair -o no.mpf main.mpf
+    grep -q "^main\.mpf:5:1: error: call of subprogram L100: L100\.SPF or _N_L100_SPF: .*--include-dir" err ||
+      { report "the missing file not named"; show err; }
+    [ -e no.mpf ] && report "no.mpf written"
+    printf 'G1 X=R7\nM17\n' >sub/L100.SPF
+    run 2 translate $pair --include-dir sub -o no.mpf main.mpf
+    grep -q '^sub/L100\.SPF:1:' err || { report "the error is not at the called file's line"; show err; }
+    ;;
   *)
     echo "run.sh: unknown test '$name'" >&2
     exit 2

@@ -89,8 +89,9 @@ void add_limit_options(CLI::App* sub, program::read_limits& limits) {
       ->transform(CLI::AsSizeValue(true))
       ->check(CLI::Range(std::size_t{1}, std::numeric_limits<std::size_t>::max()));
   sub->add_option("--include-dir", limits.include_dirs,
-                  "Directory where a call of another file (M98 P1000, G65 P1000, o<name> call) finds it; "
-                  "repeatable, searched in the order given (docs/user-guide.md)")
+                  "Directory where a call of another file (M98 P1000, G65 P1000, o<name> call, CALL PGM SUB, "
+                  "Siemens L100) finds it; repeatable, searched in the order given, after the calling "
+                  "program's own directory for CALL PGM and L100 (docs/user-guide.md)")
       ->allow_extra_args(false)
       ->check(CLI::ExistingDirectory);
 }

@@ -52,12 +52,16 @@ inline std::optional<std::filesystem::path> file_named(const std::filesystem::pa
   return found;
 }
 
-/// The first file in `dirs` named one of `names` (see the file comment), or none.
+/// The first file in `dirs` named one of `names` (see the file comment), or none. A name with
+/// directories before it (`parts/SUB.h`, relative to each of `dirs`) has its last part matched.
 inline std::optional<std::filesystem::path> find_called_file(const std::vector<std::string>& dirs,
                                                              const std::vector<std::string>& names) {
   for (const std::string& dir : dirs)
-    for (const std::string& name : names)
-      if (auto f = file_named(dir, name)) return f;
+    for (const std::string& name : names) {
+      const std::filesystem::path relative(name);
+      const std::filesystem::path in = relative.has_parent_path() ? std::filesystem::path(dir) / relative.parent_path() : std::filesystem::path(dir);
+      if (auto f = file_named(in, relative.filename().string())) return f;
+    }
   return std::nullopt;
 }
 
@@ -85,6 +89,16 @@ inline interp::called_file load_called_file(const std::filesystem::path& path, c
     return out.error = "a byte-order mark or end-of-transmission byte inside the program", out;
   out.text = std::string(t.body);
   return out;
+}
+
+/// The directory of the file at `path` when it is a file on disk (a program read from a file,
+/// not from a standard input or a text in memory), for a dialect whose calls are relative to the
+/// calling program's directory (Heidenhain `CALL PGM`); else none.
+inline std::optional<std::string> directory_of_file(const std::string& path) {
+  std::error_code ec;
+  if (path.empty() || !std::filesystem::is_regular_file(path, ec)) return std::nullopt;
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  return parent.empty() ? std::string(".") : parent.string();
 }
 
 /// The executor's opener for calls of files in `limits.include_dirs` (none when it names no

@@ -138,10 +138,13 @@ run_result run(const std::string& text, ip::execution_limits limits = {}) {
   return r;
 }
 
-/// Files by name, for calls of other files: each opened at most once per run (`opened`).
+/// Files by name, for calls of other files: how often each was opened (`opened`), and by which
+/// calling file (`opened_from`: the calling file's path, empty for the main text, and the name):
+/// each at most once per calling file and run.
 struct file_set {
   std::map<std::string, std::string> texts;
   std::map<std::string, int> opened{};
+  std::map<std::pair<std::string, std::string>, int> opened_from{};
 };
 
 /// Runs `text` with calls of the files in `files`: the ordinary lines executed, those of a
@@ -153,6 +156,7 @@ run_result run_with_files(const std::string& text, file_set& files, ip::executio
     for (const std::string& n : names)
       if (auto f = files.texts.find(n); f != files.texts.end()) {
         ++files.opened[n];
+        ++files.opened_from[{x.file(), n}];
         if (f->second == "unreadable") return ip::called_file{"dir/" + n, "", "cannot be read"};
         return ip::called_file{"dir/" + n, f->second};
       }
@@ -298,7 +302,8 @@ TEST_CASE("executor: calls of other files", "[executor][files]") {
   CHECK(run_with_files("P a\nCF bad\n", f).error == "dir/bad.toy:2:1: jump to nowhere: no such label in this file");
   CHECK(run_with_files("CF open\n", f).error == "dir/open.toy:1:1: the called file ends without returning to the call from line 1");
   CHECK(run_with_files("CF self\n", f).error.ends_with("calls nested more than 64 deep (a file that calls itself without end?)"));
-  CHECK(f.opened["self.toy"] == 1);
+  CHECK(f.opened["self.toy"] == 2);  // once for the main text's call, once for its own: a name may be
+                                     // relative to the calling file (Heidenhain CALL PGM)
   // The bounds count over all files.
   ip::execution_limits small;
   small.max_executed_lines = 5;
@@ -627,7 +632,7 @@ TEST_CASE("executor law: structured programs run as their trees", "[executor][la
     RC_LOG() << pr.out << "error: " << r.error << "\n";
     RC_ASSERT(r.error.empty());
     RC_ASSERT(r.lines == m.out);
-    for (const auto& [name, times] : f.opened) RC_ASSERT(times == 1);
+    for (const auto& [from, times] : f.opened_from) RC_ASSERT(times == 1);
   });
 }
 

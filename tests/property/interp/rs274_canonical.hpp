@@ -112,15 +112,18 @@ inline std::vector<canonical_move> moves_in(std::string_view text) {
   return moves;
 }
 
-/// Runs `rs274 -g` (at `rs274_path`) on `program` (written to a temporary file, removed after).
-inline run run_program(const std::string& program, const std::string& rs274_path = KIN5_RS274) {
+/// Runs `rs274 -g` (at `rs274_path`) on `program` (written to a temporary file, removed after),
+/// with `options` before `-g` (`-i FILE.ini`: an ini file whose `[RS274NGC] SUBROUTINE_PATH`
+/// says where `o<name> call` finds `name.ngc`).
+inline run run_program(const std::string& program, const std::string& options = "",
+                       const std::string& rs274_path = KIN5_RS274) {
   static int count = 0;
   const auto dir = std::filesystem::temp_directory_path();
   const std::string file =
       (dir / ("kin5-rs274-moves-" + std::to_string(::getpid()) + "-" + std::to_string(count++) + ".ngc")).string();
   std::ofstream(file) << program;
   run out;
-  const std::string command = rs274_path + " -g " + file + " 2>&1";
+  const std::string command = rs274_path + (options.empty() ? "" : " " + options) + " -g " + file + " 2>&1";
   if (FILE* pipe = ::popen(command.c_str(), "r")) {
     char buffer[4096];
     while (std::fgets(buffer, sizeof buffer, pipe)) out.text += buffer;

@@ -7,10 +7,14 @@
 // 4 decimals, so the programs use positions of 3 decimals, whose sums and arc ends on quarter
 // turns stay on 3 decimals: rs274's printed value is then the exact one, and the comparison to
 // 1e-9 means what it says. rs274 works in the program's unit (USE_LENGTH_UNITS); kin5's
-// operations hold millimetres, divided by 25.4 after a `use_length_units` inch.
+// operations hold millimetres, divided by 25.4 after a `use_length_units` inch. The same with
+// part of the moves in a subroutine of another file, `o<part> call`, which rs274 finds on its
+// ini file's SUBROUTINE_PATH and kin5 in its include directory.
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +25,9 @@
 #include <kin5/program/canonical/block_operations.hpp>
 #include <kin5/program/linuxcnc/reader.hpp>
 #include <kin5/program/number.hpp>
+#include <kin5/program/read_limits.hpp>
+
+#include <unistd.h>
 
 #include "rs274_canonical.hpp"
 
@@ -196,6 +203,46 @@ TEST_CASE("LinuxCNC moves: kin5 reads the end points rs274 runs to, G90 and G91,
       }
     }
   });
+}
+
+TEST_CASE("LinuxCNC moves: a subroutine in another file runs as rs274 runs it from its SUBROUTINE_PATH") {
+  const auto dir = std::filesystem::temp_directory_path() / ("kin5-rs274-calls-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string ini = (dir / "subroutines.ini").string();
+  std::ofstream(ini) << "[RS274NGC]\nSUBROUTINE_PATH = " << dir.string() << "\n";
+  read_limits limits;
+  limits.include_dirs = {dir.string()};
+  rc::prop("the moves of a program whose middle lines are a called file's end where rs274's do", [&] {
+    const drawn d = draw_moves();
+    std::vector<std::string> lines;  // the drawn lines before M2
+    for (std::size_t at = 0, next; (next = d.text.find('\n', at)) != std::string::npos; at = next + 1)
+      lines.push_back(d.text.substr(at, next + 1 - at));
+    lines.pop_back();
+    const auto from = *rc::gen::inRange<std::size_t>(1, lines.size() + 1);
+    const auto to = *rc::gen::inRange<std::size_t>(from, lines.size() + 1);
+    std::string main, called = "o<part> sub\n";
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      if (i == from) main += "o<part> call\n";
+      (i >= from && i < to ? called : main) += lines[i];
+    }
+    if (from == lines.size()) main += "o<part> call\n";
+    main += "M2\n";
+    std::ofstream(dir / "part.ngc") << called << "o<part> endsub\nM2\n";
+    const rs::run theirs = rs::run_program(main, "-i " + ini);
+    std::string errors;
+    std::vector<kin5_move> ours;
+    {
+      const read_limits_scope scope(limits);
+      ours = kin5_moves(main, d.inches, errors);
+    }
+    RC_LOG() << main << "\n--- part.ngc:\n" << called << "\n--- rs274:\n" << theirs.text << "\n";
+    RC_ASSERT(errors == "");
+    RC_ASSERT(theirs.status == 0);
+    RC_ASSERT(theirs.moves.size() == ours.size());
+    for (std::size_t i = 0; i < ours.size(); ++i)
+      for (int k = 0; k < 6; ++k) RC_ASSERT(std::abs(ours[i].end[k] - theirs.moves[i].end[k]) <= 1e-9);
+  });
+  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("rs274's canonical calls are read in the plane's order and the unit in effect") {

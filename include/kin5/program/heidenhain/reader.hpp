@@ -9,11 +9,13 @@
 /// `CYCL DEF 9.0 DWELL TIME` (passed through) then `CYCL DEF 9.1 DWELL t` is a dwell (`state.dwell_s`).
 /// Labels, calls, section repeats, FN 9–FN 12 jumps and the assignments' values are the
 /// executor's (`read_blocks`, statements.hpp): the reader sees the blocks it runs, and a word
-/// that uses a Q parameter reads its value then (motion.hpp).
+/// that uses a Q parameter reads its value then (motion.hpp). So are `CALL PGM` calls of
+/// programs in other files, which run from the calling program's directory or the include
+/// directories (`read_limits::include_dirs`) up to their `END PGM`.
 /// `FN 14: ERROR = n ;text` is an alarm stop (`alarm`: number n, the comment its message).
 /// Every other block is refused at its keyword, naming it: the
 /// cycles kin5 does not read (`CYCL DEF 200`, 32, …), `CYCL CALL`, `M99`/`M89`,
-/// `CALL PGM` (another file), `FN` functions other than FN 0–FN 13, `M` blocks with other words
+/// `SEL PGM` and `CALL SELECTED PGM`, `FN` functions other than FN 0–FN 13, `M` blocks with other words
 /// (`M140 MB MAX`), `TOOL CALL` forms it does not read, `FUNCTION TCPM` options other than
 /// `F TCP`, `AXIS POS`, `PATHCTRL AXIS`, unknown keywords; so are Q parameters without a value,
 /// and active frame changes (`PLANE SPATIAL`…, `CYCL DEF 7/8/10/11/19/26`, `TRANS`). Incremental
@@ -24,6 +26,7 @@
 #include <charconv>
 #include <cstddef>
 #include <initializer_list>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -32,6 +35,7 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../called_files.hpp"
 #include "../interp/executor.hpp"
 #include "../machine_functions.hpp"
 #include "../lexing.hpp"
@@ -488,10 +492,10 @@ class block_reader : public word_checks {
     }
   }
 
-  /// `CALL PGM file`, `PGM CALL file`, `SEL PGM file`, `CALL SELECTED PGM`: the keywords and the
-  /// file as written, when the block at `i` is one.
+  /// `PGM CALL file`, `SEL PGM file`, `CALL SELECTED PGM` (`CALL PGM` is the executor's): the
+  /// keywords and the file as written, when the block at `i` is one.
   std::optional<std::string> called_program(std::size_t i) const {
-    for (const auto& ws : {std::initializer_list<std::string_view>{"CALL", "PGM"}, {"PGM", "CALL"}, {"SEL", "PGM"},
+    for (const auto& ws : {std::initializer_list<std::string_view>{"PGM", "CALL"}, {"SEL", "PGM"},
                            {"CALL", "SELECTED", "PGM"}}) {
       const auto after = scan_.keywords(i, ws);
       if (!after || (*after < s_.size() && !is_space(s_[*after]))) continue;
@@ -556,7 +560,8 @@ class block_reader : public word_checks {
     if (head == "CYCL") why = "CYCL CALL: a cycle call is not supported (fixed cycles are refused until kin5 reads them)";
     else if (head == "LBL") why = "LBL: labels are not supported (the path would depend on the calls and repeats)";
     else if (auto file = called_program(i))
-      why = *file + ": a call of another program file is not supported (its motion would be lost; kin5 reads one file)";
+      why = *file + ": not supported (its motion would be lost); kin5 runs a program in another file called with CALL "
+                    "PGM file";
     else if (head == "CALL" || head == "SEL" || head == "PGM")
       why = t_.upper.substr(i, scan_.run_end(scan_.skip_spaces(scan_.run_end(i))) - i) +
             ": program and label calls are not supported (the motion they make would be lost)";
@@ -598,6 +603,37 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
     interp::executor run(body, parameter_rules(), limits);
     run.record_calls_in(out.calls, file);
     state.parameters = &run.parameters();
+    // The programs CALL PGM runs, by path: a copy of each text (the executor runs its own) and its
+    // lines, for the blocks continued with `~`; the name and unit of its BEGIN PGM.
+    struct called_program {
+      std::string text;
+      std::vector<text_line> lines;
+      std::optional<std::string> begin_name;
+    };
+    std::map<std::string, called_program> called;
+    const read_limits reading = current_read_limits();
+    run.open_files_with([&](const std::string&, const std::vector<std::string>& names) -> std::optional<interp::called_file> {
+      std::vector<std::string> dirs;
+      const auto here = directory_of_file(run.file().empty() ? file_path : run.file());
+      if (here) dirs.push_back(*here);
+      dirs.insert(dirs.end(), reading.include_dirs.begin(), reading.include_dirs.end());
+      const auto path = find_called_file(dirs, names);
+      if (!path) {
+        const bool included = !reading.include_dirs.empty();
+        const std::string where = here && included ? "not in the calling program's directory nor in the include directories"
+                                  : here           ? "not in the calling program's directory"
+                                  : included       ? "not in the include directories"
+                                                   : "no directory to look for it in";
+        return interp::called_file{names.front(), {}, where + " (--include-dir DIR names the directory that holds it)"};
+      }
+      interp::called_file f = load_called_file(*path, reading);
+      if (f.error.empty() && called.find(f.path) == called.end()) {  // loaded again for another caller: the same text
+        called_program& c = called[f.path];
+        c.text = f.text;
+        c.lines = split_lines(c.text);
+      }
+      return f;
+    });
     std::optional<std::size_t> tail;  // the first line after the block that ended the run
     bool tail_in_subprogram = false;   // the run ended inside a called subprogram
     // Reads the block that starts at line `li`; returns its last line's index.
@@ -615,9 +651,40 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
       sink(std::move(b));
       return last;
     };
+    // Reads the block at line `line` of the called program at `path`: its BEGIN PGM and END PGM
+    // make no block (the main program's frame the executed program), and must say the caller's
+    // unit.
+    const auto read_called_block = [&](const std::string& path, const text_line& line) {
+      if (lexing::is_blank(line.text)) return;
+      called_program& c = called[path];
+      block_text source;
+      source.file = file_name(path);
+      detail::join_block(c.lines, line.number - 1, source);
+      const std::optional<bool> caller_inch = state.inch;
+      std::optional<std::string> caller_name = std::move(state.begin_name);
+      state.begin_name = c.begin_name;
+      block b = detail::block_reader(source, state, out).read();
+      c.begin_name = std::move(state.begin_name);
+      state.begin_name = std::move(caller_name);
+      const bool unit_differs = state.inch.value_or(false) != caller_inch.value_or(false);
+      state.inch = caller_inch;
+      if (b.program_begin || b.program_end) {
+        if (unit_differs)
+          out.add_error({b.where, std::string(b.program_begin ? "BEGIN" : "END") + " PGM " + c.begin_name.value_or("") +
+                                      ": a called program in " + (caller_inch.value_or(false) ? "MM" : "INCH") +
+                                      " from a program in " + (caller_inch.value_or(false) ? "INCH" : "MM") +
+                                      " is not supported (give both programs one unit)"});
+        return;
+      }
+      if (!b.passthrough && detail::ends_program(b))
+        out.add_error({b.where, "M2 or M30 in a program that CALL PGM runs: the TNC does not allow them there (the "
+                                "called program ends at its END PGM)"});
+      sink(std::move(b));
+    };
     const bool ran = run.execute(
         syntax,
         [&](const text_line& line, const interp::statement& s) {
+          if (!run.file().empty()) return read_called_block(run.file(), line);
           if (s.ends_program || lexing::is_blank(line.text)) return;  // the line after the end; a blank line
           out.reading_call = run.call_chain();
           read_block(line.number - 1, true);
@@ -625,14 +692,15 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
         [&](const interp::flow_error& e) {  // at the statement, after its block number
           out.reading_call = run.call_chain();
           std::size_t column = e.column;
-          if (e.line >= 1 && e.line <= lines.size()) {
-            const std::string_view t = lines[e.line - 1].text;
+          const std::vector<text_line>& in = e.file.empty() ? lines : called[e.file].lines;
+          if (e.line >= 1 && e.line <= in.size()) {
+            const std::string_view t = in[e.line - 1].text;
             if (column == lexing::skip_blanks(t, 0) + 1 && column <= t.size() && is_digit(t[column - 1])) {
               while (column <= t.size() && is_digit(t[column - 1])) ++column;
               column = lexing::skip_blanks(t, column - 1) + 1;
             }
           }
-          out.add_error({{file, e.line, column}, e.message});
+          out.add_error({{e.file.empty() ? file : file_name(e.file), e.line, column}, e.message});
         });
     out.reading_call = 0;
     if (ran && tail) {  // after the end: what lies outside the subprograms, as written

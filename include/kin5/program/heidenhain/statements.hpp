@@ -9,16 +9,21 @@
 /// | `CALL LBL 1 REP 2` | a section repeat: back to `LBL 1` and on to this line, 2 times more |
 /// | `FN 9: IF +Q1 EQU +Q2 GOTO LBL 1` | a jump when Q1 = Q2 (`FN 10` NE, `FN 11` GT, `FN 12` LT) |
 /// | `FN 0`–`FN 8`, `FN 13`, `Q1 = …`, `QL1 = …`, `QR1 = …` | an assignment, then the line for the reader |
+/// | `CALL PGM SUB`, `CALL PGM SUB.H`, `CALL PGM ..\DIR\SUB.H` | a call of the program in another file, run to its `END PGM`; its own QL (`program_file_names`) |
+/// | `END PGM` in a called program's file | ordinary, ending the call: the caller goes on |
 /// | a line after one ending in `~` | nothing (the reader joins it to the block it continues) |
 /// | any other line | an ordinary line for the reader |
 /// A label number or name from a parameter (`CALL LBL Q5`, `LBL QS1`) is refused: the label the
-/// program goes to would depend on the run.
+/// program goes to would depend on the run; so is a program called by a string parameter
+/// (`CALL PGM QS1`), a call of an ISO program (`.I`), and any word after the called file (`REP`:
+/// a program call runs once).
 ///
 /// For an ordinary line `statement_of` looks at the first byte after the block number only
 /// (and at the end of the line before, for a continuation); it is called for every line run.
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -33,11 +38,39 @@
 
 namespace kin5::program::heidenhain {
 
+/// The file names a `CALL PGM` of `written` may mean, for the opener of called files
+/// (../called_files.hpp): the path with `/` between its parts, relative to the calling
+/// program's directory, `.h` added when the name has no type (the TNC's default). A path from
+/// a drive or the root (`TNC:\PARTS\SUB.H`, `\SUB.H`) names the control's own directories,
+/// which a PC does not have: only its file name is tried.
+inline std::vector<std::string> program_file_names(std::string_view written) {
+  std::string path(written);
+  for (char& c : path)
+    if (c == '\\') c = '/';
+  const std::size_t colon = path.find(':');
+  const bool absolute = colon != std::string::npos || (!path.empty() && path[0] == '/');
+  if (colon != std::string::npos) path.erase(0, colon + 1);
+  const std::size_t slash = path.rfind('/');
+  std::string file = slash == std::string::npos ? path : path.substr(slash + 1);
+  if (file.find('.') == std::string::npos) path += ".h", file += ".h";
+  return {absolute ? file : path};
+}
+
 /// The statements of one program's lines (see the file comment). `lines` are the program's
 /// lines as the executor numbers them (line n is `lines[n - 1]`).
 class statements {
  public:
-  explicit statements(const std::vector<text_line>& lines) : lines_(lines) {}
+  explicit statements(const std::vector<text_line>& lines) : lines_(&lines) {}
+
+  /// The statements of a program another one calls (`CALL PGM`), whose text is `text`: its own
+  /// lines, and its `END PGM` ends the call.
+  statements for_text(std::string_view text) const {
+    auto lines = std::make_shared<const std::vector<text_line>>(split_lines(text));
+    statements called(*lines);
+    called.owned_ = std::move(lines);
+    called.called_ = true;
+    return called;
+  }
 
   /// After the program's end has been read (M2, M30, END PGM): the next line the executor asks
   /// for ends the run.
@@ -65,6 +98,11 @@ class statements {
         break;
       case 'C':
         if (keyword_at(t, k, "CALL") && keyword_at(t, lexing::skip_blanks(t, k + 4), "LBL")) call(t, k, l.number, s);
+        else if (keyword_at(t, k, "CALL") && keyword_at(t, lexing::skip_blanks(t, k + 4), "PGM"))
+          program_call(t, lexing::skip_blanks(t, k + 4) + 3, l.number, s);
+        break;
+      case 'E':
+        if (called_ && keyword_at(t, k, "END") && keyword_at(t, lexing::skip_blanks(t, k + 3), "PGM")) s.ends_program = true;
         break;
       case 'F':
         if (keyword_at(t, k, "FN")) function(t, k, l.number, s);
@@ -80,13 +118,15 @@ class statements {
   }
 
  private:
-  const std::vector<text_line>& lines_;
+  const std::vector<text_line>* lines_;
+  std::shared_ptr<const std::vector<text_line>> owned_{};  // a called program's lines (for_text)
+  bool called_ = false;  // the text of a program a CALL PGM runs
   bool ended_ = false;
 
   /// Whether line `number` continues the block of the line before it (that line ends in `~`).
   bool continues_block(std::size_t number) const {
-    if (number < 2 || number - 2 >= lines_.size()) return false;
-    const std::string_view p = lines_[number - 2].text;
+    if (number < 2 || number - 2 >= lines_->size()) return false;
+    const std::string_view p = (*lines_)[number - 2].text;
     std::size_t e = p.size();
     while (e > 0 && is_space(p[e - 1])) --e;
     return e > 0 && p[e - 1] == '~';
@@ -177,6 +217,44 @@ class statements {
       p = e;
     }
     nothing_after(t, p, line, "CALL " + name->first, s);
+  }
+
+  /// `CALL PGM file` (the file from `k`, after `PGM`): a call of another file, as written or in
+  /// quotes; a string parameter, an ISO program and words after the file are refused.
+  static void program_call(std::string_view t, std::size_t k, std::size_t line, interp::statement& s) {
+    std::size_t f = lexing::skip_blanks(t, k);
+    std::size_t e = f;
+    std::string name;
+    if (f < t.size() && t[f] == '"') {
+      e = t.find('"', f + 1);
+      if (e == std::string_view::npos || e == f + 1)
+        return refuse(s, line, f, 1, "CALL PGM: a file name in quotes needs its closing '\"'");
+      name = std::string(t.substr(f + 1, e - f - 1));
+      ++e;
+    } else {
+      while (e < t.size() && !is_space(t[e]) && t[e] != ';') ++e;
+      name = std::string(t.substr(f, e - f));
+    }
+    if (name.empty()) return refuse(s, line, f, 1, "CALL PGM needs the file of the program to call (CALL PGM SUB.H)");
+    const std::string upper = lexing::upper(name);
+    if (upper.size() > 2 && upper[0] == 'Q' && upper[1] == 'S' && is_digit(upper[2]))
+      return refuse(s, line, f, e - f, "CALL PGM " + name + ": a program named by a string parameter is not supported "
+                                        "(the file would depend on the run); write the file's name");
+    if (upper.size() > 2 && upper.ends_with(".I"))
+      return refuse(s, line, f, e - f, "CALL PGM " + name + ": a call of an ISO program (.I) is not supported (kin5 "
+                                        "reads a Heidenhain program's called files as Heidenhain)");
+    const std::size_t after = lexing::skip_blanks(t, e);
+    if (after < t.size() && t[after] != ';') {
+      std::size_t end = after;
+      while (end < t.size() && !is_space(t[end]) && t[end] != ';') ++end;
+      return refuse(s, line, after, end - after, "CALL PGM " + name + ": '" + std::string(t.substr(after, end - after)) +
+                                                     "' after the file is not supported (a program call runs its "
+                                                     "program once, with no words after the file)");
+    }
+    s.kind = interp::statement_kind::call;
+    s.target = "PGM " + name;
+    s.files = program_file_names(name);
+    s.call_frame = true;  // QL parameters are each program's own; Q and QR are shared
   }
 
   /// `FN k: …`: FN 9 to 12 are jumps, FN 0 to 8 and 13 assignments; any other is the reader's.

@@ -18,7 +18,7 @@
 /// else from its first line, until a return with no call of its own open (M99, M17, RET,
 /// `endsub`) or the end of its program (END PGM, M30): then the caller goes on. Its errors name
 /// its path (`flow_error::file`); `file()` says which file the line being read is in. A file is
-/// loaded once per run, when first called, and kept for the calls after.
+/// loaded once per run and calling file, when first called, and kept for the calls after.
 ///
 /// The calls open at each line are a chain of call sites (the calling statements' first
 /// non-blank bytes), interned in a `call_chains` table (call_chain.hpp): `call_chain()` is the
@@ -271,7 +271,7 @@ class executor {
     file_name main_file{};
     std::uint32_t chain = 0;                    // the calls open now
     file_opener open{};
-    std::map<std::string, std::shared_ptr<const called_file>, std::less<>> files{};  // by the call's target
+    std::map<std::string, std::shared_ptr<const called_file>, std::less<>> files{};  // by calling file and target
     std::vector<const called_file*> running{};  // the called files open, outermost first
   };
 
@@ -514,7 +514,10 @@ class executor {
                                one_of(s.files) + " in (--include-dir DIR names the directory that holds it)");
       return nullptr;
     }
-    auto found = run_.files.find(s.target);
+    // By the calling file too: a name may be relative to the calling file's directory
+    // (Heidenhain's CALL PGM), so the same name called from two files may be two files.
+    const std::string key = (run_.running.empty() ? std::string() : run_.running.back()->path) + '\n' + s.target;
+    auto found = run_.files.find(key);
     if (found == run_.files.end()) {
       std::optional<called_file> f = run_.open(s.target, s.files);
       if (!f) {
@@ -526,7 +529,7 @@ class executor {
         fail(on_error, line, what + f->path + ": " + f->error);
         return nullptr;
       }
-      found = run_.files.emplace(s.target, std::make_shared<const called_file>(std::move(*f))).first;
+      found = run_.files.emplace(key, std::make_shared<const called_file>(std::move(*f))).first;
     }
     return found->second;
   }

@@ -8,7 +8,7 @@
 /// | meaning | LinuxCNC | FANUC macro B | Heidenhain | Siemens |
 /// |---|---|---|---|---|
 /// | jump | — | `GOTO n`, `IF [c] GOTO n` | `FN 9`–`FN 12 … GOTO LBL` | `GOTOF`, `GOTOB`, `GOTO`, `IF c GOTOF` |
-/// | call | `o100 call [a]…` | `M98 P L`, `G65 P L` | `CALL LBL n` | — (another file) |
+/// | call | `o100 call [a]…`, `o<name> call` (another file) | `M98 P L`, `G65 P L` | `CALL LBL n`, `CALL PGM f` (another file) | `L100 P3`, `NAME`, `CALL "NAME"` (another file) |
 /// | section repeat | — | — | `CALL LBL n REP m` | `REPEAT label P=n`, `REPEAT a b P=n`, `REPEATB` |
 /// | return | `o100 endsub`, `return` | `M99` | `LBL 0` | `RET`, `M17` |
 /// | IF branches | `if`/`elseif`/`else`/`endif` | `IF [c] THEN` (one line: an ordinary line's `condition`) | — | `IF`/`ELSE`/`ENDIF` |

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "../block.hpp"
+#include "../called_files.hpp"
 #include "../interp/executor.hpp"
 #include "../read_limits.hpp"
 #include "../lexing.hpp"
@@ -345,6 +346,28 @@ inline bool path_line(std::string_view line) {
   return line.size() > 7 && line.front() == ';' && lexing::upper(line.substr(1, 6)) == "$PATH=";
 }
 
+/// `PROC NAME`, a subprogram's declaration at the head of its file (SINUMERIK 840D sl
+/// Programming Manual Job Planning, "Subprograms with parameter transfer"): an empty text when it
+/// names the subprogram alone (a call of it needs nothing more), the refusal when it declares
+/// parameters or attributes (`PROC SUB(REAL X)`, `PROC SUB SAVE`: what the call passes or restores);
+/// none when `line` is no PROC line.
+inline std::optional<std::string> procedure_line(std::string_view line) {
+  std::size_t i = lexing::skip_blanks(line, 0);
+  if (i + 1 < line.size() && to_upper(line[i]) == 'N' && is_digit(line[i + 1])) {
+    while (++i < line.size() && is_digit(line[i])) {}
+    i = lexing::skip_blanks(line, i);
+  }
+  if (!starts_with_keyword(line.substr(i), "PROC") || (i + 4 < line.size() && !is_space(line[i + 4]))) return std::nullopt;
+  std::size_t k = lexing::skip_blanks(line, i + 4);
+  const std::size_t name = k;
+  while (k < line.size() && is_ident_char(line[k])) ++k;
+  const std::size_t rest = lexing::skip_blanks(line, k);
+  if (k > name && (rest == line.size() || line[rest] == ';')) return std::string();
+  return "PROC " + std::string(lexing::trim(line.substr(i + 4))) +
+         ": a subprogram with parameters or attributes (SAVE, DISPLOF, …) is not supported; kin5 runs a "
+         "subprogram declared with its name alone";
+}
+
 /// The words of a plain motion line, as `read_plain_motion` collects them.
 struct plain_motion {
   std::optional<long long> number;
@@ -468,6 +491,9 @@ class line_reader {
 
   modal_state& state() { return state_; }
 
+  /// The file the lines read next are in (a subprogram's file a call runs, or the main text's).
+  void in_file(const file_name& file) { file_ = file; }
+
  private:
   file_name file_;  // one string for every location in the file
   modal_state state_;
@@ -494,22 +520,70 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
   read_transmitted(text, file_path, diagnostics, on_block, [&](std::string_view body, const block_sink& sink) {
     interp::executor run{body, parameter_rules(), {limits.max_executed_lines}};
     run.record_calls_in(diagnostics.calls, file_path);
+    run.open_files_with([&](const std::string&, const std::vector<std::string>& names) -> std::optional<interp::called_file> {
+      // The calling program's directory first, then the include directories (the control
+      // searches the caller's directory, then its subprogram directories).
+      std::vector<std::string> dirs;
+      const auto here = directory_of_file(run.file().empty() ? file_path : run.file());
+      if (here) dirs.push_back(*here);
+      dirs.insert(dirs.end(), limits.include_dirs.begin(), limits.include_dirs.end());
+      if (const auto path = find_called_file(dirs, names)) return load_called_file(*path, limits);
+      const bool included = !limits.include_dirs.empty();
+      const std::string where = here && included ? "not in the calling program's directory nor in the include directories"
+                                : here           ? "not in the calling program's directory"
+                                : included       ? "not in the include directories"
+                                                 : "no directory to look for it in";
+      return interp::called_file{names.front() + " or " + names.back(), {},
+                                 where + " (a name alone in a block calls a subprogram; --include-dir DIR names the "
+                                         "directory that holds it)"};
+    });
+    const file_name main_file(file_path);
     detail::line_reader reader(file_path, run.parameters());
     statements syntax;
     const text_line* last = nullptr;
     text_line end_line;
+    // A subprogram's file: its header (`%_N_SUB_SPF`, `PROC SUB`) and `;$PATH=` lines make no
+    // block, nor does its end (M17); M2 and M30 are refused there.
+    bool in_called_file = false;  // the reader's file is a called one: set back before a line of this file
+    const auto read_called = [&](const std::string& path, const text_line& line) {
+      reader.in_file(file_name(path));
+      in_called_file = true;
+      const std::size_t first = lexing::skip_blanks(line.text, 0);
+      if (detail::program_header(line.text) || detail::path_line(line.text)) return;
+      if (const auto proc = detail::procedure_line(line.text)) {
+        if (!proc->empty())
+          diagnostics.add_error({{file_name(path), line.number, first + 1}, *proc});
+        return;
+      }
+      reader.read(line, diagnostics, [&](block b) {
+        if (b.program_end)
+          diagnostics.add_error({b.where, "the end of the program (M2, M30) in a subprogram's file: end it with M17 or "
+                                          "RET, which return to the caller"});
+        const auto m17 = std::find(b.m_codes.begin(), b.m_codes.end(), 17);
+        if (m17 != b.m_codes.end()) {
+          b.m_codes.erase(m17);  // the return: the executor has taken it
+          if (b.m_codes.empty() && !b.moves() && !b.motion && !b.feed && !b.tool && !b.spindle_rpm &&
+              b.kept_words.empty() && !b.comment)
+            return;
+        }
+        sink(std::move(b));
+      });
+    };
     const bool ended = run.execute(
         syntax,
         [&](const text_line& line, const interp::statement& s) {
           diagnostics.reading_call = run.call_chain();
+          if (!run.file().empty()) return read_called(run.file(), line);
+          if (in_called_file) reader.in_file(main_file), in_called_file = false;
           reader.read(line, diagnostics, sink);
           if (s.ends_program) end_line = line, last = &end_line;
         },
         [&](const interp::flow_error& e) {
           diagnostics.reading_call = run.call_chain();
-          diagnostics.add_error({{file_name(file_path), e.line, e.column}, e.message});
+          diagnostics.add_error({{e.file.empty() ? main_file : file_name(e.file), e.line, e.column}, e.message});
         });
     diagnostics.reading_call = 0;
+    reader.in_file(main_file);
     if (!ended || !last) return;
     // After the end: the lines never run (see above).
     const std::size_t from = static_cast<std::size_t>(last->text.data() - body.data()) + last->text.size();
@@ -535,10 +609,11 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
   });
 }
 
-/// The same with the default limits (`block_reader`).
+/// The same, with the limits of the reading under way (`current_read_limits`), as the other
+/// dialects' readers take them.
 inline void read_blocks(std::string_view text, const std::string& file_path, read_result& diagnostics,
                         const block_sink& on_block) {
-  read_blocks(text, file_path, diagnostics, on_block, read_limits{});
+  read_blocks(text, file_path, diagnostics, on_block, current_read_limits());
 }
 
 }  // namespace kin5::program::siemens

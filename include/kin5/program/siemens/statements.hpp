@@ -16,13 +16,20 @@
 /// | `REPEAT l P=n` | the lines from label `l` (before) to this one, `n` more times (`P` absent: 1) |
 /// | `REPEAT a b P=n` | the lines from label `a` to the line of label `b`, `n` times |
 /// | `REPEATB l P=n` | the line of label `l`, `n` times |
-/// | `M2`, `M30`, `M17` | ordinary, ending the program |
-/// A label `l` is a name or a block number (`N100`). Refused with the reason: `RET` (a
-/// subprogram's end), `GOTOS`, `CASE`, `ENDLABEL`, and anything after a jump or a control
-/// keyword but a comment. Every other line is ordinary; `statement_of` looks at its first word
-/// only, so a line that is neither (`N10 G1 X… Y…`) costs a few byte tests.
+/// | `M2`, `M30`, `M17` | ordinary, ending the program (in a called subprogram's file: the call) |
+/// | `L100`, `SUB_1`, `L100 P3`, `SUB P=R1` alone in a block | a call of the subprogram in another file, `P` times (`subprogram_file_names`) |
+/// | `CALL "SUB"`, `PCALL SUB` | the same call, the name as a string (`CALL`) or without a path (`PCALL`) |
+/// | `RET` in a called subprogram's file | the return from the call |
+/// A label `l` is a name or a block number (`N100`). A name alone in a block is a call unless it is
+/// a word the reader knows (`TRAORI`, `SOFT`, `TRANS`, …). Refused with the reason: `RET` in the
+/// main program, `GOTOS`, `CASE`, `ENDLABEL`, `CALL` of anything but a name in quotes, `PCALL` with
+/// a path or arguments, a call with arguments (`SUB(1, 2)`: the reader's), and anything after a
+/// jump or a control keyword but a comment. Every other line is ordinary; `statement_of` looks at
+/// its first word only, so a line that is neither (`N10 G1 X… Y…`) costs a few byte tests.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <charconv>
 #include <cstddef>
 #include <cstring>
@@ -30,6 +37,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "../interp/statement.hpp"
 #include "../lexing.hpp"
@@ -114,9 +122,38 @@ inline bool has_end_word(std::string_view t) {
 
 }  // namespace detail
 
+/// The files that may hold subprogram `name` (upper case), in the order tried: `NAME.SPF` as a
+/// PC keeps it, `_N_NAME_SPF` as the control does (SINUMERIK 840D sl Programming Manual
+/// Fundamentals, "Subprogram technique": program names, "Search path for subprogram call").
+inline std::vector<std::string> subprogram_file_names(const std::string& name) {
+  return {name + ".SPF", "_N_" + name + "_SPF"};
+}
+
+/// Whether `name` (upper case) alone in a block is a word of the language, not a subprogram: one
+/// the reader reads or keeps, or one of the control's own modal words it refuses by name
+/// (continuous-path, orientation, spline and transformation words).
+inline bool is_known_keyword(std::string_view name) {
+  static constexpr std::array<std::string_view, 45> language = {
+      "TRAORI", "TRAFOOF", "SUPA", "MCALL", "STOPRE", "PROC", "DEF", "CFC", "CFTCP", "CFIN", "FLIN", "FCUB",
+      "FPO", "BRISKA", "SOFTA", "DRIVEA", "UPATH", "SPATH", "CPRECON", "CPRECOF", "CDON", "CDOF", "CDOF2",
+      "DIAMON", "DIAMOF", "NORM", "KONT", "KONTC", "KONTT", "TRACYL", "TRANSMIT", "TRAANG", "ORIC", "ORID",
+      "OSOF", "ORIEULER", "ORIRPY", "ORIPLANE", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "STOPFIFO",
+      "STARTFIFO", "ENDPROC"};
+  return std::find(language.begin(), language.end(), name) != language.end() || detail::is_kept_keyword(name) ||
+         detail::is_frame_reset_keyword(name) || detail::is_frame_keyword(name);
+}
+
 /// The Siemens syntax for the executor (see the file comment).
 class statements {
  public:
+  /// The statements of a subprogram's file a call runs (its text is the executor's): `RET` and
+  /// `M17` end the call.
+  statements for_text(std::string_view) const {
+    statements called;
+    called.called_ = true;
+    return called;
+  }
+
   interp::statement statement_of(const text_line& line) const {
     interp::statement s;
     const std::string_view t = line.text;
@@ -136,8 +173,10 @@ class statements {
         s.label = std::move(l->name);
         i = lexing::skip_blanks(t, l->end);
       }
-      if (i < t.size() && is_letter(t[i])) control(s, line, i);
+      if (i < t.size() && is_letter(t[i])) control(s, line, i, called_);
     }
+    if (s.kind == interp::statement_kind::ordinary && !s.error && i < t.size() && (is_letter(t[i]) || t[i] == '_'))
+      bare_call(s, line, i);
     if (s.kind == interp::statement_kind::ordinary) {
       if (s.label.empty() && !s.block_label.empty()) s.label = std::move(s.block_label), s.block_label.clear();
       s.ends_program = detail::has_end_word(t);
@@ -153,6 +192,109 @@ class statements {
   /// Block numbers become labels (`N40`) once a statement that may search labels was seen: the
   /// executor indexes labels only for such a statement, so a program without one makes none.
   mutable bool labels_wanted_ = false;
+  bool called_ = false;  // the text of a subprogram's file a call runs
+
+  /// A call of subprogram `name` (upper case): the executor runs its file `count` times.
+  static void call_of(interp::statement& s, const std::string& name, std::optional<interp::expression> count) {
+    s.kind = K::call;
+    s.target = "subprogram " + name;  // no label has a blank: never a label of this file
+    s.files = subprogram_file_names(name);
+    s.count = std::move(count);
+    s.call_frame = true;  // its DEF variables are its own; R parameters are shared
+  }
+
+  /// The subprogram name at `i`: `L` and digits, or two letters or `_` and name characters, in
+  /// upper case, and its end; none when there is none.
+  static std::optional<std::pair<std::string, std::size_t>> subprogram_name_at(std::string_view t, std::size_t i) {
+    // Two bytes settle most lines (`G1 X…`, `X10`): no name, nothing made.
+    if (i + 1 >= t.size()) return std::nullopt;
+    const auto starts = [](char c) { return is_letter(c) || c == '_'; };
+    const bool numbered = to_upper(t[i]) == 'L' && is_digit(t[i + 1]);
+    if (!numbered && !(starts(t[i]) && starts(t[i + 1]))) return std::nullopt;
+    std::size_t k = i;
+    while (k < t.size() && detail::is_ident_char(t[k])) ++k;
+    if (numbered && !std::all_of(t.begin() + static_cast<std::ptrdiff_t>(i) + 1, t.begin() + static_cast<std::ptrdiff_t>(k), is_digit))
+      return std::nullopt;
+    return std::pair{lexing::upper(t.substr(i, k - i)), k};
+  }
+
+  /// The pass count after a call at `i` (`P3`, `P=R1`), `i` moved past it; refused (none, and
+  /// an error in `s`) when malformed; no count: an empty expression.
+  static std::optional<std::optional<interp::expression>> passes(interp::statement& s, const text_line& line,
+                                                                  std::size_t& i, const std::string& call) {
+    const std::string_view t = line.text;
+    i = lexing::skip_blanks(t, i);
+    if (i >= t.size() || to_upper(t[i]) != 'P') return std::optional<interp::expression>{};
+    std::size_t k = lexing::skip_blanks(t, i + 1);
+    if (k < t.size() && t[k] == '=') {
+      ++k;
+      auto c = condition(s, line, k, call + " P=");
+      if (!c) return std::nullopt;
+      i = k;
+      return std::optional<interp::expression>(std::move(*c));
+    }
+    std::size_t e = k;
+    while (e < t.size() && is_digit(t[e])) ++e;
+    if (e == k || e - k > 4 || (e < t.size() && detail::is_ident_char(t[e]))) {
+      refuse(s, line, i, call + ": P takes the number of passes, 1 to 9999 (P3, P=R1)");
+      return std::nullopt;
+    }
+    interp::expression count;
+    count.root = count.number(static_cast<double>(std::stol(std::string(t.substr(k, e - k)))), {line.number, k + 1, e - k});
+    i = e;
+    return std::optional<interp::expression>(std::move(count));
+  }
+
+  /// A name alone in a block, perhaps with a pass count: a call of the subprogram in its file.
+  static void bare_call(interp::statement& s, const text_line& line, std::size_t i) {
+    const std::string_view t = line.text;
+    const auto name = subprogram_name_at(t, i);
+    if (!name || is_known_keyword(name->first)) return;
+    std::size_t k = name->second;
+    if (k < t.size() && !is_space(t[k]) && t[k] != ';') return;  // `SUB(…)`, `X=…`: the reader's
+    // Only a pass count and a comment may follow; anything else is the reader's (`SOFT G1 X1`).
+    std::size_t p = lexing::skip_blanks(t, k);
+    if (p < t.size() && t[p] != ';' && to_upper(t[p]) != 'P') return;
+    interp::statement call;
+    auto count = passes(call, line, k, name->first);
+    if (!count) {
+      if (rest_is_empty(t, k) || call.error) s = std::move(call);
+      return;
+    }
+    if (!rest_is_empty(t, k)) return;  // `SUB P1 X…`: words the reader reads (and refuses)
+    const std::string label = std::move(s.label), block_label = std::move(s.block_label);
+    call_of(s, name->first, std::move(*count));
+    s.label = label, s.block_label = block_label;
+  }
+
+  /// `CALL "SUB"`, `PCALL SUB`: a call of a subprogram by a name in quotes, or without a path.
+  static void named_call(interp::statement& s, const text_line& line, std::size_t i, const std::string& w) {
+    const std::string_view t = line.text;
+    std::size_t k = lexing::skip_blanks(t, i);
+    std::string name;
+    if (w == "CALL") {
+      const std::size_t close = k < t.size() && t[k] == '"' ? t.find('"', k + 1) : std::string_view::npos;
+      const auto n = close == std::string_view::npos ? std::nullopt : subprogram_name_at(t, k + 1);
+      if (!n || n->second != close)
+        return void(refuse(s, line, k, "CALL: only a subprogram's name in quotes is read (CALL \"SUB\"); a path or a "
+                                       "name computed with << is not supported"));
+      name = n->first;
+      k = lexing::skip_blanks(t, close + 1);
+      if (k + 1 < t.size() && t[k] == '<' && t[k + 1] == '<')
+        return void(refuse(s, line, k, "CALL \"" + name + "\" << …: a name computed with << is not supported (the "
+                                       "subprogram would depend on the run); write its name", 2));
+    } else {
+      const auto n = subprogram_name_at(t, k);
+      if (!n || (n->second < t.size() && !is_space(t[n->second]) && t[n->second] != ';'))
+        return void(refuse(s, line, k, "PCALL: only a subprogram's name is read (PCALL SUB); a path or arguments are "
+                                       "not supported"));
+      name = n->first;
+      k = n->second;
+    }
+    auto count = passes(s, line, k, w + " " + name);
+    if (!count || !ends_here(s, line, k, w)) return;
+    call_of(s, name, std::move(*count));
+  }
 
   static interp::statement& refuse(interp::statement& s, const text_line& line, std::size_t at, std::string why,
                                    std::size_t length = 1) {
@@ -303,12 +445,12 @@ class statements {
     s.count = std::move(*last);
   }
 
-  /// The control statement at `i`, if the word there is one.
-  static void control(interp::statement& s, const text_line& line, std::size_t i) {
+  /// The control statement at `i`, if the word there is one (`called`: in a subprogram's file).
+  static void control(interp::statement& s, const text_line& line, std::size_t i, bool called) {
     const std::string_view t = line.text;
     const char first = to_upper(t[i]);
     if (first != 'E' && first != 'F' && first != 'G' && first != 'I' && first != 'L' && first != 'R' && first != 'U' &&
-        first != 'W' && first != 'C')
+        first != 'W' && first != 'C' && first != 'P')
       return;
     // Named, not a structured binding: the lambdas below capture `w`, which Clang refuses for a binding.
     const auto word = word_at(t, i);
@@ -357,8 +499,10 @@ class statements {
     if (w == "FOR") return counting(s, line, k);
     if (w == "REPEAT" && rest_is_empty(t, k)) return simple(K::loop_begin, interp::loop_kind::test_last);
     if (w == "REPEAT" || w == "REPEATB") return section(s, line, k, w);
+    if (w == "CALL" || w == "PCALL") return named_call(s, line, k, w);
+    if (w == "RET" && called) return simple(K::return_from_call);
     if (w == "RET")
-      return void(refuse(s, line, i, "RET: the end of a subprogram; kin5 reads main programs (M30, M2 or M17 end them)", 3));
+      return void(refuse(s, line, i, "RET: the end of a subprogram, in the main program (M30, M2 or M17 end it)", 3));
     if (w == "GOTOS")
       return void(refuse(s, line, i, "GOTOS: a jump to the program's start is not supported", 5));
     if (w == "CASE")

@@ -8,7 +8,9 @@
 #include <kin5/program/haas/dialect.hpp>
 #include <kin5/program/heidenhain/dialect.hpp>
 #include <kin5/program/iso/dialect.hpp>
+#include <kin5/program/read_limits.hpp>
 
+#include "../called_dir.hpp"
 #include "../example.hpp"
 
 using namespace kin5::program;
@@ -84,4 +86,25 @@ TEST_CASE("haas: what Haas cannot say is refused by the writer, naming the block
   CHECK_THROWS_WITH(haas::write(named.parsed),
                     "n.h:2: block cannot be written in Haas: a tool by name (\"BALL\") has no Haas form (T takes a "
                     "number; --tool-map NAME=n gives one)");
+}
+
+TEST_CASE("haas: M98 of a program in another file finds its number padded to five digits") {
+  // A Haas keeps five-digit program numbers: M98 P1234 runs O01234, M98 P12 O00012.nc.
+  const called_dir dir("haas-calls");
+  dir.write("O01234", "O01234 (SIDE)\nG01 X1.5 F20.\nM99\n");
+  dir.write("O00012.nc", "G01 Y2.5\nM99\n");
+  read_limits limits;
+  limits.include_dirs = {dir.path.string()};
+  const read_limits_scope scope(limits);
+  const read_result r = haas::read("G20\nM98 P1234\nM98 P12\nM30\n", "main.nc");
+  REQUIRE(r.errors.empty());
+  std::vector<std::string> moves;
+  for (const block& b : r.parsed.blocks)
+    if (b.axes.x_mm || b.axes.y_mm)
+      moves.push_back(std::filesystem::path(b.where.file.str()).filename().string() + (b.axes.x_mm ? " X" : " Y"));
+  CHECK(moves == std::vector<std::string>{"O01234 X", "O00012.nc Y"});
+  // Not found: the refusal names the five-digit names too.
+  const read_result none = haas::read("M98 P77\nM30\n", "main.nc");
+  REQUIRE(none.errors.size() == 1);
+  CHECK(none.errors[0].message == "call of O77: no label O77 in this file, nor a file O77, O77.nc, 77.nc, O00077, O00077.nc or 00077.nc in the include directories (--include-dir)");
 }

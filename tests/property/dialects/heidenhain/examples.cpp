@@ -1,6 +1,7 @@
 // Real-world Heidenhain habits on a small hand-written program in the style of NX output and
 // hand edits (unnumbered header, repeated numbers, `~` continuation, `*` sections, `;`-disabled
 // lines, other encodings in comments, CRLF), with hand-derived expectations.
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,9 @@
 #include <kin5/program/address_words.hpp>
 #include <kin5/program/heidenhain/dialect.hpp>
 #include <kin5/program/iso/dialect.hpp>
+#include <kin5/program/read_limits.hpp>
+
+#include "../called_dir.hpp"
 
 using namespace kin5::program;
 using kin5::vec3;
@@ -253,4 +257,73 @@ TEST_CASE("heidenhain: a number written only in a Q parameter counts for the pro
   CHECK(r.feed_decimals == 2);
   const auto unused = scan_resolution("1 Q1 = +10.1234\n2 L X+1.5 R0 FMAX\n", id);
   CHECK(unused.linear_decimals == 1);
+}
+
+namespace {
+/// Each move of `r` as "FILE:LINE X…Y…Z…", the file without its directory, whole millimetres.
+std::vector<std::string> moves_of(const read_result& r) {
+  std::vector<std::string> out;
+  for (const block& b : r.parsed.blocks)
+    if (b.axes.x_mm || b.axes.y_mm || b.axes.z_mm)
+      out.push_back(std::filesystem::path(b.where.file.str()).filename().string() + ":" + std::to_string(b.where.line) + " " +
+                    (b.axes.x_mm ? "X" + std::to_string(static_cast<int>(*b.axes.x_mm)) : "") +
+                    (b.axes.y_mm ? "Y" + std::to_string(static_cast<int>(*b.axes.y_mm)) : "") +
+                    (b.axes.z_mm ? "Z" + std::to_string(static_cast<int>(*b.axes.z_mm)) : ""));
+  return out;
+}
+}  // namespace
+
+TEST_CASE("heidenhain: CALL PGM runs the program in another file to its END PGM, with the caller's Q") {
+  const called_dir dir("heidenhain-calls");
+  // Q parameters are shared with the caller; QL are each program's own (TNC 640 User's Manual,
+  // "Calling any program as a subprogram"; "Principle and overview" of Q parameters).
+  dir.write("SUB.H", "0 BEGIN PGM SUB MM\n1 L X+Q1 R0 F100\n2 Q1 = Q1 + 1\n3 QL1 = 7\n4 L Y+QL1\n5 END PGM SUB MM\n");
+  std::filesystem::create_directories(dir.path / "parts");
+  dir.write("parts/DEEP.h", "0 BEGIN PGM DEEP MM\n1 L Z+5 ~\n  FMAX\n2 END PGM DEEP MM\n3 L Z+99\n");
+  const std::string main = "0 BEGIN PGM MAIN MM\n1 Q1 = 10\n2 QL1 = 3\n3 CALL PGM SUB ;first\n4 CALL PGM sub.h\n"
+                           "5 L X+QL1\n6 CALL PGM parts\\DEEP\n7 CALL PGM TNC:\\nc_prog\\SUB.H\n8 END PGM MAIN MM\n";
+  read_limits limits;
+  limits.include_dirs = {(dir.path / "none").string(), dir.path.string()};
+  {
+    const read_limits_scope scope(limits);
+    const read_result r = heidenhain::read(main, "main.h");
+    REQUIRE(r.errors.empty());
+    CHECK(moves_of(r) == std::vector<std::string>{"SUB.H:2 X10", "SUB.H:5 Y7", "SUB.H:2 X11", "SUB.H:5 Y7",
+                                                  "main.h:6 X3", "DEEP.h:2 Z5", "SUB.H:2 X12", "SUB.H:5 Y7"});
+    std::size_t begins = 0, ends = 0;
+    for (const block& b : r.parsed.blocks) begins += b.program_begin.has_value(), ends += b.program_end.has_value();
+    CHECK((begins == 1 && ends == 1));  // the called programs' frames are not the program's
+  }
+  // Without the directory, the call is refused at its line, naming the file.
+  const read_result none = heidenhain::read(main, "main.h");
+  REQUIRE(none.errors.size() == 1);
+  CHECK(none.errors[0].to_string() ==
+        "main.h:4:3: error: call of PGM SUB: SUB.h: no directory to look for it in (--include-dir DIR names the "
+        "directory that holds it)");
+  // A program read from a file finds the programs it calls beside it, as the TNC does.
+  dir.write("main.h", main);
+  const read_result beside = heidenhain::read(main, (dir.path / "main.h").string());
+  CHECK(beside.errors.empty());
+  CHECK(moves_of(beside).size() == 8);
+}
+
+TEST_CASE("heidenhain: what a program CALL PGM runs may not do is refused in its own file") {
+  const called_dir dir("heidenhain-called-errors");
+  dir.write("BAD.h", "0 BEGIN PGM BAD MM\n1 L X+Q77 R0 FMAX\n2 END PGM BAD MM\n");
+  dir.write("ENDS.h", "0 BEGIN PGM ENDS MM\n1 L X+1 R0 FMAX\n2 M30\n3 END PGM ENDS MM\n");
+  dir.write("INCH.h", "0 BEGIN PGM INCH INCH\n1 L X+1 R0 FMAX\n2 END PGM INCH INCH\n");
+  dir.write("OPEN.h", "0 BEGIN PGM OPEN MM\n1 L X+1 R0 FMAX\n");
+  read_limits limits;
+  limits.include_dirs = {dir.path.string()};
+  const read_limits_scope scope(limits);
+  const auto error_of = [](const std::string& called) {
+    const read_result r = heidenhain::read("0 BEGIN PGM M MM\n1 CALL PGM " + called + "\n2 END PGM M MM\n", "m.h");
+    REQUIRE_FALSE(r.errors.empty());
+    return std::filesystem::path(r.errors[0].where.file.str()).filename().string() + ":" +
+           std::to_string(r.errors[0].where.line) + ": " + r.errors[0].message;
+  };
+  CHECK(error_of("BAD").starts_with("BAD.h:2: "));
+  CHECK(error_of("ENDS").starts_with("ENDS.h:3: M2 or M30 in a program that CALL PGM runs"));
+  CHECK(error_of("INCH").starts_with("INCH.h:1: BEGIN PGM INCH: a called program in INCH from a program in MM"));
+  CHECK(error_of("OPEN").starts_with("OPEN.h:2: the called file ends without returning to the call from line 2"));
 }

@@ -243,7 +243,7 @@ TEST_CASE("siemens control flow: refusals name the construct", "[siemens][flow]"
         "q.mpf:1:4: error: system variable $AA_IM is the machine's state, not fixed by the program\n");
   CHECK(errors_of("G1 X=R7\n") == "q.mpf:1:6: error: parameter R7 is read before it is assigned: its value is the machine's\n");
   CHECK(errors_of("RET\n") ==
-        "q.mpf:1:1: error: RET: the end of a subprogram; kin5 reads main programs (M30, M2 or M17 end them)\n");
+        "q.mpf:1:1: error: RET: the end of a subprogram, in the main program (M30, M2 or M17 end it)\n");
   CHECK(errors_of("WHILE 1\nG1 X1\n") == "q.mpf:1:1: error: a loop without its end\n");
   CHECK(errors_of("IF 1 G1 X1\n").find("IF: expected a jump") != std::string::npos);
   CHECK(errors_of("ENDLABEL:\n").find("ENDLABEL") != std::string::npos);

@@ -1,12 +1,16 @@
 // Hand-written Siemens programs in the styles found in real 840D output, each checked against
 // values worked out by hand (Table 1 of Tian et al. 2010, docs/golden.md, for the SAJO blocks).
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
 #include <kin5/program/address_words.hpp>
+#include <kin5/program/read_limits.hpp>
 #include <kin5/program/siemens/dialect.hpp>
+
+#include "../called_dir.hpp"
 
 namespace {
 
@@ -290,4 +294,64 @@ TEST_CASE("siemens: a number written only in an R parameter counts for the progr
   CHECK(variables.feed_decimals == 2);
   const auto forgotten = scan_resolution("_Z=10.1234\n_Z=R1*2\nG1 X=_Z Y1.5\n", id);
   CHECK(forgotten.linear_decimals == 1);
+}
+
+TEST_CASE("siemens: a reading without limits of its own takes the reading's, as the other dialects do") {
+  // 20 passes of a loop of 3 lines: more than the reading's bound of 40 executed lines.
+  const std::string text = "R1=0\nWHILE R1<20\nR1=R1+1\nENDWHILE\nM30\n";
+  read_limits limits;
+  limits.max_executed_lines = 40;
+  const read_limits_scope scope(limits);
+  const read_result r = siemens::read(text, "loop.mpf");
+  REQUIRE(r.errors.size() == 1);
+  CHECK(r.errors[0].message.starts_with("more than 40 lines executed"));
+}
+
+TEST_CASE("siemens: a subprogram named alone in a block runs its file, P times, to M17 or RET") {
+  const called_dir dir("siemens-calls");
+  // The control's own file name (_N_…_SPF) and a PC's (….SPF, any case); R parameters shared,
+  // DEF variables the subprogram's own; its header, PROC line and M17 make no block.
+  dir.write("_N_L100_SPF", "%_N_L100_SPF\n;$PATH=/_N_SPF_DIR\nG1 X=R1 F100\nR1=R1+1\nM17\n");
+  dir.write("pocket.spf", "PROC POCKET\nDEF REAL _D=2\nG1 Y=_D\nRET\nG1 Y99\n");
+  const std::string main = "%_N_MAIN_MPF\nN10 R1=5\nN20 L100 P2\nN30 POCKET ;comment\nN40 CALL \"L100\"\n"
+                           "N50 PCALL POCKET P=R1-6\nN60 G0 Z10\nN70 M30\n";
+  read_limits limits;
+  limits.include_dirs = {dir.path.string()};
+  {
+    const read_limits_scope scope(limits);
+    const read_result r = siemens::read(main, "main.mpf");
+    REQUIRE(r.errors.empty());
+    std::vector<std::string> moves;
+    for (const block& b : r.parsed.blocks) {
+      CHECK_FALSE((b.program_begin && b.where.file.str() != "main.mpf"));
+      CHECK(b.m_codes != std::vector<int>{17});
+      if (b.axes.x_mm || b.axes.y_mm || b.axes.z_mm)
+        moves.push_back(std::filesystem::path(b.where.file.str()).filename().string() + ":" + std::to_string(b.where.line) +
+                        (b.axes.x_mm ? " X" + std::to_string(static_cast<int>(*b.axes.x_mm)) : "") +
+                        (b.axes.y_mm ? " Y" + std::to_string(static_cast<int>(*b.axes.y_mm)) : "") +
+                        (b.axes.z_mm ? " Z" + std::to_string(static_cast<int>(*b.axes.z_mm)) : ""));
+    }
+    CHECK(moves == std::vector<std::string>{"_N_L100_SPF:3 X5", "_N_L100_SPF:3 X6", "pocket.spf:3 Y2",
+                                            "_N_L100_SPF:3 X7", "pocket.spf:3 Y2", "pocket.spf:3 Y2", "main.mpf:7 Z10"});
+  }
+  // Without the directory, refused at the call, naming the files.
+  const read_result none = siemens::read(main, "main.mpf");
+  REQUIRE(none.errors.size() == 1);
+  CHECK(none.errors[0].to_string() ==
+        "main.mpf:3:1: error: call of subprogram L100: L100.SPF or _N_L100_SPF: no directory to look for it in (a name "
+        "alone in a block calls a subprogram; --include-dir DIR names the directory that holds it)");
+  // M30 in a subprogram's file, parameters in its PROC line, an end never reached: refused there.
+  dir.write("ENDS.SPF", "G1 X1\nM30\n");
+  dir.write("ARGS.SPF", "PROC ARGS(REAL _X)\nG1 X=_X\nM17\n");
+  dir.write("OPEN.SPF", "G1 X1\n");
+  const read_limits_scope scope(limits);
+  const auto error_of = [](const std::string& called) {
+    const read_result r = siemens::read(called + "\nM30\n", "m.mpf");
+    REQUIRE_FALSE(r.errors.empty());
+    return std::filesystem::path(r.errors[0].where.file.str()).filename().string() + ":" +
+           std::to_string(r.errors[0].where.line) + ": " + r.errors[0].message;
+  };
+  CHECK(error_of("ENDS").starts_with("ENDS.SPF:2: the end of the program (M2, M30) in a subprogram's file"));
+  CHECK(error_of("ARGS").starts_with("ARGS.SPF:1: PROC ARGS(REAL _X): a subprogram with parameters"));
+  CHECK(error_of("OPEN").starts_with("OPEN.SPF:1: the called file ends without returning to the call from line 1"));
 }
