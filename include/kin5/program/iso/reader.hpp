@@ -181,7 +181,8 @@ class basic_reader {
     substituted_.clear();
     auto problem = own_.line(s, first, end);
     if (!problem)
-      problem = lex_line(s, first, end, words_, b.comment, computed_values{&Own::read_value, line.number, &values_});
+      problem = lex_line(s, first, end, words_, b.comment, computed_values{&Own::read_value, line.number, &values_},
+                         Own::comments);
     if (!problem) problem = substitute();
     if (problem) error(problem->column, problem->message);
     const auto report = [this](std::size_t column, std::string message) { error(column, std::move(message)); };

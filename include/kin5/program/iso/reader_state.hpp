@@ -84,6 +84,8 @@ struct no_own_words {
   /// Whether G28 / G30 go to positions the control keeps in parameters (LinuxCNC #5161–#5166,
   /// #5181–#5186) rather than to the machine's reference points (Fanuc, Haas).
   static constexpr bool stored_homes = false;
+  /// A `(` inside a comment opens a nested one (lexer.hpp, `comment_nesting`).
+  static constexpr comment_nesting comments = comment_nesting::nested;
   static interp::parameter_rules parameter_rules() { return macro_parameter_rules(); }
   static parsed_expression read_value(std::string_view text, std::size_t line, std::size_t column) {
     return iso::read_value(text, line, column);

@@ -95,6 +95,8 @@ class own_words {
   /// G28 / G30 go to the positions in parameters #5161–#5166 / #5181–#5186 (User Manual, "G28,
   /// G28.1", "G30, G30.1"), which the control keeps, not the program.
   static constexpr bool stored_homes = true;
+  /// A comment ends at its first `)` (User Manual, "G-code Overview", "Comments"; lexer.hpp).
+  static constexpr iso::comment_nesting comments = iso::comment_nesting::flat;
 
   using syntax = statements;
   /// #1–#30 local to a call, #31–#5000 the program's, named ones (parameter_rules.hpp).

@@ -138,6 +138,22 @@ TEST_CASE("iso: comments keep non-UTF-8 bytes, lone CR ends lines, blank lines a
   CHECK(r.parsed.blocks[1].where == source_location{"c.nc", 4, 1});
 }
 
+TEST_CASE("iso: a comment inside a comment ends with the comment around it") {
+  // NX's posts list their tools as comments holding comments; the control skips all of it.
+  // Text between the inner and the outer ')' would be code on a control that ends a comment at
+  // its first ')': refused there.
+  const read_result r =
+      iso::read("(#12= (SLOT_D6 (ROUGH)  ))\nG0 X1. (A (B) ) Y2.\n(OPEN (INNER)\n(A (B) X5.)\n", "n.nc");
+  REQUIRE(r.errors.size() == 2);
+  CHECK(r.errors[0].where == source_location{"n.nc", 3, 1});
+  CHECK(r.errors[0].message == "comment is not closed");
+  CHECK(r.errors[1].where == source_location{"n.nc", 4, 8});
+  CHECK(r.errors[1].message.starts_with("text after a comment inside a comment: "));
+  REQUIRE(r.parsed.blocks.size() >= 2);
+  CHECK(r.parsed.blocks[0].comment == "#12= (SLOT_D6 (ROUGH)  )");
+  CHECK((r.parsed.blocks[1].comment == "A (B)" && r.parsed.blocks[1].axes.y_mm == 2.0));
+}
+
 TEST_CASE("iso: the lines after M30 are read, whatever ends them, up to a program of the file") {
   for (const std::string eol : {"\n", "\r\n", "\r"}) {
     const read_result r = iso::read("G0 X1." + eol + "M30" + eol + eol + "G0 X2." + eol + "%" + eol + "O100" + eol + "G0 X3." + eol, "c.nc");
