@@ -716,7 +716,11 @@ class basic_reader {
   /// the control reads them in: `state.distance` says G91 there, and G90 on the next block that
   /// moves; elsewhere it says what a block without motion writes (G90, G91) or G90 where needed.
   /// A distance of 0 from an unknown position (`G91 G0 B0.` after `G28 B0.`) moves nothing: the
-  /// word is left out, and the position stays unknown.
+  /// word is left out, and the position stays unknown. A rotary axis sent to its reference point
+  /// (G28; not LinuxCNC's, whose G28 goes to stored positions) is at the source machine's
+  /// reference angle when the reading knows it (`read_limits::rotary_home_deg`, the machine
+  /// file's `home_deg`): a rotary axis' commanded angle is its machine position, so the next
+  /// incremental word counts from there.
   void absolute_positions(block& b, const line_words& l) {
     const auto said = state_.incremental ? distance_mode::incremental : distance_mode::absolute;
     if (b.machine_coordinates) {
@@ -725,8 +729,14 @@ class basic_reader {
       bool any = false;
       for (int i = 0; i < 6; ++i)
         if (axis_slot(b, i)) any = true;
-      for (int i = 0; i < 6; ++i)  // G28 / G30 without axis words send every axis home
-        if (axis_slot(b, i) || (l.homing && !any)) state_.last[i].reset(), state_.lost_line[i] = line_;
+      const bool reference = b.machine_reference == machine_position::reference_point;
+      for (int i = 0; i < 6; ++i) {  // G28 / G30 without axis words send every axis home
+        if (!axis_slot(b, i) && !(l.homing && !any)) continue;
+        state_.last[i].reset(), state_.lost_line[i] = line_;
+        if (i < 3 || !reference) continue;
+        if (const auto home = current_read_limits().rotary_home_deg[static_cast<std::size_t>(i - 3)])
+          state_.last[i] = axis_position{*home, shortest_decimals(*home)}, state_.lost_line[i] = 0;
+      }
       return;
     }
     static constexpr char letters[] = "XYZABC";

@@ -238,6 +238,28 @@ TEST_CASE("iso: a number written only in a parameter counts for the program's re
   CHECK(unassigned.linear_decimals == 2);
 }
 
+TEST_CASE("iso: an incremental rotary word after G28 counts from the source machine's reference angle") {
+  // G28 sends B to its reference point; the machine file's home_deg says which angle that is.
+  const std::string text = "G21 G90\nG0 X0. Y0. Z50. B10. C20.\nG91 G28 B0.\nG0 B-37.576\nG28 C0.\nG0 C5.\n";
+  const read_result unknown = iso::read(text, "h.nc");
+  REQUIRE(unknown.errors.size() == 2);
+  CHECK(unknown.errors[0].where == source_location{"h.nc", 4, 4});
+  CHECK(unknown.errors[0].message.starts_with("incremental B (G91 of line 3) from a position the program does not say"));
+  CHECK(unknown.errors[1].where == source_location{"h.nc", 6, 4});
+  read_limits limits;
+  limits.rotary_home_deg = {std::nullopt, -90.0, 0.5};  // A, B, C
+  const read_limits_scope scope(limits);
+  const read_result r = iso::read(text, "h.nc");
+  REQUIRE(r.errors.empty());
+  std::vector<double> b, c;
+  for (const block& k : r.parsed.blocks) {
+    if (k.axes.b_deg && !k.machine_coordinates) b.push_back(*k.axes.b_deg);
+    if (k.axes.c_deg && !k.machine_coordinates) c.push_back(*k.axes.c_deg);
+  }
+  CHECK(b == std::vector<double>{10., -127.576});
+  CHECK(c == std::vector<double>{20., 5.5});
+}
+
 TEST_CASE("iso: M98 and G65 of a program in another file run it when its directory is given") {
   const called_dir dir("iso-calls");
   dir.write("o1000.NC", "%\nO1000 (POCKET)\nG1 X#100 F100.\n#100 = #100 + 1.\nM99\n%\n");  // another case
