@@ -137,7 +137,10 @@ class own_words {
   }
 
   /// Follows tools, G43 and tracking; refuses a tracked move without the loaded tool's length,
-  /// and a dwell with other words.
+  /// and a dwell with other words. Before the first G43 the control tracks with the length
+  /// offset it had (tool length 0 on a control just started, else the last G43's, even that of
+  /// an earlier program: M6 and M2/M30 leave it alone; rs274 shows no length call at either),
+  /// which the program does not say: such a move is refused, not read with length 0.
   template <class Error>
   void check(const block& b, Error&& error) {
     if (b.state.dwell_s && !b.only_dwell())
@@ -153,8 +156,10 @@ class own_words {
     if (b.tcp) tracking_ = *b.tcp, refused_ = false;
     if (!tracking_ || length_of_loaded_ || !is_motion(b) || refused_) return;
     refused_ = true;  // once until G43, M6 or a switch
-    error(b.where.column, "a move under TCP kinematics without G43 for the loaded tool: the point programmed is not "
-                          "the tool tip (G43, or G43 H n with the loaded tool n, after each M6)");
+    error(b.where.column, "a move under TCP kinematics without G43 for the loaded tool: the length offset in effect "
+                          "is whatever was set before (LinuxCNC keeps it across M6 and from one program to the "
+                          "next), so the point programmed is not known to be the tool tip; put G43, or G43 H n "
+                          "with the loaded tool n, after each M6 and before the first move");
   }
 
  private:
