@@ -505,9 +505,9 @@ class word_reader {
       return error(w.column, "TURN=" + std::string(w.text) + ": the number of extra turns is a whole number 0 … 999");
     out_.turns = std::pair{static_cast<long long>(*v), w.column};
     if (*v > 0)
-      error(w.column, "TURN=" + std::string(w.text) + ": a helix with " + std::string(w.text) +
-                          " more full turns is not supported (an arc turns once at most in kin5, and ISO/FANUC "
-                          "writes no such helix); split the helix into G2/G3 blocks of at most one turn each");
+      error(w.column, "TURN=" + std::string(w.text) + ": extra full turns of a helix are not supported (an arc turns "
+                          "once at most in kin5, and ISO/FANUC writes no such helix); split the helix into G2/G3 "
+                          "blocks of at most one turn each");
   }
 
   void keyword_assignment(const word& w) {
