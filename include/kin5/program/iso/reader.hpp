@@ -732,7 +732,7 @@ class basic_reader {
       const bool reference = b.machine_reference == machine_position::reference_point;
       for (int i = 0; i < 6; ++i) {  // G28 / G30 without axis words send every axis home
         if (!axis_slot(b, i) && !(l.homing && !any)) continue;
-        state_.last[i].reset(), state_.lost_line[i] = line_;
+        state_.last[i].reset(), state_.lost_line[i] = line_, state_.lost_at_reference[i] = reference;
         if (i < 3 || !reference) continue;
         if (const auto home = current_read_limits().rotary_home_deg[static_cast<std::size_t>(i - 3)])
           state_.last[i] = axis_position{*home, shortest_decimals(*home)}, state_.lost_line[i] = 0;
@@ -765,11 +765,16 @@ class basic_reader {
         const std::string since = state_.lost_line[i] ? "since the machine-coordinate or home move of line " +
                                                             std::to_string(state_.lost_line[i])
                                                       : "since the start of the program";
+        const std::string home = i >= 3 && state_.lost_line[i] && state_.lost_at_reference[i]
+                                     ? std::string(", or give home_deg in ") + letters[i] +
+                                           "'s [[rotary]] table of the source machine file, the angle G28 leaves it at "
+                                           "(--from-file; docs/machine-files.md)"
+                                     : "";
         error(w ? w->column : b.where.column,
               "incremental " + std::string(1, letters[i]) + " (G91 of line " + std::to_string(state_.incremental_line) +
                   ") from a position the program does not say: no absolute " + letters[i] + " " + since +
                   ", so the move would start from wherever the machine stands; program an absolute " + letters[i] +
-                  " (G90) before it");
+                  " (G90) before it" + home);
       }
     }
     if (b.moves() || (b.motion && is_arc(*b.motion))) {

@@ -58,6 +58,7 @@ struct reader_state {
   bool written_incremental = false;  // the mode the written program is in: G91 said by a block kept as G91
   std::optional<axis_position> last[6];  // X Y Z A B C: the last programmed position, in the program's unit
   std::size_t lost_line[6] = {};     // the machine-coordinate or home move that made it unknown (0: none)
+  bool lost_at_reference[6] = {};    // that move was G28: the source's home_deg would give a rotary axis
   bool inch = false;          // G20 active: lengths are inches
   bool inverse_time = false;  // G93 active: F is not a length
   bool moved = false;         // a block has moved: the unit is fixed

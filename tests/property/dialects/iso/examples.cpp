@@ -245,6 +245,8 @@ TEST_CASE("iso: an incremental rotary word after G28 counts from the source mach
   REQUIRE(unknown.errors.size() == 2);
   CHECK(unknown.errors[0].where == source_location{"h.nc", 4, 4});
   CHECK(unknown.errors[0].message.starts_with("incremental B (G91 of line 3) from a position the program does not say"));
+  CHECK(unknown.errors[0].message.ends_with(", or give home_deg in B's [[rotary]] table of the source machine file, the "
+                                            "angle G28 leaves it at (--from-file; docs/machine-files.md)"));
   CHECK(unknown.errors[1].where == source_location{"h.nc", 6, 4});
   read_limits limits;
   limits.rotary_home_deg = {std::nullopt, -90.0, 0.5};  // A, B, C
