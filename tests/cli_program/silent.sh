@@ -215,7 +215,7 @@ case "$name" in
   compensation-g42)
     printf '%s\n' 'N10 TRAORI' 'N20 G1 G42 X0 Y0 Z50 A-30 B10 F500' 'N30 TRAFOOF' 'N40 M30' >g42.mpf
     run 2 translate --from sajo-12000p --to dmu-80p --to-dialect iso -o g42.nc g42.mpf
-    error_at 'g42.mpf:2:8: error: G42: cutter radius compensation with no D since the tool change'
+    error_at 'g42.mpf:2:8: error: G42: cutter radius compensation with no D and no tool change before it'
     nothing g42.nc
     ;;
   compensation-g41-iso)

@@ -3,6 +3,7 @@
 // coordinates, passthrough, comments and M functions kept in order.
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -74,6 +75,41 @@ TEST_CASE("motion without TCP is an error naming the line, with the rotary messa
         "rotary motion without tool-tip tracking (TCP): its tool tip depends on where the part sits and on the tool "
         "length; give the source's --source-work-offset and --source-tool-length to read it as machine coordinates");
   CHECK(t.blocks_written == t.blocks_read - 2);  // accounted for: written or an error
+}
+
+TEST_CASE("motion without TCP at the zero pose, length on, is the tracked motion; elsewhere it is refused") {
+  // Every rotary axis at 0 turns nothing: the point programmed is the tip with tracking or
+  // without, so the untracked section translates as the tracked one does (the target tracks it).
+  const std::string head = "T1 D1 M6\nTRAORI\nG1 X0 Y0 Z50 A0 B0 F500\n";
+  const auto untracked = siemens::read(head + "TRAFOOF\nG1 X10 Y5 Z40\nG2 X20 Y5 CR=5\nTRAORI\nG1 X21\nM30\n", "z.mpf");
+  const auto tracked = siemens::read(head + "G1 X10 Y5 Z40\nG2 X20 Y5 CR=5\nG1 X21\nM30\n", "t.mpf");
+  REQUIRE((untracked.ok() && tracked.ok()));
+  const auto u = kin5::translate<sajo_12000p, dmu_80p>(untracked.parsed, {});
+  const auto t = kin5::translate<sajo_12000p, dmu_80p>(tracked.parsed, {});
+  REQUIRE(u.errors.empty());
+  REQUIRE(t.errors.empty());
+  std::vector<kin5::program::block> um, tm;
+  for (const auto& b : u.output.blocks)
+    if (b.moves()) um.push_back(b);
+  for (const auto& b : t.output.blocks)
+    if (b.moves()) tm.push_back(b);
+  REQUIRE(um.size() == tm.size());
+  for (std::size_t i = 0; i < um.size(); ++i) {
+    CHECK(um[i].axes == tm[i].axes);
+    CHECK(um[i].arc == tm[i].arc);
+  }
+  // Off the zero pose, or without the tool length, the tip depends on where the part sits; a
+  // block that turns no rotary axis is not called rotary motion.
+  const auto off = siemens::read(head + "G1 A-10\nTRAFOOF\nG1 X10 Y5 Z40\nM30\n", "o.mpf");
+  const auto gauge = siemens::read(head + "TRAFOOF\nD0\nG1 X10 Y5 Z40\nM30\n", "g.mpf");
+  REQUIRE((off.ok() && gauge.ok()));
+  const auto o = kin5::translate<sajo_12000p, dmu_80p>(off.parsed, {});
+  const auto g = kin5::translate<sajo_12000p, dmu_80p>(gauge.parsed, {});
+  REQUIRE(o.errors.size() == 1);
+  CHECK(o.errors[0].where.line == 6);
+  CHECK(o.errors[0].message.starts_with("motion without tool-tip tracking (TCP): its tool tip depends on"));
+  REQUIRE(!g.errors.empty());
+  CHECK(g.errors[0].where.line == 6);
 }
 
 TEST_CASE("machine-coordinate moves are refused at their block, the rest is still checked") {

@@ -32,6 +32,16 @@ constexpr int decimals_written(std::string_view digits) {
   return n;
 }
 
+/// How many decimals `value` has in its shortest spelling (`-37.5`: 1; 12 at most).
+inline int shortest_decimals(double value) {
+  for (int d = 0; d < 12; ++d) {
+    double scale = 1;
+    for (int k = 0; k < d; ++k) scale *= 10;
+    if (std::abs(value) * scale < 4503599627370496.0 && std::round(value * scale) / scale == value) return d;
+  }
+  return 12;
+}
+
 /// `from` moved by `distance`, written with `decimals`: the sum rounded to the finer of the two
 /// decimals (at most 12), so that it is the double nearest the decimal sum; a sum too large for
 /// that many decimals in a double's 53 bits is the plain sum.

@@ -7,10 +7,12 @@
 /// `--max-line-bytes`, `--max-block-words`, `--max-executed-lines` and `--max-memory-bytes` (what
 /// a translation keeps in memory) raise or lower them
 /// (docs/reliability.md gives the defaults' reasons). They also carry where a program's calls of
-/// other files look for them (`include_dirs`, `--include-dir`).
+/// other files look for them (`include_dirs`, `--include-dir`) and what the source machine says
+/// of the positions its home moves leave (`rotary_home_deg`).
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -42,6 +44,11 @@ struct read_limits {
   /// Directories a call of another file searches, in order (called_files.hpp; the tool's
   /// `--include-dir`). None: such a call is refused, naming the file it needs.
   std::vector<std::string> include_dirs{};
+  /// A, B, C: the commanded angle at each rotary axis' reference point, from the source
+  /// machine's file (`home_deg`; a translation sets it from the machine it reads for). A move to
+  /// the reference point (G28) leaves the axis there, so an incremental word after it reaches a
+  /// known angle; empty: not known, and such a word is refused.
+  std::array<std::optional<double>, 3> rotary_home_deg{};
 };
 
 namespace detail {

@@ -363,9 +363,10 @@ class nc_target {
   }
 
   /// Tool-tip tracking of motion block `o` (step `s`) in the output: on for a block written as TCP
-  /// that the source did not track (`post`'s CL data, motion read as machine coordinates).
+  /// that the source did not track (`post`'s CL data, motion read as machine coordinates or at
+  /// the source's zero pose).
   void switch_tcp(const source_step& s, program::block& o) {
-    if (switch_tcp_on_ || s.untracked) {
+    if (switch_tcp_on_ || s.untracked || s.zero_pose) {
       if (output_tcp_) o.tcp.reset();
       else o.tcp = true, tcp_switched_on_ = true;
       output_tcp_ = true;

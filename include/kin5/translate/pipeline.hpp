@@ -261,6 +261,18 @@ inline std::string one_of(const std::vector<std::string_view>& names) {
   return out;
 }
 
+/// `c` with the reference angles of `from`'s rotary axes (`home_deg`) for its reader
+/// (`read_limits::rotary_home_deg`): the positions a home move leaves them at.
+inline common_options with_source_homes(common_options c, const machine_model& from) {
+  for (std::size_t i = 0; i < from.rotary_count; ++i) {
+    const rotary_axis& a = from.rotary(i);
+    const auto letter = static_cast<char>(a.letter);
+    if (a.home_deg && letter >= 'A' && letter <= 'C')
+      c.limits.rotary_home_deg[static_cast<std::size_t>(letter - 'A')] = a.home_deg->value;
+  }
+  return c;
+}
+
 /// The two passes of a translation from machine `from` to machine `to` (see
 /// `block_translator`), for a program read in `source_language` from `file`. The setup is
 /// `options.setup`, else `default_setup(from.geometry.id, to.geometry.id)`.
@@ -277,7 +289,7 @@ inline std::unique_ptr<block_translator> make_translator(const machine_model& fr
       file, out, detail,
       translate_refusal(source_language, options.feed, out) ? translate_refusal(source_language, options.feed, out)
                                                             : output_mode_refusal(options.common, out),
-      source_context{source_language, {}, nullptr, "--from"}, options.common);
+      source_context{source_language, {}, nullptr, "--from"}, with_source_homes(options.common, from));
 }
 
 /// The two passes of `reverse` for a program of machine `m` (see `block_translator`).
@@ -294,7 +306,7 @@ inline std::unique_ptr<block_translator> make_reverse(const machine_model& m, pr
           ? std::optional<std::string>("reverse writes APT CL data, the tool tip and axis: it has no machine "
                                        "coordinates (--output-mode machine is for translate and post)")
           : std::nullopt,
-      source_context{source_language, {}, nullptr, "--machine"}, common);
+      source_context{source_language, {}, nullptr, "--machine"}, with_source_homes(common, m));
 }
 
 /// The two passes of `post` for machine `m` (see `block_translator`).

@@ -99,6 +99,9 @@ struct source_step {
   arc_path arc_source;                        ///< a circular motion's arc, source frame
   /// Read as machine coordinates (TCP off): tip and axis by (G9); the rotary axes may move.
   bool untracked = false;
+  /// TCP off, every rotary axis at 0 (the source's zero pose, `at_zero_pose`): the point
+  /// programmed is the tip in the part's frame, as with tracking; the target tracks it.
+  bool zero_pose = false;
   /// An untracked block whose rotary axes move, cut into pieces (untracked.hpp): the tip and
   /// axis at the end of every piece but the last (whose end is the block's own), in order.
   std::vector<tool_pose> pieces;
@@ -486,9 +489,9 @@ class source_walker {
   /// Motion kind, tool tip and start point of motion block `b`; false (an error) when
   /// tool-tip tracking is off or the tip is not known.
   bool tool_tip(const program::block& b, const program::modal_state& before, source_step& s, const report& to) {
-    if (Source::needs_tcp && !modal_.tcp && !untracked_now()) {
-      to.fail(at(b, std::string(b.axes.has_rotary() || modal_.rotary_moved ? rotary_tcp_off_message
-                                                                             : tcp_off_message)));
+    const bool zero_pose = Source::needs_tcp && !modal_.tcp && !untracked_now() && at_zero_pose(before);
+    if (Source::needs_tcp && !modal_.tcp && !untracked_now() && !zero_pose) {
+      to.fail(at(b, std::string(b.axes.has_rotary() ? rotary_tcp_off_message : tcp_off_message)));
       return false;
     }
     if (untracked_now() && modal_.length_compensation == false) {  // G49, Siemens D0
@@ -524,8 +527,31 @@ class source_walker {
     }
     s.tip_source_mm = {*modal_.x_mm, *modal_.y_mm, *modal_.z_mm};
     if (before.x_mm && before.y_mm && before.z_mm) s.start_source_mm = vec3{*before.x_mm, *before.y_mm, *before.z_mm};
-    s.untracked = Source::needs_tcp && !modal_.tcp;
+    s.untracked = Source::needs_tcp && !modal_.tcp && !zero_pose;
+    s.zero_pose = zero_pose;
     return true;
+  }
+
+  /// Whether motion without tool-tip tracking from modal state `before` to `modal_` is at the
+  /// source machine's zero pose: every rotary axis at a commanded angle of 0 (or whole turns)
+  /// before and after, and the tool length on (G43 H, D1, …). There the rotary axes turn
+  /// nothing: the part's frame is the machine's, shifted by the work offset the tracking would
+  /// use too, and the length applies along the tool axis, so the point programmed is the tool tip
+  /// in the part's frame, with tracking or without. Anywhere else the tip depends on where the part
+  /// sits on the rotary axes (the message says which options give that).
+  bool at_zero_pose(const program::modal_state& before) const {
+    if constexpr (Source::needs_tcp) {
+      if (modal_.length_compensation != true) return false;
+      const auto zero = [](const std::optional<double>& deg) {
+        return deg && std::fmod(std::abs(*deg), 360.0) == 0.0;
+      };
+      for (std::size_t i = 0; i < source_.from.rotary_count; ++i) {
+        const char letter = to_char(source_.from.rotary(i).letter);
+        if (!zero(before.value(letter)) || !zero(modal_.value(letter))) return false;
+      }
+      return true;
+    }
+    return false;
   }
 
   /// Cutter radius compensation at block `b` (`on`: in effect after it), where the target

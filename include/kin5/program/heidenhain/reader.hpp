@@ -189,7 +189,11 @@ class block_reader : public word_checks {
   }
 
   /// `BEGIN PGM name MM|INCH`, `END PGM name MM|INCH`: an INCH program's lengths are inches and
-  /// its F 1/10 inch/min, read in millimetres (motion.hpp, `reader_state`).
+  /// its F 1/10 inch/min, read in millimetres (motion.hpp, `reader_state`). The name is the
+  /// program's (TNC 620 User's Manual §4.2: the first block says it, the last says it again) and
+  /// moves nothing: an END PGM name other than BEGIN PGM's is read with a warning, and a
+  /// Heidenhain writer writes both with the first (writer.hpp). The unit must agree: it decides
+  /// what every length means.
   void program_line(std::size_t i, std::size_t after, bool begin) {
     const std::size_t p = scan_.skip_spaces(after);
     const std::size_t e = scan_.run_end(p);
@@ -215,8 +219,9 @@ class block_reader : public word_checks {
     } else if (!name.empty()) {
       b_.program_end = name;
       if (state_.begin_name && *state_.begin_name != name)
-        error(p, "END PGM name " + name + " differs from BEGIN PGM's " + *state_.begin_name +
-                     ": the control pairs them by name; give both the same");
+        warning(p, "END PGM name " + name + " differs from BEGIN PGM's " + *state_.begin_name +
+                       ": a program's name moves nothing; a Heidenhain program is written with " +
+                       *state_.begin_name + " in both");
     }
     only_comment_after(ue);
   }

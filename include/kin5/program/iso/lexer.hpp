@@ -2,8 +2,8 @@
 /// The first stage of the ISO / Fanuc reader: one line split into address words (`X-450.`,
 /// `G43.4`, `x 10`: a letter, optional blanks, a number, or a value the interpreter computes:
 /// a parameter `X#1`, `X-#1`, `X#<feed>` or a bracketed expression `X[#1*2]`, `Z-[#3]`, read
-/// by the dialect's `value_reader`, whose value the reader supplies) and comments (`( … )` and
-/// `;` to the end of the line). The first problem stops the line: an expression that cannot be
+/// by the dialect's `value_reader`, whose value the reader supplies) and comments (`( … )`, with
+/// comments nested in it where the dialect has them, and `;` to the end of the line). The first problem stops the line: an expression that cannot be
 /// read, a number without a letter, a malformed number, a stray byte. What a word means is the
 /// reader's; a parameter assignment (`#1 = 5000`) is a statement (statements.hpp).
 #pragma once
@@ -52,7 +52,40 @@ struct lex_problem {
   std::string message;
 };
 
+/// What a `(` inside a `( … )` comment is. FANUC's and Haas's controls skip everything from the
+/// control-out `(` to the control-in `)` that closes it, and CAM posts write comments inside
+/// comments (NX's tool lists, `(T1 (D10 MILL))`): `nested`, the comment ends at the `)` that
+/// closes the first `(`. LinuxCNC ends a comment at its first `)`: `flat` (its interpreter
+/// refuses a `(` inside a comment; docs/dialects/linuxcnc.md).
+enum class comment_nesting { nested, flat };
+
 namespace detail {
+
+/// The `)` that closes the comment opening at `s[open]`, or `end` when none does before `end`.
+inline std::size_t comment_close(std::string_view s, std::size_t open, std::size_t end, comment_nesting nesting) {
+  std::size_t depth = 1;
+  for (std::size_t k = open + 1; k < end; ++k) {
+    if (s[k] == '(' && nesting == comment_nesting::nested) ++depth;
+    else if (s[k] == ')' && --depth == 0) return k;
+  }
+  return end;
+}
+
+/// Where the comment from `s[open]` to its `)` at `close` (nested) reads otherwise on a control
+/// that ends it at its first `)`: the first byte after that `)` that such a control would read
+/// as code (neither a blank, nor a parenthesis, nor inside a comment opened after it); `close`
+/// when both readings agree (`(T1 (D10 MILL)  )`: only blanks and a `)` left over).
+inline std::size_t flat_reading_differs(std::string_view s, std::size_t open, std::size_t close) {
+  std::size_t k = open + 1;
+  while (k < close && s[k] != ')') ++k;
+  bool inside = false;  // in a comment the flat reading opened after the first `)`
+  for (++k; k < close; ++k) {
+    if (s[k] == '(') inside = true;
+    else if (s[k] == ')') inside = false;
+    else if (!inside && !is_space(s[k])) return k;
+  }
+  return close;
+}
 
 /// Adds comment text `c` (trimmed) to `comment`, a blank between two non-empty pieces.
 inline void add_comment(std::optional<std::string>& comment, std::string_view c) {
@@ -127,17 +160,23 @@ inline lex_problem stray(std::string_view s, std::size_t i, bool first_word) {
 }  // namespace detail
 
 /// Splits `s` from `i` to `end` into `words`, comments into `comment`; the first problem stops it.
-/// Computed word values are read with `computed` (none: refused).
+/// Computed word values are read with `computed` (none: refused); a `(` inside a comment opens a
+/// nested one when `nesting` says so.
 inline std::optional<lex_problem> lex_line(std::string_view s, std::size_t i, std::size_t end, std::vector<word>& words,
-                                           std::optional<std::string>& comment, const computed_values& computed = {}) {
+                                           std::optional<std::string>& comment, const computed_values& computed = {},
+                                           comment_nesting nesting = comment_nesting::nested) {
   std::optional<lex_problem> problem;
   while (i < end && !problem) {
     const char c = s[i];
     if (is_space(c)) {
       ++i;
     } else if (c == '(') {
-      const std::size_t close = s.find(')', i);
-      if (close == std::string_view::npos || close >= end) return lex_problem{i + 1, "comment is not closed"};
+      const std::size_t close = detail::comment_close(s, i, end, nesting);
+      if (close >= end) return lex_problem{i + 1, "comment is not closed"};
+      if (const std::size_t k = detail::flat_reading_differs(s, i, close); k < close)
+        return lex_problem{k + 1, "text after a comment inside a comment: a control that nests comments skips it, one "
+                                  "that ends a comment at its first ')' reads it as code; remove the inner parentheses "
+                                  "or end the comment before the text"};
       detail::add_comment(comment, s.substr(i + 1, close - i - 1));
       i = close + 1;
     } else if (c == ';') {

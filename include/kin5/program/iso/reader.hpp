@@ -187,7 +187,8 @@ class basic_reader {
     substituted_.clear();
     auto problem = own_.line(s, first, end);
     if (!problem)
-      problem = lex_line(s, first, end, words_, b.comment, computed_values{&Own::read_value, line.number, &values_});
+      problem = lex_line(s, first, end, words_, b.comment, computed_values{&Own::read_value, line.number, &values_},
+                         Own::comments);
     if (!problem) problem = substitute();
     if (problem) error(problem->column, problem->message);
     const auto report = [this](std::size_t column, std::string message) { error(column, std::move(message)); };
@@ -721,7 +722,11 @@ class basic_reader {
   /// the control reads them in: `state.distance` says G91 there, and G90 on the next block that
   /// moves; elsewhere it says what a block without motion writes (G90, G91) or G90 where needed.
   /// A distance of 0 from an unknown position (`G91 G0 B0.` after `G28 B0.`) moves nothing: the
-  /// word is left out, and the position stays unknown.
+  /// word is left out, and the position stays unknown. A rotary axis sent to its reference point
+  /// (G28; not LinuxCNC's, whose G28 goes to stored positions) is at the source machine's
+  /// reference angle when the reading knows it (`read_limits::rotary_home_deg`, the machine
+  /// file's `home_deg`): a rotary axis' commanded angle is its machine position, so the next
+  /// incremental word counts from there.
   void absolute_positions(block& b, const line_words& l) {
     const auto said = state_.incremental ? distance_mode::incremental : distance_mode::absolute;
     if (b.machine_coordinates) {
@@ -730,8 +735,14 @@ class basic_reader {
       bool any = false;
       for (int i = 0; i < 6; ++i)
         if (axis_slot(b, i)) any = true;
-      for (int i = 0; i < 6; ++i)  // G28 / G30 without axis words send every axis home
-        if (axis_slot(b, i) || (l.homing && !any)) state_.last[i].reset(), state_.lost_line[i] = line_;
+      const bool reference = b.machine_reference == machine_position::reference_point;
+      for (int i = 0; i < 6; ++i) {  // G28 / G30 without axis words send every axis home
+        if (!axis_slot(b, i) && !(l.homing && !any)) continue;
+        state_.last[i].reset(), state_.lost_line[i] = line_, state_.lost_at_reference[i] = reference;
+        if (i < 3 || !reference) continue;
+        if (const auto home = current_read_limits().rotary_home_deg[static_cast<std::size_t>(i - 3)])
+          state_.last[i] = axis_position{*home, shortest_decimals(*home)}, state_.lost_line[i] = 0;
+      }
       return;
     }
     static constexpr char letters[] = "XYZABC";
@@ -760,11 +771,16 @@ class basic_reader {
         const std::string since = state_.lost_line[i] ? "since the machine-coordinate or home move of line " +
                                                             std::to_string(state_.lost_line[i])
                                                       : "since the start of the program";
+        const std::string home = i >= 3 && state_.lost_line[i] && state_.lost_at_reference[i]
+                                     ? std::string(", or give home_deg in ") + letters[i] +
+                                           "'s [[rotary]] table of the source machine file, the angle G28 leaves it at "
+                                           "(--from-file; docs/machine-files.md)"
+                                     : "";
         error(w ? w->column : b.where.column,
               "incremental " + std::string(1, letters[i]) + " (G91 of line " + std::to_string(state_.incremental_line) +
                   ") from a position the program does not say: no absolute " + letters[i] + " " + since +
                   ", so the move would start from wherever the machine stands; program an absolute " + letters[i] +
-                  " (G90) before it");
+                  " (G90) before it" + home);
       }
     }
     if (b.moves() || (b.motion && is_arc(*b.motion))) {

@@ -58,6 +58,7 @@ struct reader_state {
   bool written_incremental = false;  // the mode the written program is in: G91 said by a block kept as G91
   std::optional<axis_position> last[6];  // X Y Z A B C: the last programmed position, in the program's unit
   std::size_t lost_line[6] = {};     // the machine-coordinate or home move that made it unknown (0: none)
+  bool lost_at_reference[6] = {};    // that move was G28: the source's home_deg would give a rotary axis
   bool inch = false;          // G20 active: lengths are inches
   bool inverse_time = false;  // G93 active: F is not a length
   bool moved = false;         // a block has moved: the unit is fixed
@@ -84,6 +85,8 @@ struct no_own_words {
   /// Whether G28 / G30 go to positions the control keeps in parameters (LinuxCNC #5161–#5166,
   /// #5181–#5186) rather than to the machine's reference points (Fanuc, Haas).
   static constexpr bool stored_homes = false;
+  /// A `(` inside a comment opens a nested one (lexer.hpp, `comment_nesting`).
+  static constexpr comment_nesting comments = comment_nesting::nested;
   static interp::parameter_rules parameter_rules() { return macro_parameter_rules(); }
   static parsed_expression read_value(std::string_view text, std::size_t line, std::size_t column) {
     return iso::read_value(text, line, column);

@@ -47,12 +47,14 @@ inline std::size_t code_end(std::string_view s, std::size_t end) {
   return semi == std::string_view::npos ? end : semi;
 }
 
-/// Whether the line from `k` to `end` holds nothing but blanks and comments; where the first
-/// thing that is not one starts, or the problem a comment has, otherwise.
-inline std::optional<lex_problem> only_comments(std::string_view s, std::size_t k, std::size_t end) {
+/// Whether the line from `k` to `end` holds nothing but blanks and comments (nested as
+/// `nesting` says); where the first thing that is not one starts, or the problem a comment has,
+/// otherwise.
+inline std::optional<lex_problem> only_comments(std::string_view s, std::size_t k, std::size_t end,
+                                                comment_nesting nesting = comment_nesting::nested) {
   std::vector<word> words;
   std::optional<std::string> comment;
-  if (auto p = lex_line(s, k, end, words, comment)) return p;
+  if (auto p = lex_line(s, k, end, words, comment, {}, nesting)) return p;
   if (!words.empty()) return lex_problem{words.front().column, ""};
   return std::nullopt;
 }
@@ -348,8 +350,8 @@ class basic_macro_statements {
     int found = 0;  // 98, 99, 97 (M) or 65 (G)
     for (std::size_t k = i; k < code; ++k) {
       if (s[k] == '(') {
-        const std::size_t close = s.find(')', k);
-        if (close == std::string_view::npos) break;
+        const std::size_t close = detail::comment_close(s, k, code, comment_nesting::nested);
+        if (close >= code) break;
         k = close;
         continue;
       }

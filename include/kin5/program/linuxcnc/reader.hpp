@@ -95,6 +95,8 @@ class own_words {
   /// G28 / G30 go to the positions in parameters #5161–#5166 / #5181–#5186 (User Manual, "G28,
   /// G28.1", "G30, G30.1"), which the control keeps, not the program.
   static constexpr bool stored_homes = true;
+  /// A comment ends at its first `)` (User Manual, "G-code Overview", "Comments"; lexer.hpp).
+  static constexpr iso::comment_nesting comments = iso::comment_nesting::flat;
 
   using syntax = statements;
   /// #1–#30 local to a call, #31–#5000 the program's, named ones (parameter_rules.hpp).
@@ -135,7 +137,10 @@ class own_words {
   }
 
   /// Follows tools, G43 and tracking; refuses a tracked move without the loaded tool's length,
-  /// and a dwell with other words.
+  /// and a dwell with other words. Before the first G43 the control tracks with the length
+  /// offset it had (tool length 0 on a control just started, else the last G43's, even that of
+  /// an earlier program: M6 and M2/M30 leave it alone; rs274 shows no length call at either),
+  /// which the program does not say: such a move is refused, not read with length 0.
   template <class Error>
   void check(const block& b, Error&& error) {
     if (b.state.dwell_s && !b.only_dwell())
@@ -151,8 +156,10 @@ class own_words {
     if (b.tcp) tracking_ = *b.tcp, refused_ = false;
     if (!tracking_ || length_of_loaded_ || !is_motion(b) || refused_) return;
     refused_ = true;  // once until G43, M6 or a switch
-    error(b.where.column, "a move under TCP kinematics without G43 for the loaded tool: the point programmed is not "
-                          "the tool tip (G43, or G43 H n with the loaded tool n, after each M6)");
+    error(b.where.column, "a move under TCP kinematics without G43 for the loaded tool: the length offset in effect "
+                          "is whatever was set before (LinuxCNC keeps it across M6 and from one program to the "
+                          "next), so the point programmed is not known to be the tool tip; put G43, or G43 H n "
+                          "with the loaded tool n, after each M6 and before the first move");
   }
 
  private:

@@ -211,7 +211,7 @@ class statements {
                                  "break, continue)");
     }
     if (!after) return out;
-    if (const auto rest = iso::detail::only_comments(s, *after, end))
+    if (const auto rest = iso::detail::only_comments(s, *after, end, iso::comment_nesting::flat))
       return iso::detail::failed(std::move(out), line.number, rest->column,
                                  rest->message.empty() ? "a word after '" + shown + "': an o-word takes its line alone"
                                                        : rest->message);
@@ -232,7 +232,7 @@ class statements {
       }
       if (i >= code || s[i] != '#') break;
     }
-    if (const auto rest = iso::detail::only_comments(s, i, end))
+    if (const auto rest = iso::detail::only_comments(s, i, end, iso::comment_nesting::flat))
       return iso::detail::failed(std::move(out), line, rest->column,
                                  rest->message.empty() ? "a word after the parameter assignment on one line is not "
                                                          "supported (write the setting on a line of its own)"

@@ -320,7 +320,7 @@ class line_lexer {
     if (peek(k) != '=') return;
     i_ = k + 1;
     w.assigned = true;
-    if (w.name == "CR") assigned_value(w);
+    if (w.name == "CR" || w.name == "TURN") assigned_value(w);  // a number's keywords
     else assigned_run(w);
   }
 

@@ -25,7 +25,7 @@ struct modal_state {
   bool g70 = false;           ///< G70 in effect: lengths in inches, F in the control's basic system
   bool inverse_time = false;  ///< G93 in effect: F is 1/min, not a length
   std::optional<double> inverse_feed;  ///< the F given since G93 (the reader's): later feed moves take it
-  std::optional<long long> edge;  ///< D n said since the last tool change (the reader's)
+  std::optional<long long> edge;  ///< the active cutting edge: D n, or the one a tool change activates (the reader's)
   bool tool_loaded = false;       ///< a tool change has been read (the reader's)
   bool radius_on = false;         ///< G41/G42 in effect (the reader's)
   bool startup_pending = false;   ///< G41/G42 said without motion: the next move starts it up

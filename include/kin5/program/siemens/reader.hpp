@@ -90,8 +90,9 @@ inline void arc(line_parse& p, const modal_state& state, std::vector<diagnostic>
     } else if (p.radius_mm) {
       b.arc = arc_words{state.plane, std::nullopt, p.radius_mm};
     } else if (const auto start = state.position()) {
-      const vec3 offset{o[0].value_or(0.0), o[1].value_or(0.0), o[2].value_or(0.0)};
-      b.arc = arc_words{state.plane, *start + offset, std::nullopt};
+      // I J K from the start point, or the centre's coordinate itself (`I=AC(…)`)
+      const auto at = [&](std::size_t i, double from) { return p.centre_absolute[i] ? *o[i] : from + o[i].value_or(0.0); };
+      b.arc = arc_words{state.plane, vec3{at(0, start->x), at(1, start->y), at(2, start->z)}, std::nullopt};
     } else {
       error(p.arc_column, "arc start point is not known");
     }
@@ -100,17 +101,27 @@ inline void arc(line_parse& p, const modal_state& state, std::vector<diagnostic>
   }
 }
 
+/// The cutting edge a tool change activates when its block says no D: machine data 20270
+/// `$MC_CUTTING_EDGE_DEFAULT`, whose default is 1 (SINUMERIK Function Manual W1, "Tool offset":
+/// after a tool change edge D1 is active unless the machine data say otherwise). kin5 reads a
+/// program for a control with the default, as it reads unit-less programs as metric.
+inline constexpr long long default_cutting_edge = 1;
+
 /// G41 / G42 compensate with the active cutting edge's radius, which kin5 translates only for
-/// the tool's first edge: `D1` said since the last tool change (SINUMERIK 840D sl Fundamentals
-/// 05/2017 ch. 11 "Tool radius compensation"; ch. 6: D selects the edge). Start-up and cancel
-/// (G40) are refused in a circular move, a D other than D1 while compensation is on too.
+/// the tool's first edge: `D1`, said or the default after the last tool change
+/// (`default_cutting_edge`; SINUMERIK 840D sl Fundamentals 05/2017 ch. 11 "Tool radius
+/// compensation"; ch. 6: D selects the edge). Start-up and cancel (G40) are refused in a
+/// circular move, a D other than D1 while compensation is on too.
 inline void compensation(line_parse& p, modal_state& state, std::optional<motion_kind> before,
                          std::vector<diagnostic>& errors) {
   block& b = p.b;
   const auto error = [&](std::size_t column, std::string m) {
     errors.push_back({{b.where.file, b.where.line, column + 1}, std::move(m)});
   };
-  if (changes_tool(b)) state.edge.reset(), state.tool_loaded = true;
+  // A D other than D1 before the change may be the one the change activates (a D written with
+  // T, before M6): it stays, and G41/G42 under it are refused as for any other edge.
+  if (changes_tool(b) && (!state.edge || *state.edge == 1)) state.edge = default_cutting_edge;
+  if (changes_tool(b)) state.tool_loaded = true;
   if (p.edge) state.edge = *p.edge;
   // D0 switches the tool length off; D n on, with edge n of the tool loaded (before any tool
   // change there is none: the D is a kept word only). The D stays a kept word, for the Siemens
@@ -135,7 +146,7 @@ inline void compensation(line_parse& p, modal_state& state, std::optional<motion
                              " in a circular move (allowed only in G0/G1)");
   if (on && state.edge != 1)
     return error(column, word + ": cutter radius compensation with " +
-                             (state.edge ? "D" + std::to_string(*state.edge) : std::string("no D since the tool change")) +
+                             (state.edge ? "D" + std::to_string(*state.edge) : std::string("no D and no tool change before it")) +
                              ": kin5 translates only the first cutting edge's radius (D1 after the tool change)");
   state.radius_on = on;
   state.startup_pending = on && !b.moves();

@@ -29,6 +29,7 @@ namespace kin5::program::siemens::detail {
 struct line_parse {
   block b;
   std::array<std::optional<double>, 3> centre_offset_mm;  ///< I J K as written
+  std::array<bool, 3> centre_absolute{};                  ///< I J K: `=AC(…)`, a centre coordinate, not an offset
   std::optional<double> radius_mm;                        ///< CR=
   std::array<std::optional<double>, 3> vector;            ///< A3= B3= C3=
   std::optional<arc_plane> plane;
@@ -51,6 +52,7 @@ struct line_parse {
   std::string motion_word, feed_word, tcp_word;     ///< as written, for "conflicting words"
   std::optional<std::pair<std::string, std::size_t>> radius_word;  ///< G40, G41 or G42 (column)
   std::optional<long long> edge;                    ///< D n: the cutting edge selected
+  std::optional<std::pair<long long, std::size_t>> turns;  ///< TURN=n (column): extra full turns of a helix
   bool only_assignments = false;  ///< the line assigns numbers (`_X=1 _Y=2`) and does nothing else
   std::optional<std::pair<bool, std::size_t>> g91;  ///< G91 (true) or G90 (false), and its column
   std::array<std::optional<bool>, 6> axis_incremental;  ///< X Y Z A B C: `=IC(…)` (true), `=AC(…)` (false)
@@ -181,7 +183,8 @@ class word_reader {
   /// `X=IC(5)`, `X=AC(5)`: this axis word incremental or absolute whatever G90/G91 say (SINUMERIK
   /// 840D sl Programming Manual Fundamentals, "Absolute dimensions (G90, AC)", "Incremental
   /// dimensions (G91, IC)"), a plain number inside. I J K are incremental already: `I=IC(…)`
-  /// is `I…`, and an absolute centre `I=AC(…)` is refused.
+  /// is `I…`; `I=AC(…)` is the centre's coordinate itself, in the workpiece frame, whatever
+  /// G90/G91 say (same manual, "Circular interpolation": the centre in absolute dimensions).
   void dimension(const word& w, bool incremental) {
     const std::size_t start = w.column;
     mark_geometry(start);
@@ -193,8 +196,9 @@ class word_reader {
     if (number.empty() || n.error != number_error::none || n.length != number.size())
       return error(start, name + "(…) takes a plain number here: " + expression_in_axis);
     if (is_centre_letter(w.letter)) {
-      if (!incremental) return error(start, name + "(…): an absolute arc centre is not supported (write I J K from the start point)");
-      return centre(w.letter, n.value, start);
+      centre(w.letter, n.value, start);
+      out_.centre_absolute[static_cast<std::size_t>(w.letter - 'I')] = !incremental;
+      return;
     }
     const std::size_t i = axis_index(w.letter);
     numbered(w.letter, n.value, number, start);
@@ -490,7 +494,24 @@ class word_reader {
     return "unknown word '" + name + "'";
   }
 
+  /// `TURN=n`: a helix that makes n full turns more than its G2/G3 says (SINUMERIK 840D sl
+  /// Fundamentals, "Helical interpolation (G2/G3, TURN)"). `TURN=0` is the arc alone; a block's
+  /// arc turns once at most in kin5's model (block.hpp, `arc_words`), and not every dialect has
+  /// a helix of several turns (ISO/FANUC has none), so a positive n is refused by name.
+  void turn(const word& w) {
+    const auto v = assigned(w, "TURN", true);
+    if (!v || duplicate(out_.turns.has_value(), w.column, "TURN")) return;
+    if (*v < 0 || !lexing::is_whole(*v) || *v > 999)
+      return error(w.column, "TURN=" + std::string(w.text) + ": the number of extra turns is a whole number 0 … 999");
+    out_.turns = std::pair{static_cast<long long>(*v), w.column};
+    if (*v > 0)
+      error(w.column, "TURN=" + std::string(w.text) + ": extra full turns of a helix are not supported (an arc turns "
+                          "once at most in kin5, and ISO/FANUC writes no such helix); split the helix into G2/G3 "
+                          "blocks of at most one turn each");
+  }
+
   void keyword_assignment(const word& w) {
+    if (w.name == "TURN") return turn(w);
     if (w.name != "CR") {
       if (w.name == "RPL") {  // ROT's angle: the frame word is the refusal
         out_.frame_arguments = true;

@@ -154,6 +154,21 @@ TEST_CASE("heidenhain: a tool call by name is read, TOOL CALL's axis sets the pl
   CHECK(r.parsed.blocks[2].arc->plane == arc_plane::zx);
 }
 
+TEST_CASE("heidenhain: another END PGM name is read with a warning and written as the BEGIN PGM's") {
+  // CAM posts write the part number in one and the file name in the other; a name moves nothing.
+  const read_result r = heidenhain::read("BEGIN PGM PART-7 MM\nL X+1 Y+2 Z+3 R0 F100\nEND PGM 7 MM\n", "p.h");
+  REQUIRE(r.errors.empty());
+  REQUIRE(r.warnings.size() == 1);
+  CHECK(r.warnings[0].where == source_location{"p.h", 3, 9});
+  CHECK(r.warnings[0].message.starts_with("END PGM name 7 differs from BEGIN PGM's PART-7: "));
+  const std::string written = heidenhain::write(r.parsed);
+  CHECK(written.find("BEGIN PGM PART-7 MM\n") != std::string::npos);
+  CHECK(written.find("END PGM PART-7 MM\n") != std::string::npos);
+  CHECK(written.find("END PGM 7") == std::string::npos);
+  const read_result back = heidenhain::read(written, "w.h");
+  CHECK((back.errors.empty() && back.warnings.empty()));
+}
+
 TEST_CASE("heidenhain: the writer numbers blocks from 0 in Heidenhain style") {
   const read_result r = heidenhain::read(program_text, "b.h");
   const std::string expected =

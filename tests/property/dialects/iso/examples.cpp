@@ -138,6 +138,22 @@ TEST_CASE("iso: comments keep non-UTF-8 bytes, lone CR ends lines, blank lines a
   CHECK(r.parsed.blocks[1].where == source_location{"c.nc", 4, 1});
 }
 
+TEST_CASE("iso: a comment inside a comment ends with the comment around it") {
+  // NX's posts list their tools as comments holding comments; the control skips all of it.
+  // Text between the inner and the outer ')' would be code on a control that ends a comment at
+  // its first ')': refused there.
+  const read_result r =
+      iso::read("(#12= (SLOT_D6 (ROUGH)  ))\nG0 X1. (A (B) ) Y2.\n(OPEN (INNER)\n(A (B) X5.)\n", "n.nc");
+  REQUIRE(r.errors.size() == 2);
+  CHECK(r.errors[0].where == source_location{"n.nc", 3, 1});
+  CHECK(r.errors[0].message == "comment is not closed");
+  CHECK(r.errors[1].where == source_location{"n.nc", 4, 8});
+  CHECK(r.errors[1].message.starts_with("text after a comment inside a comment: "));
+  REQUIRE(r.parsed.blocks.size() >= 2);
+  CHECK(r.parsed.blocks[0].comment == "#12= (SLOT_D6 (ROUGH)  )");
+  CHECK((r.parsed.blocks[1].comment == "A (B)" && r.parsed.blocks[1].axes.y_mm == 2.0));
+}
+
 TEST_CASE("iso: the lines after M30 are read, whatever ends them, up to a program of the file") {
   for (const std::string eol : {"\n", "\r\n", "\r"}) {
     const read_result r = iso::read("G0 X1." + eol + "M30" + eol + eol + "G0 X2." + eol + "%" + eol + "O100" + eol + "G0 X3." + eol, "c.nc");
@@ -220,6 +236,30 @@ TEST_CASE("iso: a number written only in a parameter counts for the program's re
   CHECK(later.linear_decimals == 1);
   const auto unassigned = scan_resolution("G1 X#7 Y1.25\n", iso_id);
   CHECK(unassigned.linear_decimals == 2);
+}
+
+TEST_CASE("iso: an incremental rotary word after G28 counts from the source machine's reference angle") {
+  // G28 sends B to its reference point; the machine file's home_deg says which angle that is.
+  const std::string text = "G21 G90\nG0 X0. Y0. Z50. B10. C20.\nG91 G28 B0.\nG0 B-37.576\nG28 C0.\nG0 C5.\n";
+  const read_result unknown = iso::read(text, "h.nc");
+  REQUIRE(unknown.errors.size() == 2);
+  CHECK(unknown.errors[0].where == source_location{"h.nc", 4, 4});
+  CHECK(unknown.errors[0].message.starts_with("incremental B (G91 of line 3) from a position the program does not say"));
+  CHECK(unknown.errors[0].message.ends_with(", or give home_deg in B's [[rotary]] table of the source machine file, the "
+                                            "angle G28 leaves it at (--from-file; docs/machine-files.md)"));
+  CHECK(unknown.errors[1].where == source_location{"h.nc", 6, 4});
+  read_limits limits;
+  limits.rotary_home_deg = {std::nullopt, -90.0, 0.5};  // A, B, C
+  const read_limits_scope scope(limits);
+  const read_result r = iso::read(text, "h.nc");
+  REQUIRE(r.errors.empty());
+  std::vector<double> b, c;
+  for (const block& k : r.parsed.blocks) {
+    if (k.axes.b_deg && !k.machine_coordinates) b.push_back(*k.axes.b_deg);
+    if (k.axes.c_deg && !k.machine_coordinates) c.push_back(*k.axes.c_deg);
+  }
+  CHECK(b == std::vector<double>{10., -127.576});
+  CHECK(c == std::vector<double>{20., 5.5});
 }
 
 TEST_CASE("iso: M98 and G65 of a program in another file run it when its directory is given") {

@@ -141,6 +141,20 @@ TEST_CASE("siemens: comments of both kinds, bytes kept as they are", "[siemens][
   CHECK(siemens::write(r.parsed) == "G1 X1 ; first caf\xe9 \xff\x01\nG1 X2 ; only\n; whole line\n;\n");
 }
 
+TEST_CASE("siemens: I=AC(…) is the centre's own coordinate, under G90 and G91 alike", "[siemens][quirks]") {
+  const auto r = read_ok(
+      "G0 X30 Y20 Z5\n"
+      "G2 X40 Y20 I=AC(35) J=AC(20)\n"     // centre (35, 20, 5)
+      "G91 G3 X-10 Y0 I=AC(35) J=0\n"      // back to (30, 20): centre (35, 20 + 0, 5)
+      "G90 G17 G2 X40 Y20 I5 J=AC(20)\n");  // one absolute, one offset: (30 + 5, 20, 5)
+  const auto& bl = r.parsed.blocks;
+  REQUIRE(bl.size() == 4);
+  for (std::size_t i = 1; i < 4; ++i) {
+    REQUIRE(bl[i].arc);
+    CHECK(bl[i].arc->centre_mm == vec3{35, 20, 5});
+  }
+}
+
 TEST_CASE("siemens: arcs get absolute centres from incremental I J K", "[siemens][quirks]") {
   const auto r = read_ok(
       "G0 X10 Y0 Z5\n"
