@@ -157,6 +157,9 @@ typedef struct kin5_translate_options {
   int digits;               /**< decimals of every position word, 0 to 9; -1: the source's (--digits) */
   double angle_tolerance_deg; /**< 0 to 1; negative: half the program's angular resolution (--angle-tolerance) */
   const char* allow;        /**< refusals turned into warnings, names separated by commas; NULL: none (--allow) */
+  const char* work_offset_map; /**< work offsets mapped, the tool's entries separated by ';', e.g. "G54=1"; NULL: none (--work-offset-map) */
+  const char* m_map;        /**< M functions renamed or dropped, entries N=M or N= separated by ';'; NULL: none (--m-map) */
+  const char* tool_map;     /**< tool numbers for named tools, entries NAME=N separated by ';'; NULL: none (--tool-map) */
   const char* file_name;    /**< the program's name in messages; NULL: "<buffer>" */
 } kin5_translate_options;
 

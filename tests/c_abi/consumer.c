@@ -184,6 +184,7 @@ static const char program[] =
     "%_N_CABI_MPF\n"
     "; a program for the SAJO 12000P under TRAORI\n"
     "N10 G17 G40 G71 G90 G94\n"
+    "N20 G54\n"
     "N30 T1 D1\n"
     "N40 M6\n"
     "N50 S4000 M3\n"
@@ -209,12 +210,22 @@ static void check_translation(const char* out_path) {
   CHECK(kin5_machine_from_id("sajo-12000p", &from, NULL) == KIN5_OK, "sajo-12000p");
   CHECK(kin5_machine_from_id("dmu-80p", &to, NULL) == KIN5_OK, "dmu-80p");
 
+  /* G54 has no certain Heidenhain equivalent: refused at its line, as the tool refuses it. */
   s = kin5_translate(from, to, program, strlen(program), NULL, &output, &messages);
+  CHECK(s == KIN5_INPUT_ERROR && output.data == NULL, "G54 without a map: status %d", (int)s);
+  CHECK(messages.data && strstr(messages.data, "<buffer>:4:5: error: G54") && strstr(messages.data, "work-offset-map"),
+        "G54 without a map: %s", messages.data ? messages.data : "(no message)");
+  kin5_free(messages.data);
+
+  kin5_translate_options_init(&options);
+  options.work_offset_map = "G54=1";
+  s = kin5_translate(from, to, program, strlen(program), &options, &output, &messages);
   CHECK(s == KIN5_OK, "translate: status %d: %s", (int)s, messages.data ? messages.data : "");
   CHECK(output.data && output.size == strlen(output.data), "translate: no output");
   if (output.data) {
     CHECK(strncmp(output.data, "0 BEGIN PGM", 11) == 0, "not a Heidenhain program: %s", output.data);
     CHECK(strstr(output.data, "M128") != NULL, "no M128 in %s", output.data);
+    CHECK(strstr(output.data, "CYCL DEF 247") != NULL, "G54 is not preset 1: %s", output.data);
     CHECK(strstr(output.data, "L X+34.983 Y+118.526 Z+9.1 B+17.067 C+87.479 F1091") != NULL,
           "the first cutting block is not the tool's: %s", output.data);
     if (out_path) {
@@ -254,11 +265,16 @@ static void check_translation(const char* out_path) {
   s = kin5_translate(from, to, program, strlen(program), &options, &output, NULL);
   CHECK(s == KIN5_BAD_ARGUMENT && output.data == NULL, "an unknown refusal name: status %d", (int)s);
   kin5_translate_options_init(&options);
+  options.work_offset_map = "G54=1;G54=2";
+  CHECK(kin5_translate(from, to, program, strlen(program), &options, &output, NULL) == KIN5_BAD_ARGUMENT,
+        "G54 mapped twice");
+  kin5_translate_options_init(&options);
   options.digits = 12;
   CHECK(kin5_translate(from, to, program, strlen(program), &options, &output, NULL) == KIN5_BAD_ARGUMENT,
         "digits 12");
   kin5_translate_options_init(&options);
   options.digits = 2;
+  options.work_offset_map = "G54=1";
   s = kin5_translate(from, to, program, strlen(program), &options, &output, NULL);
   CHECK(s == KIN5_OK && output.data && strstr(output.data, "Y+118.53"), "digits 2: %s",
         output.data ? output.data : "(none)");

@@ -5,7 +5,7 @@ execute_process(COMMAND ${CONSUMER} ${MACHINE_FILE} ${WORK}/from_c.h RESULT_VARI
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the C consumer failed (${rc})")
 endif()
-execute_process(COMMAND ${TOOL} translate --from sajo-12000p --to dmu-80p ${WORK}/from_c.h.mpf
+execute_process(COMMAND ${TOOL} translate --from sajo-12000p --to dmu-80p --work-offset-map G54=1 ${WORK}/from_c.h.mpf
                 OUTPUT_FILE ${WORK}/from_tool.h RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "kin5 translate failed (${rc})")

@@ -104,11 +104,11 @@ kin5_reach reach_of(kin5::reach_status s) {
   return KIN5_NOT_REACHED;
 }
 
-// The names in `list`, separated by commas (blanks around a name ignored); empty names skipped.
-std::vector<std::string> split_names(std::string_view list) {
+// The names in `list`, separated by `separator` (blanks around a name ignored); empty names skipped.
+std::vector<std::string> split_names(std::string_view list, char separator = ',') {
   std::vector<std::string> out;
   while (!list.empty()) {
-    const std::size_t comma = list.find(',');
+    const std::size_t comma = list.find(separator);
     std::string_view name = list.substr(0, comma);
     while (!name.empty() && name.front() == ' ') name.remove_prefix(1);
     while (!name.empty() && name.back() == ' ') name.remove_suffix(1);
@@ -188,6 +188,21 @@ kin5_status translate(const kin5_machine& from, const kin5_machine& to, std::str
     for (const auto& name : split_names(o.allow))
       if (!options.common.allow.add(name))
         return usage("allow: no refusal is named '" + name + "'; valid: " + kin5::allowable_names());
+  if (o.work_offset_map)
+    for (const auto& entries : split_names(o.work_offset_map, ';'))
+      if (!options.common.work_offsets.add(entries))
+        return usage("work_offset_map: '" + entries +
+                     "' is not FROM=TO[,FROM=TO…] (FROM, TO: G54 … G59, G54.1P n, G500, G505 … G599, or a "
+                     "Heidenhain preset number; TO empty drops it), or maps a work offset twice");
+  if (o.m_map)
+    for (const auto& entry : split_names(o.m_map, ';'))
+      if (!options.common.m_codes.add(entry))
+        return usage("m_map: '" + entry + "' is neither N=M (rename) nor N= (drop)");
+  if (o.tool_map)
+    for (const auto& entry : split_names(o.tool_map, ';'))
+      if (!options.common.tool_numbers.add(entry))
+        return usage("tool_map: '" + entry +
+                     "' is not NAME=N (N a whole number of at most 8 digits), or maps a tool twice");
   if (const auto why = kin5::translate_detail::output_mode_refusal(options.common, *options.output_dialect))
     return usage(*why);
 

@@ -214,10 +214,14 @@ constexpr radians outside_travel_gap(const machine_model& m, const vec3& u, cons
 }  // namespace detail
 
 /// Every commanded angle set of machine `m` whose tool axis is `u` (unit, table frame at the
-/// zero pose), written into `out` (N >= m.rotary_count; see `max_solutions` for the capacity).
+/// zero pose), written into `out` (N >= m.rotary_count; see `max_solutions` for the capacity),
+/// replacing what it held: a controller may keep one result and reuse it on every call.
 template <std::size_t N, std::size_t Capacity>
 constexpr void inverse_into(const machine_model& m, const vec3& u, const inverse_options& options,
                             basic_inverse_result<N, Capacity>& out) noexcept {
+  out.status = reach_status::unreachable;  // the header only: the items past `count` are not read
+  out.gap = radians{0.0};
+  out.count = 0;
   const std::size_t n = m.rotary_count < N ? m.rotary_count : N;
   two_axis_solution raw{};
   if (n == 2) {

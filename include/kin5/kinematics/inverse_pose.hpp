@@ -77,10 +77,13 @@ constexpr vec3 linear_axes_for(const machine_model& m, const std::array<radians,
 }
 
 /// Every set of axis values of machine `m` that puts the tool at `target` (workpiece frame),
-/// written into `out` (N >= m.rotary_count).
+/// written into `out` (N >= m.rotary_count), replacing what it held: a controller may keep one
+/// result and reuse it on every call.
 template <std::size_t N, std::size_t Capacity>
 constexpr void inverse_into(const machine_model& m, const tool_pose& target, const run_inputs& in,
                             const inverse_options& options, basic_pose_result<N, Capacity>& out) noexcept {
+  out.count = 0;  // the header only: the items past `count` are not read
+  out.linear_excess_mm = 0.0;
   basic_inverse_result<N, Capacity> rotary{};
   inverse_into(m, in.work_offset.map_direction(normalized(target.axis)), options, rotary);
   out.gap = rotary.gap;

@@ -456,3 +456,38 @@ TEMPLATE_LIST_TEST_CASE("principal branch: branch 0 of the full inverse gives th
     RC_ASSERT(on_principal_branch<M>(a) == by_inverse(a));
   });
 }
+
+TEMPLATE_LIST_TEST_CASE("inverse_into replaces what its result held", "[core][inverse]",
+                        kin5::machines::every_machine) {
+  using M = TestType;
+  // A controller keeps one result of each inverse and hands it to every call (docs/embedding.md).
+  rc::prop("a result reused over several calls is a fresh result of the last call", [] {
+    const run_inputs in{.tool_length_mm = *test::real_in(0.0, 200.0)};
+    const int calls = *rc::gen::inRange(2, 5);
+    pose_values pose_out{};
+    inverse_values axis_out{};
+    tool_pose last{};
+    for (int k = 0; k < calls; ++k) {
+      // Poses within travel and anywhere, so that a reachable call may follow an unreachable one.
+      axis_position<M> q = *test::axis_values_within<M>();
+      q.rotary = *rc::gen::oneOf(test::angles_within<M>(), test::angles_anywhere<M>());
+      last = forward<M>(q, in);
+      inverse_into(M::model, last, in, {}, pose_out);
+      inverse_into(M::model, last.axis, {}, axis_out);
+    }
+    const pose_values fresh = inverse(M::model, last, in);
+    RC_ASSERT(pose_out.size() == fresh.size());
+    RC_ASSERT(pose_out.status == fresh.status);
+    RC_ASSERT(pose_out.gap.value == fresh.gap.value);
+    RC_ASSERT(pose_out.linear_excess_mm == fresh.linear_excess_mm);
+    for (std::size_t i = 0; i < fresh.size(); ++i) {
+      RC_ASSERT(pose_out[i].joints.rotary == fresh[i].joints.rotary);
+      RC_ASSERT(pose_out[i].within_travel == fresh[i].within_travel);
+    }
+    const inverse_values fresh_axis = inverse(M::model, last.axis);
+    RC_ASSERT(axis_out.size() == fresh_axis.size());
+    RC_ASSERT(axis_out.status == fresh_axis.status);
+    RC_ASSERT(axis_out.gap.value == fresh_axis.gap.value);
+    for (std::size_t i = 0; i < fresh_axis.size(); ++i) RC_ASSERT(axis_out[i].angles == fresh_axis[i].angles);
+  });
+}
