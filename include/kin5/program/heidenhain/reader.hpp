@@ -505,7 +505,10 @@ class block_reader : public word_checks {
       const auto after = scan_.keywords(i, ws);
       if (!after || (*after < s_.size() && !is_space(s_[*after]))) continue;
       std::string head;
-      for (std::string_view w : ws) head += (head.empty() ? "" : " ") + std::string(w);
+      for (std::string_view w : ws) {
+        if (!head.empty()) head += ' ';
+        head += w;
+      }
       const std::size_t f = scan_.skip_spaces(*after);
       const std::size_t e = scan_.run_end(f);
       return e > f ? head + " " + s_.substr(f, e - f) : head;
