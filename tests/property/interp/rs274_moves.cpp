@@ -146,22 +146,22 @@ std::vector<kin5_move> kin5_moves(const std::string& text, std::string& errors) 
         unit_mm = u->unit == can::length_unit::inch ? 25.4 : 1.0;
       kin5_move k;
       const axis_words* to = nullptr;
-      if (const auto* m = std::get_if<can::rapid_move>(&op)) {
-        k.kind = rs::move_kind::traverse, to = &m->to;
-      } else if (const auto* m = std::get_if<can::linear_move>(&op)) {
-        k.kind = rs::move_kind::feed, to = &m->to;
-      } else if (const auto* m = std::get_if<can::arc_move>(&op)) {
-        k.kind = rs::move_kind::arc, to = &m->to, k.clockwise = m->clockwise;
-        if (m->circle && m->circle->centre_mm) {
-          const kin5::vec3& c = *m->circle->centre_mm;
+      if (const auto* rapid = std::get_if<can::rapid_move>(&op)) {
+        k.kind = rs::move_kind::traverse, to = &rapid->to;
+      } else if (const auto* linear = std::get_if<can::linear_move>(&op)) {
+        k.kind = rs::move_kind::feed, to = &linear->to;
+      } else if (const auto* arc = std::get_if<can::arc_move>(&op)) {
+        k.kind = rs::move_kind::arc, to = &arc->to, k.clockwise = arc->clockwise;
+        if (arc->circle && arc->circle->centre_mm) {
+          const kin5::vec3& c = *arc->circle->centre_mm;
           k.centre = std::array<double, 3>{c.x / unit_mm, c.y / unit_mm, c.z / unit_mm};
         }
-      } else if (const auto* m = std::get_if<can::modal_move>(&op)) {
+      } else if (const auto* modal = std::get_if<can::modal_move>(&op)) {
         if (!mode) {
           errors += "a move without a motion mode\n";
           continue;
         }
-        k.kind = *mode, to = &m->to;
+        k.kind = *mode, to = &modal->to;
       } else {
         continue;
       }
@@ -233,7 +233,7 @@ TEST_CASE("LinuxCNC moves: a subroutine in another file runs as rs274 runs it fr
     std::vector<kin5_move> ours;
     {
       const read_limits_scope scope(limits);
-      ours = kin5_moves(main, d.inches, errors);
+      ours = kin5_moves(main, errors);
     }
     RC_LOG() << main << "\n--- part.ngc:\n" << called << "\n--- rs274:\n" << theirs.text << "\n";
     RC_ASSERT(errors == "");
