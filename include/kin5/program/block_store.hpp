@@ -188,6 +188,8 @@ class block_store {
 
   file_name file_;
   std::vector<file_name> files_;  // of the blocks not in file_, in the order first seen
+  file_name last_file_{std::string()};  // of the last block pushed (at first no block's), and its index
+  std::uint64_t last_file_index_ = 0;
   std::vector<std::unique_ptr<unsigned char[]>> chunks_;  // the first spilled_ freed, their bytes in spill_
   std::vector<std::size_t> sizes_;
   std::size_t chunk_bytes_;
@@ -227,13 +229,20 @@ class block_store {
     return false;
   }
 
-  /// The index of `f` for a record: 0 for the store's file, else in files_ from 1.
+  /// The index of `f` for a record: 0 for the store's file, else in files_ from 1. A reader
+  /// gives the blocks of a file one shared name, so the name of the last block, held (its string
+  /// cannot be freed and another take its place), answers with one comparison of pointers.
   std::uint64_t file_index(const file_name& f) {
-    if (&f.str() == &file_.str() || f.str() == file_.str()) return 0;
-    for (std::size_t i = files_.size(); i > 0; --i)  // the latest first: blocks of one file come together
-      if (f.str() == files_[i - 1].str()) return i;
-    files_.push_back(f);
-    return files_.size();
+    if (&f.str() == &last_file_.str()) return last_file_index_;
+    last_file_ = f;
+    last_file_index_ = [&]() -> std::uint64_t {
+      if (f.str() == file_.str()) return 0;
+      for (std::size_t i = files_.size(); i > 0; --i)  // the latest first: blocks of one file come together
+        if (f.str() == files_[i - 1].str()) return i;
+      files_.push_back(f);
+      return files_.size();
+    }();
+    return last_file_index_;
   }
 
   void put_bytes(const void* bytes, std::size_t n) {

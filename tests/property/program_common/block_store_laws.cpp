@@ -64,11 +64,12 @@ TEST_CASE("a store with a budget of a few KiB replays what an unbounded one does
   rc::prop("generated programs of motion blocks, called or not, in default chunks", [] {
     const auto n = *rc::gen::inRange<std::size_t>(0, 6000);
     block_store bounded("p.h"), unbounded("p.h");
+    std::vector<block> in;
     bounded.memory_bytes(*rc::gen::inRange<std::size_t>(1, 8192));
     unbounded.memory_bytes(std::numeric_limits<std::size_t>::max());
     for (std::size_t k = 0; k < n; ++k) {
       block b;
-      b.where = {k % 7 ? "p.h" : "sub.h", k + 1, 1};
+      b.where = {k % 11 == 0 ? file_name() : k % 7 ? "p.h" : "sub.h", k + 1, 1};  // no name, too
       b.call_chain = static_cast<std::uint32_t>(k % 5);
       b.number = static_cast<long long>(k);
       b.motion = motion_kind::linear;
@@ -76,12 +77,14 @@ TEST_CASE("a store with a budget of a few KiB replays what an unbounded one does
       if (k % 3 == 0) b.comment = *any_string();
       bounded.push(b);
       unbounded.push(b);
+      in.push_back(b);
     }
     RC_ASSERT(unbounded.spilled_chunks() == 0);
     RC_ASSERT(bounded.chunks() == unbounded.chunks());
     RC_ASSERT(bounded.chunks() <= 1 || bounded.spilled_chunks() == bounded.chunks() - 1);
     std::vector<block> expected;
     RC_ASSERT(unbounded.replay([&](const block& b) { expected.push_back(b); }));
+    RC_ASSERT(expected == in);
     std::size_t k = 0;
     RC_ASSERT(bounded.replay([&](const block& b) {
       RC_ASSERT(k < expected.size());

@@ -268,8 +268,8 @@ class executor {
     std::uint64_t executed = 0;
     call_chains own_calls{};
     call_chains* calls = &own_calls;  // where the chains are interned (`record_calls_in`)
-    file_name main_file{};
-    std::uint32_t chain = 0;                    // the calls open now
+    file_name main_file{};            // of the main text's call sites
+    std::uint32_t chain = 0;          // the calls open now: an id in `calls`
     file_opener open{};
     std::map<std::string, std::shared_ptr<const called_file>, std::less<>> files{};  // by calling file and target
     std::vector<const called_file*> running{};  // the called files open, outermost first
@@ -294,7 +294,7 @@ class executor {
   std::uint64_t& executed_;
   execution_limits limits_;
   executor* caller_ = nullptr;    // a called file's executor: the one that called it
-  file_name text_file_{};  // of this text, for its call sites: a called file's path
+  file_name text_file_{};         // of this text's call sites: a called file's path
   std::size_t outer_calls_ = 0;   // calls open in the callers, the file calls included
   std::size_t outer_loops_ = 0;   // loops open in the callers
   std::vector<open_call> calls_;
