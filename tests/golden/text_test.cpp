@@ -77,7 +77,7 @@ TEST_CASE("motion without TCP is an error naming the line, with the rotary messa
   CHECK(t.blocks_written == t.blocks_read - 2);  // accounted for: written or an error
 }
 
-TEST_CASE("motion without TCP at the zero pose, length on, is the tracked motion; elsewhere it is refused") {
+TEST_CASE("motion without TCP at the zero pose, length on, is the tracked motion, elsewhere it is refused") {
   // Every rotary axis at 0 turns nothing: the point programmed is the tip with tracking or
   // without, so the untracked section translates as the tracked one does (the target tracks it).
   const std::string head = "T1 D1 M6\nTRAORI\nG1 X0 Y0 Z50 A0 B0 F500\n";
