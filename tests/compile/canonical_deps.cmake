@@ -4,6 +4,7 @@
 # a program that uses them compiles no reader or writer.
 # Run as: cmake -DCXX=... -DINCLUDE=.../include -P canonical_deps.cmake
 cmake_minimum_required(VERSION 3.16)
+include(${CMAKE_CURRENT_LIST_DIR}/header_includes.cmake)
 file(GLOB headers "${INCLUDE}/kin5/program/canonical/*.hpp")
 if(NOT headers)
   message(FATAL_ERROR "no kin5/program/canonical/*.hpp under ${INCLUDE}")
@@ -11,17 +12,8 @@ endif()
 set(bad "")
 foreach(header ${headers})
   get_filename_component(name "${header}" NAME)
-  execute_process(
-    COMMAND ${CXX} -std=c++20 -M -I ${INCLUDE} ${header}
-    OUTPUT_VARIABLE deps RESULT_VARIABLE rc ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "kin5/program/canonical/${name} does not compile alone: ${err}")
-  endif()
-  string(REPLACE "\\\n" " " deps "${deps}")
-  string(REGEX MATCHALL "[^ \t\n]+\\.hpp" included "${deps}")
+  kin5_included_headers("${header}" included)
   foreach(path ${included})
-    # `program/canonical/../io.hpp` is `program/io.hpp`: compare paths without `..`.
-    get_filename_component(path "${path}" ABSOLUTE)
     if((path MATCHES "/kin5/program/[a-z_]+/" AND NOT path MATCHES "/kin5/program/canonical/")
        OR path MATCHES "/kin5/program/(dialect|io)\\.hpp$" OR path MATCHES "/kin5/translate/")
       list(APPEND bad "${name} includes ${path}")

@@ -6,6 +6,7 @@
 # (`controller_from`, `lost_from`), which the list defines, so `apt/dialect.hpp` includes it.
 # Run as: cmake -DCXX=... -DINCLUDE=.../include -P dialect_deps.cmake
 cmake_minimum_required(VERSION 3.16)
+include(${CMAKE_CURRENT_LIST_DIR}/header_includes.cmake)
 set(needs_the_list apt)
 file(GLOB headers "${INCLUDE}/kin5/program/*/dialect.hpp")
 if(NOT headers)
@@ -18,17 +19,8 @@ foreach(header ${headers})
   if(name IN_LIST needs_the_list)
     continue()
   endif()
-  execute_process(
-    COMMAND ${CXX} -std=c++20 -M -I ${INCLUDE} ${header}
-    OUTPUT_VARIABLE deps RESULT_VARIABLE rc ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "kin5/program/${name}/dialect.hpp does not compile alone: ${err}")
-  endif()
-  string(REPLACE "\\\n" " " deps "${deps}")
-  string(REGEX MATCHALL "[^ \t\n]+\\.hpp" included "${deps}")
+  kin5_included_headers("${header}" included)
   foreach(path ${included})
-    # `program/siemens/../dialect.hpp` is the list: compare paths without `..`.
-    get_filename_component(path "${path}" ABSOLUTE)
     if(path MATCHES "/kin5/program/([a-z0-9_]+/)?dialect\\.hpp$"
        AND NOT path MATCHES "/kin5/program/${name}/dialect\\.hpp$")
       string(REGEX REPLACE ".*/(kin5/program/)" "\\1" shown "${path}")

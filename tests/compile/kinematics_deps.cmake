@@ -1,14 +1,8 @@
 # Fails when kin5/kinematics.hpp, the standard-library-only core, pulls in any header of the
 # program or translation layers (or anything outside kin5 and the standard library).
 # Run as: cmake -DCXX=... -DINCLUDE=.../include -P kinematics_deps.cmake
-execute_process(
-  COMMAND ${CXX} -std=c++20 -M -I ${INCLUDE} ${INCLUDE}/kin5/kinematics.hpp
-  OUTPUT_VARIABLE deps RESULT_VARIABLE rc ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "cannot list the dependencies of kinematics.hpp: ${err}")
-endif()
-string(REPLACE "\\\n" " " deps "${deps}")
-string(REGEX MATCHALL "[^ \t\n]+\\.hpp" headers "${deps}")
+include(${CMAKE_CURRENT_LIST_DIR}/header_includes.cmake)
+kin5_included_headers("${INCLUDE}/kin5/kinematics.hpp" headers)
 set(bad "")
 foreach(h ${headers})
   if(h MATCHES "/kin5/(program|translate|reach|paper)/" OR h MATCHES "/kin5/(eigen|reach|kin5)\\.hpp$")
