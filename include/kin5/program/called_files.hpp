@@ -101,6 +101,28 @@ inline std::optional<std::string> directory_of_file(const std::string& path) {
   return parent.empty() ? std::string(".") : parent.string();
 }
 
+/// Where a call that looks beside its caller first (Heidenhain `CALL PGM`, a Siemens subprogram)
+/// finds one of `names`: the directory of `calling_file`, then `include_dirs`, in order.
+struct beside_caller_result {
+  std::optional<std::filesystem::path> path;  ///< the file found, if any
+  std::string not_found;                      ///< else where it was not: "not in the calling program's directory …"
+};
+
+/// The file one of `names` is, looked for beside `calling_file` and then in `include_dirs`.
+inline beside_caller_result find_beside_caller(const std::string& calling_file, const std::vector<std::string>& names,
+                                               const std::vector<std::string>& include_dirs) {
+  std::vector<std::string> dirs;
+  const auto here = directory_of_file(calling_file);
+  if (here) dirs.push_back(*here);
+  dirs.insert(dirs.end(), include_dirs.begin(), include_dirs.end());
+  if (auto path = find_called_file(dirs, names)) return {std::move(path), {}};
+  const bool included = !include_dirs.empty();
+  return {std::nullopt, here && included ? "not in the calling program's directory nor in the include directories"
+                        : here           ? "not in the calling program's directory"
+                        : included       ? "not in the include directories"
+                                         : "no directory to look for it in"};
+}
+
 /// The executor's opener for calls of files in `limits.include_dirs` (none when it names no
 /// directory: a call of a file is then refused, naming the file).
 inline interp::file_opener called_file_opener(const read_limits& limits) {

@@ -621,20 +621,12 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
     std::map<std::string, called_program> called;
     const read_limits reading = current_read_limits();
     run.open_files_with([&](const std::string&, const std::vector<std::string>& names) -> std::optional<interp::called_file> {
-      std::vector<std::string> dirs;
-      const auto here = directory_of_file(run.file().empty() ? file_path : run.file());
-      if (here) dirs.push_back(*here);
-      dirs.insert(dirs.end(), reading.include_dirs.begin(), reading.include_dirs.end());
-      const auto path = find_called_file(dirs, names);
-      if (!path) {
-        const bool included = !reading.include_dirs.empty();
-        const std::string where = here && included ? "not in the calling program's directory nor in the include directories"
-                                  : here           ? "not in the calling program's directory"
-                                  : included       ? "not in the include directories"
-                                                   : "no directory to look for it in";
-        return interp::called_file{names.front(), {}, where + " (--include-dir DIR names the directory that holds it)"};
-      }
-      interp::called_file f = load_called_file(*path, reading);
+      const beside_caller_result found =
+          find_beside_caller(run.file().empty() ? file_path : run.file(), names, reading.include_dirs);
+      if (!found.path)
+        return interp::called_file{names.front(), {},
+                                   found.not_found + " (--include-dir DIR names the directory that holds it)"};
+      interp::called_file f = load_called_file(*found.path, reading);
       if (f.error.empty() && called.find(f.path) == called.end()) {  // loaded again for another caller: the same text
         called_program& c = called[f.path];
         c.text = f.text;

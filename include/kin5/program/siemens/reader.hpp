@@ -534,19 +534,12 @@ inline void read_blocks(std::string_view text, const std::string& file_path, rea
     run.open_files_with([&](const std::string&, const std::vector<std::string>& names) -> std::optional<interp::called_file> {
       // The calling program's directory first, then the include directories (the control
       // searches the caller's directory, then its subprogram directories).
-      std::vector<std::string> dirs;
-      const auto here = directory_of_file(run.file().empty() ? file_path : run.file());
-      if (here) dirs.push_back(*here);
-      dirs.insert(dirs.end(), limits.include_dirs.begin(), limits.include_dirs.end());
-      if (const auto path = find_called_file(dirs, names)) return load_called_file(*path, limits);
-      const bool included = !limits.include_dirs.empty();
-      const std::string where = here && included ? "not in the calling program's directory nor in the include directories"
-                                : here           ? "not in the calling program's directory"
-                                : included       ? "not in the include directories"
-                                                 : "no directory to look for it in";
+      const beside_caller_result found =
+          find_beside_caller(run.file().empty() ? file_path : run.file(), names, limits.include_dirs);
+      if (found.path) return load_called_file(*found.path, limits);
       return interp::called_file{names.front() + " or " + names.back(), {},
-                                 where + " (a name alone in a block calls a subprogram; --include-dir DIR names the "
-                                         "directory that holds it)"};
+                                 found.not_found + " (a name alone in a block calls a subprogram; --include-dir DIR "
+                                                   "names the directory that holds it)"};
     });
     const file_name main_file(file_path);
     detail::line_reader reader(file_path, run.parameters());
